@@ -1,0 +1,49 @@
+# Two entry points on a fresh Debian 12 machine (see README.md):
+#   make test    install what is missing, run the test suite
+#   make study   install what is missing, run the main job
+# Both are idempotent: installed pieces are detected and skipped.
+SHELL := /bin/bash
+PYTHON ?= python3
+VENV ?= .venv
+PY := $(VENV)/bin/python
+STAMP := $(VENV)/.installed
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+STUDY ?= runs/study
+
+.PHONY: test study system venv bench clean-venv
+
+# Debian's YADE (runs the scenes on /usr/bin/python3) and h5py for that Python.
+system:
+	@if ! command -v yade >/dev/null 2>&1 || ! /usr/bin/python3 -c 'import h5py' >/dev/null 2>&1; then \
+	  echo "make: installing Debian packages yade python3-h5py"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq yade python3-h5py; \
+	fi
+
+$(STAMP): pyproject.toml
+	@$(PYTHON) -m venv $(VENV) 2>/dev/null || { \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq python3-venv && $(PYTHON) -m venv $(VENV); }
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q -e '.[test]'
+	@touch $(STAMP)
+
+venv: $(STAMP)
+
+test: system venv
+	$(PY) -m pytest -q
+
+# Until the YADE scenes land (issue 4), the study analyses a synthetic dump
+# with known anisotropies, and says so.
+study: system venv
+	@echo "make study: NOTE: the YADE simulations are not implemented yet;"
+	@echo "make study: analysing a SYNTHETIC dump with known anisotropies instead."
+	@mkdir -p $(STUDY)
+	@[ -f $(STUDY)/synthetic.h5 ] || $(VENV)/bin/postproc synthetic $(STUDY)/synthetic.h5
+	$(VENV)/bin/postproc analyze $(STUDY)/synthetic.h5 --out $(STUDY)/synthetic-analysis
+	@echo "make study: results in $(STUDY)/synthetic-analysis/"
+
+bench: venv
+	$(PY) benchmarks/bench_analysis.py
+
+clean-venv:
+	rm -rf $(VENV)

@@ -1,0 +1,146 @@
+"""The per-snapshot analysis: one row of ``summary.csv`` per snapshot.
+
+Pure composition of the physics modules; no file I/O here.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .angular import AngularFunctions, angular_functions, fit_harmonics
+from .axes import axis_vector
+from .contactset import ContactSet, resolve
+from .coordination import coordination, force_bearing, fraction_below_mean
+from .errors import InputError
+from .fabric import anisotropies, stress_force_fabric
+from .schema import WALL_ORDER, Snapshot
+from .strain import box_strains
+from .stress import contact_stress, invariants, relative_difference, wall_stress
+
+_COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
+_IDX = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "yz": (1, 2), "xz": (0, 2), "xy": (0, 1)}
+
+
+@dataclass
+class SnapshotResult:
+    """Everything computed for one snapshot."""
+
+    row: dict                  # scalars for summary.csv
+    angular: AngularFunctions  # binned functions (for the polar plots)
+    fits: dict                 # harmonic fits
+
+
+def wall_forces_from_contacts(cs: ContactSet):
+    """(6, 3) N, force on each wall slot summed from the wall contacts, or
+    None when the wall slots are unknown."""
+    known = cs.wall_slot >= 0
+    if not known.any():
+        return None
+    F = np.zeros((len(WALL_ORDER), 3))
+    np.add.at(F, cs.wall_slot[known], cs.wall_sign[known, None] * cs.force[known])
+    return F
+
+
+def _stress_columns(prefix, sigma, axis):
+    inv = invariants(sigma, axis)
+    row = {f"{prefix}{c}": float(sigma[_IDX[c]]) for c in _COMPONENTS}
+    row.update({
+        f"{prefix}sigma_1": inv["principal"][0], f"{prefix}sigma_2": inv["principal"][1],
+        f"{prefix}sigma_3": inv["principal"][2],
+    })
+    return row, inv
+
+
+def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True) -> SnapshotResult:
+    """Stress, fabric, force anisotropies and coordination of one snapshot.
+
+    Stress (Pa, compression positive) in three forms: ``s_*`` the internal
+    moment sum over all contacts including walls (seed eq. 2, first form:
+    the primary one, giving p, q, q/p); ``b_*`` the branch-vector sum over
+    particle-particle contacts only (eq. 2, second form); ``w_*`` the wall
+    forces over the wall areas. The branch form leaves out the moments of
+    the wall contacts, so it falls below the other two by a boundary term of
+    relative order d/L.
+
+    Anisotropies from tensors (:func:`postproc.fabric.anisotropies`) over the
+    force-bearing particle-particle contacts, and from harmonic fits of the
+    binned functions (suffix ``_fit``). ``sff`` = (2/5)(a + a_l + a_n + a_t)
+    (eq. 8) and ``sff_residual`` = q_axial/p - sff, where q_axial =
+    (sigma_axis - mean lateral)/3 is the signed deviator along the
+    compression axis (it equals q once sigma_1 lies along the axis).
+    """
+    where = f"snapshot {snap.name} (step {snap.step})"
+    cs = resolve(snap)
+    e = axis_vector(axis)
+    bearing = force_bearing(cs.force)
+    sel = cs.pp & bearing
+    if not sel.any():
+        raise InputError(f"{where}: no force-bearing particle-particle contacts")
+    V = cs.volume
+    s_m = contact_stress(cs.force, cs.arm, V)
+    s_b = contact_stress(cs.force[cs.pp], cs.arm[cs.pp], V)
+    row = {"snapshot": snap.name, "step": snap.step, "time": snap.time,
+           "stage": snap.stage, "volume": V}
+    cols, inv = _stress_columns("s_", s_m, e)
+    row.update(cols)
+    p = inv["p"]
+    row.update({"p": p, "q": inv["q"], "q_over_p": inv["q_over_p"],
+                "q_axial_over_p": inv["q_axial"] / p if p else np.nan,
+                "angle_sigma1_axis": inv["angle_1"],
+                "antisymmetry": inv["antisymmetry"]})
+    row["sin_phi"] = 3 * inv["q"] / (2 * p + inv["q"]) if p else np.nan
+    cols, inv_b = _stress_columns("b_", s_b, e)
+    row.update(cols)
+    row.update({"p_branch": inv_b["p"], "q_branch": inv_b["q"],
+                "q_over_p_branch": inv_b["q_over_p"],
+                "reldiff_branch": relative_difference(s_b, s_m)})
+    wf = snap.wall_forces if snap.wall_forces is not None else wall_forces_from_contacts(cs)
+    L = snap.box_lengths
+    if wf is not None and np.all(np.isfinite(L)) and np.all(L > 0) and len(wf) == len(WALL_ORDER):
+        s_w = wall_stress(wf, L)
+        cols, inv_w = _stress_columns("w_", s_w, e)
+        row.update(cols)
+        row.update({"p_wall": inv_w["p"], "q_wall": inv_w["q"],
+                    "q_over_p_wall": inv_w["q_over_p"],
+                    "reldiff_wall": relative_difference(s_w, s_m)})
+    else:
+        row.update({k: np.nan for k in ("p_wall", "q_wall", "q_over_p_wall", "reldiff_wall")})
+
+    branch, force = cs.arm[sel], cs.force[sel]
+    an = anisotropies(branch, force, e, errors=errors)
+    for k in ("a", "a_l", "a_n", "a_t"):
+        row[k] = an[k]
+        if errors:
+            row[k + "_se"] = an[k + "_se"]
+    row["l0"], row["f0"] = an["l0"], an["f0"]
+    row["sff"] = stress_force_fabric(an["a"], an["a_l"], an["a_n"], an["a_t"])
+    # The 2/5 relation is derived for sigma_axis - sigma_lateral, so the
+    # residual uses the signed axial deviator (equal to q/p once sigma_1 is
+    # along the axis, but without the |.| bias of q near isotropy).
+    row["sff_residual"] = row["q_axial_over_p"] - row["sff"]
+    row["sff_residual_branch"] = (inv_b["q_axial"] / inv_b["p"] if inv_b["p"] else np.nan) - row["sff"]
+    af = angular_functions(branch, force, e, nbins=nbins)
+    fits = fit_harmonics(af)
+    row.update(fits)
+    row["sff_fit"] = stress_force_fabric(fits["a_fit"], fits["a_l_fit"],
+                                         fits["a_n_fit"], fits["a_t_fit"])
+    co = coordination(cs.i1, cs.i2, cs.force, cs.n_particles)
+    row.update(co)
+    row["frac_below_mean"] = fraction_below_mean(cs.normal_force[sel])
+    row["n_particles"] = cs.n_particles
+    row["n_contacts"] = int(len(cs.force))
+    row["n_contacts_pp"] = int(cs.pp.sum())
+    row["n_contacts_wall"] = int((~cs.pp).sum())
+    return SnapshotResult(row, af, fits)
+
+
+def add_strains(rows, lengths, reference, axis=2):
+    """Add eps_1, eps_2, eps_3, eps_q, eps_v (compression positive, seed
+    eq. 3) to each row, from the box lengths (S, 3) and the reference box
+    (3,). Rows whose box is unknown get NaN."""
+    eps = box_strains(lengths, reference, int(np.argmax(np.abs(axis_vector(axis)))))
+    for k, row in enumerate(rows):
+        for name, vals in eps.items():
+            row[name] = float(vals[k])
+    return rows

@@ -1,0 +1,469 @@
+"""The contact-dump schema: the single source of truth for what a run writes.
+
+This module is shared by the YADE scene scripts (Debian's system Python,
+numpy 1.24, h5py 3.7) and by the ``postproc`` analysis package. It therefore
+imports **only** the standard library, numpy and h5py, and nothing else from
+``postproc``. It can be copied next to a generated ``triaxial.py`` as is.
+
+Layout of one run (schema version 1, all quantities in SI units)
+=================================================================
+One HDF5 file per simulation run, ``RUN.h5``. File attributes:
+
+``schema``            ``"granular-contact-dump"``
+``schema_version``    ``1`` (an integer; readers refuse other versions)
+``sample_kind``       ``"polyhedra"`` or ``"spheres"``
+``parameters``        JSON text: every parameter that generated the run
+``units``             JSON text: unit of every dataset below
+``overlap_kind``      ``"volume"`` (m^3, polyhedra volumetric law) or
+                      ``"depth"`` (m, sphere law)
+``created``           ISO 8601 UTC time the writer was opened
+``complete``          ``1`` once the writer was closed normally, else ``0``
+
+``/shapes`` (polyhedra only, written once). Shape ``s`` owns vertices
+``vertices[vertex_offsets[s]:vertex_offsets[s+1]]`` (m, in the body's local
+frame: origin at the centre of mass, axes along the principal axes of
+inertia) and triangles ``triangles[triangle_offsets[s]:triangle_offsets[s+1]]``
+(indices local to the shape, counter-clockwise seen from outside).
+``triangle_face`` (same length as ``triangles``) numbers the geometric face
+each triangle belongs to inside its shape (coplanar triangles share a face).
+
+``/snapshots/NNNNNN`` (one group per snapshot, ``NNNNNN`` = 0, 1, 2 ... in
+time order). Group attributes ``step`` (int), ``time`` (s), ``stage``
+(``"isotropic"``, ``"shear"`` ...). Datasets:
+
+``box/lo``, ``box/hi``        (3,) m. Inner wall planes: the box is
+                              ``lo <= x <= hi``; volume = prod(hi - lo).
+``walls/id``                  (6,) int64 body ids of the walls, in the order
+                              x-, x+, y-, y+, z-, z+.
+``walls/force``               (6, 3) N. Total force exerted **on** each wall
+                              by the particles. Under compression the x+ wall
+                              is pushed towards +x.
+``bodies/id``                 (B,) int64 particle ids (walls are not bodies
+                              here; they are listed in ``walls/id``).
+``bodies/kind``               (B,) int8: 0 sphere, 1 polyhedron.
+``bodies/position``           (B, 3) m, centre of mass.
+``bodies/orientation``        (B, 4) unit quaternion (w, x, y, z) turning the
+                              local frame into the global one.
+``bodies/volume``             (B,) m^3.
+``bodies/mass``               (B,) kg.
+``bodies/shape_index``        (B,) int32 row of ``/shapes`` (-1 for spheres).
+``bodies/size``               (B,) m. d = 2 x the largest centre-to-vertex
+                              distance (polyhedra), 2 x radius (spheres).
+``bodies/velocity``           (B, 3) m/s (optional).
+``contacts/id1``, ``id2``     (C,) int64 body ids (a wall id is allowed on
+                              either side).
+``contacts/point``            (C, 3) m, contact point.
+``contacts/normal``           (C, 3) unit normal pointing from id1 to id2.
+``contacts/force_normal``     (C, 3) N. Normal force exerted **on id2 by
+                              id1**; a repulsive contact has
+                              ``force_normal . normal > 0``.
+``contacts/force_tangential`` (C, 3) N. Tangential force on id2 by id1.
+``contacts/overlap``          (C,) m^3 or m (see ``overlap_kind``).
+
+Sign convention: forces are the forces on id2 by id1; stresses computed from
+them are compression positive.
+
+Atomic writes
+=============
+HDF5 is not journaled: a process killed while it modifies a file can leave
+the whole file unreadable. The writer therefore never modifies a file that a
+reader may need. Each snapshot is written to its own small HDF5 file in the
+folder ``RUN.h5.parts/``, closed, fsync'ed and renamed into place; then the
+small master ``RUN.h5`` (attributes plus HDF5 external links to the parts) is
+rewritten to a temporary name and renamed over the old one. ``os.replace`` is
+atomic, so at every instant ``RUN.h5`` is a complete file naming only complete
+snapshots. h5py follows the external links transparently, so readers see the
+layout above. :meth:`DumpWriter.close` finally packs everything into one
+self-contained ``RUN.h5`` (again via a temporary file and a rename) and removes
+the parts folder.
+"""
+from __future__ import annotations
+
+import datetime as _dt
+import json
+import os
+import shutil
+from dataclasses import dataclass, field
+from typing import Iterator, Optional
+
+import h5py
+import numpy as np
+
+SCHEMA_NAME = "granular-contact-dump"
+SCHEMA_VERSION = 1
+SAMPLE_KINDS = ("polyhedra", "spheres")
+WALL_ORDER = ("x-", "x+", "y-", "y+", "z-", "z+")
+KIND_SPHERE, KIND_POLYHEDRON, KIND_WALL = 0, 1, 2
+
+UNITS = {
+    "time": "s", "box": "m", "walls/force": "N", "bodies/position": "m",
+    "bodies/orientation": "1 (quaternion w,x,y,z)", "bodies/volume": "m^3",
+    "bodies/mass": "kg", "bodies/size": "m", "bodies/velocity": "m/s",
+    "contacts/point": "m", "contacts/normal": "1",
+    "contacts/force_normal": "N", "contacts/force_tangential": "N",
+    "contacts/overlap": "m^3 (overlap_kind=volume) or m (overlap_kind=depth)",
+    "shapes/vertices": "m",
+}
+
+_BODY_FIELDS = {  # name: (dtype, trailing shape, required)
+    "id": (np.int64, (), True), "kind": (np.int8, (), True),
+    "position": (np.float64, (3,), True), "orientation": (np.float64, (4,), True),
+    "volume": (np.float64, (), True), "mass": (np.float64, (), True),
+    "shape_index": (np.int32, (), True), "size": (np.float64, (), True),
+    "velocity": (np.float64, (3,), False),
+}
+_CONTACT_FIELDS = {
+    "id1": (np.int64, (), True), "id2": (np.int64, (), True),
+    "point": (np.float64, (3,), True), "normal": (np.float64, (3,), True),
+    "force_normal": (np.float64, (3,), True),
+    "force_tangential": (np.float64, (3,), True),
+    "overlap": (np.float64, (), True),
+}
+
+
+class DumpFormatError(ValueError):
+    """A dump that does not follow this schema (or cannot be read at all)."""
+
+
+@dataclass
+class Snapshot:
+    """One state of a run, as plain numpy arrays (SI units).
+
+    Contact forces are the forces on ``id2`` by ``id1``. ``force`` is the
+    total contact force (C, 3); ``force_normal`` (C, 3) its normal part when
+    the source gives it (None for flat contact tables). Quantities a source
+    does not provide are None (or NaN for the box of a flat table).
+    """
+
+    name: str
+    step: int
+    time: float
+    stage: str
+    volume: float                  # m^3, box volume (or given by the user)
+    box_lo: np.ndarray             # (3,) m, NaN when unknown
+    box_hi: np.ndarray             # (3,) m, NaN when unknown
+    wall_ids: np.ndarray           # (W,) int64
+    wall_forces: Optional[np.ndarray]  # (W, 3) N on each wall, or None
+    body_ids: np.ndarray           # (B,) int64
+    positions: np.ndarray          # (B, 3) m
+    id1: np.ndarray                # (C,) int64
+    id2: np.ndarray                # (C,) int64
+    point: np.ndarray              # (C, 3) m
+    force: np.ndarray              # (C, 3) N, on id2 by id1
+    force_normal: Optional[np.ndarray] = None   # (C, 3) N
+    normal: Optional[np.ndarray] = None         # (C, 3)
+    overlap: Optional[np.ndarray] = None        # (C,)
+    body_kind: Optional[np.ndarray] = None      # (B,) int8
+    orientations: Optional[np.ndarray] = None   # (B, 4)
+    volumes: Optional[np.ndarray] = None        # (B,)
+    masses: Optional[np.ndarray] = None         # (B,)
+    shape_index: Optional[np.ndarray] = None    # (B,)
+    sizes: Optional[np.ndarray] = None          # (B,)
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def box_lengths(self) -> np.ndarray:
+        """(3,) m, hi - lo (NaN when the box is unknown)."""
+        return np.asarray(self.box_hi, float) - np.asarray(self.box_lo, float)
+
+
+def _fsync_file(path: str) -> None:
+    fd = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def _fsync_dir(path: str) -> None:
+    try:
+        fd = os.open(path or ".", os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+def _as_field(name, value, spec, n):
+    dtype, trailing, _ = spec
+    arr = np.asarray(value, dtype=dtype)
+    if arr.shape != (n,) + trailing:
+        raise DumpFormatError(
+            f"{name}: expected shape {(n,) + trailing}, got {arr.shape}")
+    return arr
+
+
+class DumpWriter:
+    """Write one run, snapshot by snapshot, so that a killed writer never
+    leaves an unreadable file (see the module docstring).
+
+    Parameters
+    ----------
+    path : str
+        The run file, ``RUN.h5``. Its parts go to ``RUN.h5.parts/``.
+    sample_kind : {"polyhedra", "spheres"}
+    parameters : dict
+        JSON-serialisable generating parameters (stored verbatim).
+    overlap_kind : {"volume", "depth"}
+    """
+
+    def __init__(self, path, sample_kind, parameters, overlap_kind="depth"):
+        if sample_kind not in SAMPLE_KINDS:
+            raise DumpFormatError(f"sample_kind must be one of {SAMPLE_KINDS}, "
+                                  f"got {sample_kind!r}")
+        if overlap_kind not in ("volume", "depth"):
+            raise DumpFormatError("overlap_kind must be 'volume' or 'depth'")
+        self.path = os.path.abspath(path)
+        self.parts = self.path + ".parts"
+        if os.path.exists(self.path) or os.path.exists(self.parts):
+            raise DumpFormatError(f"{path}: refusing to overwrite an existing run")
+        os.makedirs(self.parts)
+        self.attrs = {
+            "schema": SCHEMA_NAME, "schema_version": SCHEMA_VERSION,
+            "sample_kind": sample_kind,
+            "parameters": json.dumps(parameters, sort_keys=True, default=float),
+            "units": json.dumps(UNITS, sort_keys=True),
+            "overlap_kind": overlap_kind,
+            "created": _dt.datetime.now(_dt.timezone.utc).isoformat(),
+            "complete": 0,
+        }
+        self._links = {}      # name in master -> (part file basename, path in part)
+        self._n_snapshots = 0
+        self._closed = False
+        self._write_master()
+
+    # -- helpers ---------------------------------------------------------
+    def _write_part(self, basename, fill):
+        """Write one part file atomically: fill(h5file) into a temporary
+        file, fsync, rename."""
+        final = os.path.join(self.parts, basename)
+        tmp = final + ".tmp"
+        with h5py.File(tmp, "w") as f:
+            fill(f)
+        _fsync_file(tmp)
+        os.replace(tmp, final)
+        _fsync_dir(self.parts)
+
+    def _write_master(self):
+        tmp = self.path + ".tmp"
+        rel = os.path.basename(self.parts)
+        with h5py.File(tmp, "w") as f:
+            for k, v in self.attrs.items():
+                f.attrs[k] = v
+            f.attrs["n_snapshots"] = self._n_snapshots
+            f.require_group("snapshots")
+            for name, (base, inner) in self._links.items():
+                f[name] = h5py.ExternalLink(rel + "/" + base, inner)
+        _fsync_file(tmp)
+        os.replace(tmp, self.path)
+        _fsync_dir(os.path.dirname(self.path))
+
+    # -- public API ------------------------------------------------------
+    def write_shapes(self, vertices, triangles, triangle_faces=None):
+        """Store the polyhedra shapes once.
+
+        vertices : list of (V_s, 3) arrays, m, local frame of shape s.
+        triangles : list of (T_s, 3) int arrays, indices into vertices[s].
+        triangle_faces : list of (T_s,) int arrays, geometric face of each
+            triangle (default: every triangle is its own face).
+        """
+        if "shapes" in self._links:
+            raise DumpFormatError("shapes were already written")
+        if len(vertices) != len(triangles):
+            raise DumpFormatError("vertices and triangles have different lengths")
+        if triangle_faces is None:
+            triangle_faces = [np.arange(len(t)) for t in triangles]
+        v = [np.asarray(x, np.float64).reshape(-1, 3) for x in vertices]
+        t = [np.asarray(x, np.int64).reshape(-1, 3) for x in triangles]
+        tf = [np.asarray(x, np.int64).reshape(-1) for x in triangle_faces]
+        for s, (vs, ts, fs) in enumerate(zip(v, t, tf)):
+            if len(ts) and (ts.min() < 0 or ts.max() >= len(vs)):
+                raise DumpFormatError(f"shape {s}: triangle index out of range")
+            if len(fs) != len(ts):
+                raise DumpFormatError(f"shape {s}: triangle_faces length mismatch")
+
+        def fill(f):
+            g = f.create_group("shapes")
+            g["vertex_offsets"] = np.concatenate([[0], np.cumsum([len(x) for x in v])]).astype(np.int64)
+            g["triangle_offsets"] = np.concatenate([[0], np.cumsum([len(x) for x in t])]).astype(np.int64)
+            g["vertices"] = np.concatenate(v) if v else np.zeros((0, 3))
+            g["triangles"] = np.concatenate(t) if t else np.zeros((0, 3), np.int64)
+            g["triangle_face"] = np.concatenate(tf) if tf else np.zeros(0, np.int64)
+
+        self._write_part("shapes.h5", fill)
+        self._links["shapes"] = ("shapes.h5", "/shapes")
+        self._write_master()
+
+    def write_snapshot(self, *, step, time, stage, box_lo, box_hi, wall_ids,
+                       wall_forces, bodies, contacts):
+        """Append one snapshot atomically.
+
+        bodies : dict of arrays with the ``bodies/*`` fields of the schema.
+        contacts : dict of arrays with the ``contacts/*`` fields.
+        Shapes and units as in the module docstring; forces on id2 by id1.
+        """
+        if self._closed:
+            raise DumpFormatError("writer is closed")
+        nb = len(np.atleast_1d(bodies["id"]))
+        nc = len(np.atleast_1d(contacts["id1"]))
+        b = {k: _as_field("bodies/" + k, bodies[k], s, nb)
+             for k, s in _BODY_FIELDS.items() if s[2] or k in bodies}
+        c = {k: _as_field("contacts/" + k, contacts[k], s, nc)
+             for k, s in _CONTACT_FIELDS.items()}
+        lo = _as_field("box/lo", box_lo, (np.float64, (), True), 3)
+        hi = _as_field("box/hi", box_hi, (np.float64, (), True), 3)
+        wid = _as_field("walls/id", wall_ids, (np.int64, (), True), len(WALL_ORDER))
+        wf = _as_field("walls/force", wall_forces, (np.float64, (3,), True), len(WALL_ORDER))
+        name = f"{self._n_snapshots:06d}"
+
+        def fill(f):
+            g = f.create_group("snapshot")
+            g.attrs["step"] = int(step)
+            g.attrs["time"] = float(time)
+            g.attrs["stage"] = str(stage)
+            g["box/lo"] = lo
+            g["box/hi"] = hi
+            g["walls/id"] = wid
+            g["walls/force"] = wf
+            for k, arr in b.items():
+                g["bodies/" + k] = arr
+            for k, arr in c.items():
+                g["contacts/" + k] = arr
+
+        self._write_part(f"snapshot_{name}.h5", fill)
+        self._links[f"snapshots/{name}"] = (f"snapshot_{name}.h5", "/snapshot")
+        self._n_snapshots += 1
+        self._write_master()
+        return name
+
+    def close(self, pack=True):
+        """Mark the run complete. With ``pack`` (default), copy every part
+        into one self-contained file that atomically replaces ``RUN.h5``,
+        then delete ``RUN.h5.parts/``."""
+        if self._closed:
+            return
+        self.attrs["complete"] = 1
+        if not pack:
+            self._write_master()
+            self._closed = True
+            return
+        tmp = self.path + ".pack.tmp"
+        with h5py.File(self.path, "r") as src, h5py.File(tmp, "w") as dst:
+            for k, v in self.attrs.items():
+                dst.attrs[k] = v
+            dst.attrs["n_snapshots"] = self._n_snapshots
+            dst.require_group("snapshots")
+            for name in self._links:
+                src.copy(src[name], dst, name=name)
+        _fsync_file(tmp)
+        os.replace(tmp, self.path)
+        _fsync_dir(os.path.dirname(self.path))
+        shutil.rmtree(self.parts, ignore_errors=True)
+        self._closed = True
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, *exc):
+        # On an exception keep the parts (every snapshot already written
+        # stays readable through the master file); pack on normal exit.
+        self.close(pack=exc_type is None)
+
+
+# ---------------------------------------------------------------- reading
+class DumpReader:
+    """Read a run written by :class:`DumpWriter` (packed or not).
+
+    Opening checks the schema name and version and raises
+    :class:`DumpFormatError` with a one-line message otherwise. Snapshots are
+    read one at a time (``read(i)`` or iteration) so large runs fit in memory.
+    """
+
+    def __init__(self, path):
+        self.path = str(path)
+        if not os.path.exists(self.path):
+            raise DumpFormatError(f"{self.path}: no such file")
+        try:
+            self._f = h5py.File(self.path, "r")
+        except OSError as exc:
+            raise DumpFormatError(
+                f"{self.path}: not a readable HDF5 file (truncated or corrupt?): "
+                f"{exc.__class__.__name__}") from None
+        a = self._f.attrs
+        if a.get("schema") != SCHEMA_NAME:
+            self._f.close()
+            raise DumpFormatError(f"{self.path}: not a {SCHEMA_NAME} file "
+                                  f"(attribute 'schema' is {a.get('schema')!r})")
+        version = int(a.get("schema_version", -1))
+        if version != SCHEMA_VERSION:
+            self._f.close()
+            raise DumpFormatError(f"{self.path}: schema version {version} is not "
+                                  f"supported (this reader reads version {SCHEMA_VERSION})")
+        self.sample_kind = str(a["sample_kind"])
+        self.parameters = json.loads(a["parameters"])
+        self.units = json.loads(a["units"])
+        self.overlap_kind = str(a["overlap_kind"])
+        self.complete = bool(a.get("complete", 0))
+        self.names = sorted(self._f["snapshots"].keys()) if "snapshots" in self._f else []
+
+    def close(self):
+        self._f.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __len__(self):
+        return len(self.names)
+
+    def shapes(self):
+        """Return (vertices, triangles, triangle_faces): lists with one array
+        per shape, or None when the run has no shapes."""
+        if "shapes" not in self._f:
+            return None
+        try:
+            g = self._f["shapes"]
+            vo, to = g["vertex_offsets"][()], g["triangle_offsets"][()]
+            v, t, tf = g["vertices"][()], g["triangles"][()], g["triangle_face"][()]
+        except (KeyError, OSError) as exc:
+            raise DumpFormatError(f"{self.path}: /shapes unreadable: {exc}") from None
+        n = len(vo) - 1
+        return ([v[vo[i]:vo[i + 1]] for i in range(n)],
+                [t[to[i]:to[i + 1]] for i in range(n)],
+                [tf[to[i]:to[i + 1]] for i in range(n)])
+
+    def read(self, i) -> Snapshot:
+        """Snapshot number ``i`` (0-based, time order)."""
+        name = self.names[i]
+        try:
+            g = self._f["snapshots/" + name]
+            lo, hi = g["box/lo"][()], g["box/hi"][()]
+            b = {k: g["bodies/" + k][()] for k in _BODY_FIELDS if "bodies/" + k in g}
+            c = {k: g["contacts/" + k][()] for k in _CONTACT_FIELDS}
+            snap = Snapshot(
+                name=name, step=int(g.attrs["step"]), time=float(g.attrs["time"]),
+                stage=str(g.attrs["stage"]),
+                volume=float(np.prod(hi - lo)), box_lo=lo, box_hi=hi,
+                wall_ids=g["walls/id"][()], wall_forces=g["walls/force"][()],
+                body_ids=b["id"], positions=b["position"],
+                id1=c["id1"], id2=c["id2"], point=c["point"],
+                force=c["force_normal"] + c["force_tangential"],
+                force_normal=c["force_normal"], normal=c["normal"],
+                overlap=c["overlap"], body_kind=b["kind"],
+                orientations=b["orientation"], volumes=b["volume"],
+                masses=b["mass"], shape_index=b["shape_index"], sizes=b["size"],
+            )
+        except (KeyError, OSError, ValueError) as exc:
+            raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "
+                                  f"unreadable ({exc})") from None
+        return snap
+
+    def __iter__(self) -> Iterator[Snapshot]:
+        for i in range(len(self.names)):
+            yield self.read(i)
