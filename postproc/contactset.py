@@ -65,6 +65,18 @@ def _check_finite(label, arr, where, what):
                          f"(first: {what} {k})")
 
 
+def _has_duplicates(ids):
+    """True when the int array ``ids`` holds a value twice (O(n) for the
+    dense ids YADE uses, a sort otherwise)."""
+    if len(ids) < 2:
+        return False
+    lo, hi = int(ids.min()), int(ids.max())
+    if hi - lo < 4 * len(ids) + 64:
+        return bool(np.bincount(ids - lo).max() > 1)
+    s = np.sort(ids)
+    return bool((s[1:] == s[:-1]).any())
+
+
 def _lookup(ids, table_ids):
     """Row of each id in ``table_ids`` (unique ids), -1 where absent."""
     ids = np.asarray(ids, np.int64)
@@ -100,7 +112,7 @@ def resolve(snap: Snapshot) -> ContactSet:
     if nc == 0:
         raise InputError(f"{where}: no contacts")
     body_ids = np.asarray(snap.body_ids, np.int64)
-    if len(np.unique(body_ids)) != len(body_ids):
+    if _has_duplicates(body_ids):
         raise InputError(f"{where}: duplicate body ids")
     wall_ids = np.asarray(snap.wall_ids, np.int64)
     _check_finite("body positions are", snap.positions, where, "body row")

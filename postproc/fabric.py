@@ -116,6 +116,8 @@ def anisotropies(branch, force, axis=2, *, errors=True, chunk=_CHUNK):
     for s in range(0, N, chunk):
         Ls, fs = L[s:s + chunk], f[s:s + chunk]
         ls = np.sqrt(np.einsum("ij,ij->i", Ls, Ls))
+        if not np.all(ls > 0):
+            raise ValueError("branch vectors of zero length or not finite")
         ns = Ls / ls[:, None]
         fn = np.einsum("ij,ij->i", fs, ns)
         fperp = fs - fn[:, None] * ns

@@ -71,3 +71,44 @@ def test_lattice_analysis_row():
     F3 = cz / (cx + cy + cz)
     assert row["a"] == pytest.approx(2.5 * (F3 - (1 - F3) / 2), rel=1e-12)
     assert row["a_t"] == pytest.approx(0.0, abs=1e-12)
+
+
+def _rows_close(r1, r2, keys, rel=1e-9):
+    for k in keys:
+        assert r1[k] == pytest.approx(r2[k], rel=rel, abs=1e-9 * max(1.0, abs(r2[k]))), k
+
+
+def test_snapshot_invariances():
+    """Permuting contacts, swapping id1/id2 with the force sign, rotating the
+    whole set together with the axis and scaling forces by 1e-9 or 1e9 leave
+    the invariants unchanged (stresses scale with the forces)."""
+    import copy
+
+    from postproc.axes import rotation_z_to
+
+    snap, _, _ = lattice_snapshot(4, 3, 5, F=(2.0, 3.0, 6.0), T=0.7)
+    keys = ("p", "q", "q_over_p", "q_axial_over_p", "a", "a_l", "a_n", "a_t", "sff",
+            "z", "q_over_p_branch", "reldiff_branch", "frac_below_mean")
+    ref = analyze_snapshot(snap).row
+    rng = np.random.default_rng(0)
+    perm = copy.deepcopy(snap)
+    p = rng.permutation(len(snap.id1))
+    for k in ("id1", "id2", "point", "force", "force_normal", "normal", "overlap"):
+        setattr(perm, k, getattr(snap, k)[p])
+    _rows_close(analyze_snapshot(perm).row, ref, keys)
+    sw = copy.deepcopy(snap)
+    sw.id1, sw.id2 = snap.id2.copy(), snap.id1.copy()
+    sw.force, sw.force_normal, sw.normal = -snap.force, -snap.force_normal, -snap.normal
+    _rows_close(analyze_snapshot(sw).row, ref, keys + ("s_xx", "s_xy", "p_wall"))
+    R = rotation_z_to((0.2, 0.5, 0.8)) @ rotation_z_to((0.0, 1.0, 0.0))
+    rot = copy.deepcopy(snap)
+    for k in ("positions", "point", "force", "force_normal", "normal"):
+        setattr(rot, k, getattr(snap, k) @ R.T)
+    rot.wall_forces = None          # the walls no longer bound an axis-aligned box
+    _rows_close(analyze_snapshot(rot, axis=R[:, 2]).row, ref, keys)
+    for scale in (1e-9, 1e9):
+        sc = copy.deepcopy(snap)
+        sc.force, sc.force_normal, sc.wall_forces = snap.force * scale, snap.force_normal * scale, snap.wall_forces * scale
+        row = analyze_snapshot(sc).row
+        _rows_close(row, ref, ("q_over_p", "a", "a_l", "a_n", "a_t", "z", "frac_below_mean"))
+        assert row["p"] == pytest.approx(ref["p"] * scale, rel=1e-12)

@@ -1,0 +1,196 @@
+"""The postproc CLI end to end: outputs, flat tables and bad input."""
+import os
+
+import numpy as np
+import pandas as pd
+import pytest
+from builders import lattice_snapshot, write_snapshot
+
+from postproc.cli import main
+from postproc.schema import DumpWriter
+from postproc.synthetic import harmonic_contacts, write_synthetic_dump
+
+FIGURES = ("qp_sff.png", "anisotropies.png", "polar_last.png")
+COLUMNS = ("step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l", "a_n",
+           "a_t", "sff", "sff_residual", "z", "n_contacts", "a_fit", "a_l_fit", "a_n_fit",
+           "a_t_fit", "s_xx", "s_zz", "s_xz")
+
+
+def test_analyze_synthetic_dump(tmp_path):
+    path = str(tmp_path / "run.h5")
+    truths = write_synthetic_dump(path, n_contacts=20_000, n_snapshots=4, seed=1)
+    out = tmp_path / "out"
+    assert main(["analyze", path, "--out", str(out)]) == 0
+    df = pd.read_csv(out / "summary.csv")
+    for c in COLUMNS:
+        assert c in df.columns, c
+    assert len(df) == 4
+    for k in ("a", "a_l", "a_n", "a_t"):
+        truth = np.array([t[k] for t in truths])
+        assert np.all(np.abs(df[k] - truth) < 5 * df[k + "_se"]), k
+    for fig in FIGURES:
+        assert (out / fig).stat().st_size > 1000
+    assert df["eps_q"].iloc[0] == 0 and df["eps_q"].iloc[-1] == pytest.approx(np.log(1 / 0.9))
+    assert not (out / "errors.txt").exists()
+
+
+def test_analyze_lattice_dump_matches_exact_stress(tmp_path):
+    snap, sigma, _ = lattice_snapshot(4, 4, 8, F=(2.0, 2.0, 5.0), T=0.0)
+    path = str(tmp_path / "lat.h5")
+    with DumpWriter(path, "spheres", {}) as w:
+        write_snapshot(w, snap)
+    out = tmp_path / "o"
+    assert main(["analyze", path, "--out", str(out)]) == 0
+    row = pd.read_csv(out / "summary.csv").iloc[0]
+    assert row["s_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
+    assert row["w_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
+    assert row["q_over_p"] == pytest.approx(1 / 3, rel=1e-12)
+    assert row["n_contacts_wall"] == 2 * (16 + 32 + 32)
+
+
+def _table(s, walls=False):
+    df = pd.DataFrame({
+        "id1": s.id1, "id2": s.id2,
+        "x1": s.x1[:, 0], "y1": s.x1[:, 1], "z1": s.x1[:, 2],
+        "x2": s.x2[:, 0], "y2": s.x2[:, 1], "z2": s.x2[:, 2],
+        "cx": s.point[:, 0], "cy": s.point[:, 1], "cz": s.point[:, 2],
+        "fx": s.force[:, 0], "fy": s.force[:, 1], "fz": s.force[:, 2]})
+    return df
+
+
+@pytest.mark.parametrize("fmt", ["csv", "parquet"])
+def test_flat_table_gives_the_same_numbers_as_the_dump(tmp_path, fmt):
+    s = harmonic_contacts(5000, 0.3, 0.1, 0.4, 0.2, seed=4)
+    path = tmp_path / f"c.{fmt}"
+    df = _table(s)
+    df.to_csv(path, index=False) if fmt == "csv" else df.to_parquet(path)
+    out = tmp_path / "o"
+    assert main(["analyze", str(path), "--out", str(out), "--volume", "1.0"]) == 0
+    row = pd.read_csv(out / "summary.csv").iloc[0]
+    from postproc.fabric import anisotropies
+
+    ref = anisotropies(s.branch, s.force)
+    for k in ("a", "a_l", "a_n", "a_t"):
+        assert row[k] == pytest.approx(ref[k], rel=1e-9, abs=1e-12)
+    sig = s.force.T @ s.branch
+    assert row["p"] == pytest.approx(np.trace(sig) / 3, rel=1e-9)
+
+
+def test_flat_table_with_walls_and_box(tmp_path):
+    snap, sigma, _ = lattice_snapshot(3, 3, 3, F=(1.0, 1.0, 4.0), T=0.0)
+    pos = dict(zip(snap.body_ids, snap.positions))
+    rows = []
+    for a, b, c, f in zip(snap.id1, snap.id2, snap.point, snap.force):
+        if a < 6:        # wall as id1: flip to put the wall in id2 (force sign flips)
+            a, b, f = b, a, -f
+        x1 = pos[a]
+        x2 = pos.get(b, [np.nan] * 3)
+        rows.append([a, -(b + 1) if b < 6 else b, *x1, *x2, *c, *f])
+    df = pd.DataFrame(rows, columns=["id1", "id2", "x1", "y1", "z1", "x2", "y2", "z2",
+                                     "cx", "cy", "cz", "fx", "fy", "fz"])
+    path = tmp_path / "w.csv"
+    df.to_csv(path, index=False)
+    out = tmp_path / "o"
+    L = snap.box_lengths
+    assert main(["analyze", str(path), "--out", str(out), "--box", *map(str, L)]) == 0
+    row = pd.read_csv(out / "summary.csv").iloc[0]
+    assert row["s_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
+    assert row["w_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
+    assert row["w_xx"] == pytest.approx(sigma[0, 0], rel=1e-12)
+
+
+# ------------------------------------------------------------- bad input
+def _dump_with(tmp_path, mutate, name="bad.h5"):
+    snap, _, _ = lattice_snapshot()
+    mutate(snap)
+    path = str(tmp_path / name)
+    with DumpWriter(path, "spheres", {}) as w:
+        write_snapshot(w, snap)
+    return path
+
+
+def _nan(s):
+    s.force[3, 1] = np.nan
+    s.force_normal[3, 1] = np.nan
+
+
+def _unknown(s):
+    s.id2[5] = 999
+
+
+def _none(s):
+    for k in ("id1", "id2"):
+        setattr(s, k, getattr(s, k)[:0])
+    for k in ("point", "force", "force_normal", "normal"):
+        setattr(s, k, getattr(s, k)[:0])
+    s.overlap = s.overlap[:0]
+
+
+def _flat(s):
+    s.box_hi = s.box_lo.copy()
+
+
+def _dup(s):
+    s.body_ids[1] = s.body_ids[0]
+
+
+@pytest.mark.parametrize("mutate,message", [
+    (_nan, "contact forces are NaN or infinite"),
+    (_unknown, "unknown body ids .*id 999"),
+    (_none, "no contacts"),
+    (_flat, "volume is 0.0"),
+    (_dup, "duplicate body ids"),
+])
+def test_bad_snapshot_gives_one_line_and_writes_nothing(tmp_path, capsys, mutate, message):
+    import re
+
+    path = _dump_with(tmp_path, mutate)
+    out = tmp_path / "out"
+    assert main(["analyze", path, "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and re.search(message, err[0]), err
+    assert "Traceback" not in err[0]
+    assert not out.exists()
+
+
+def test_bad_files_and_options(tmp_path, capsys):
+    assert main(["analyze", str(tmp_path / "nope.h5"), "--out", str(tmp_path / "o")]) == 2
+    assert "no such file" in capsys.readouterr().err
+    s = harmonic_contacts(100, seed=1)
+    path = tmp_path / "c.csv"
+    _table(s).to_csv(path, index=False)
+    assert main(["analyze", str(path), "--out", str(tmp_path / "o")]) == 2
+    assert "needs the volume" in capsys.readouterr().err
+    assert main(["analyze", str(path), "--out", str(tmp_path / "o"), "--volume", "0"]) == 2
+    assert "--volume must be finite and > 0" in capsys.readouterr().err
+    assert main(["analyze", str(path), "--out", str(tmp_path / "o"), "--volume", "1", "--axis", "w"]) == 2
+    assert "--axis" in capsys.readouterr().err
+    _table(s).drop(columns=["fz"]).to_csv(path, index=False)
+    assert main(["analyze", str(path), "--out", str(tmp_path / "o"), "--volume", "1"]) == 2
+    assert "missing columns fz" in capsys.readouterr().err
+    path.write_text("id1,id2\n")
+    assert main(["analyze", str(path), "--out", str(tmp_path / "o"), "--volume", "1"]) == 2
+    assert not (tmp_path / "o").exists()
+
+
+def test_one_bad_snapshot_keeps_the_others(tmp_path, capsys):
+    snap, _, _ = lattice_snapshot()
+    bad, _, _ = lattice_snapshot()
+    _nan(bad)
+    path = str(tmp_path / "mix.h5")
+    with DumpWriter(path, "spheres", {}) as w:
+        write_snapshot(w, snap, step=0)
+        write_snapshot(w, bad, step=1)
+        write_snapshot(w, snap, step=2)
+    out = tmp_path / "o"
+    assert main(["analyze", path, "--out", str(out)]) == 1
+    df = pd.read_csv(out / "summary.csv")
+    assert df["step"].tolist() == [0, 2]
+    assert "step 1" in (out / "errors.txt").read_text()
+    assert "NaN" in capsys.readouterr().err
+
+
+def test_synthetic_subcommand(tmp_path):
+    path = str(tmp_path / "s.h5")
+    assert main(["synthetic", path, "--contacts", "500", "--snapshots", "2"]) == 0
+    assert main(["analyze", path, "--out", str(tmp_path / "o")]) == 0
