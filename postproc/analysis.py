@@ -49,6 +49,12 @@ def _stress_columns(prefix, sigma, axis):
         f"{prefix}sigma_1": inv["principal"][0], f"{prefix}sigma_2": inv["principal"][1],
         f"{prefix}sigma_3": inv["principal"][2],
     })
+    # principal directions of sigma_1 and sigma_3 (unit vectors, sign fixed so
+    # that the largest component is positive)
+    for k, label in ((0, "1"), (2, "3")):
+        d = inv["directions"][:, k]
+        d = d * np.sign(d[np.argmax(np.abs(d))])
+        row.update({f"{prefix}dir{label}_{c}": float(v) for c, v in zip("xyz", d)})
     return row, inv
 
 
