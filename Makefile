@@ -9,8 +9,9 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 STUDY ?= runs/study
+SHAPES_LIB ?= runs/shapes/library.h5
 
-.PHONY: test study system venv bench clean-venv
+.PHONY: test study system venv bench clean-venv shapes
 
 # Debian's YADE (runs the scenes on /usr/bin/python3) and h5py for that Python.
 system:
@@ -32,9 +33,16 @@ venv: $(STAMP)
 test: system venv
 	$(PY) -m pytest -q
 
+# The polyhedra library (1000 ballast-like grains, seed 0) and its report.
+$(SHAPES_LIB): | venv
+	@mkdir -p $(dir $(SHAPES_LIB))
+	$(PY) -m shapes build --n 1000 --seed 0 --out $(SHAPES_LIB) --report $(dir $(SHAPES_LIB))library-report
+
+shapes: $(SHAPES_LIB)
+
 # Until the YADE scenes land (issue 4), the study analyses a synthetic dump
 # with known anisotropies, and says so.
-study: system venv
+study: system venv $(SHAPES_LIB)
 	@echo "make study: NOTE: the YADE simulations are not implemented yet;"
 	@echo "make study: analysing a SYNTHETIC dump with known anisotropies instead."
 	@mkdir -p $(STUDY)

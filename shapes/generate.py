@@ -1,0 +1,151 @@
+"""The recipe for ballast-like grains.
+
+Crushed stone is angular, with sharp edges and flat facets, and is neither
+spherical nor needle-like. The published library (1000 digitised SNCF ballast
+grains) has 8-37 vertices (mean 20) and 12-70 faces (mean 35): F = 2V - 4,
+the count of a convex polyhedron whose faces are all triangles, so we build
+each grain as the convex hull of points in general position:
+
+1. the vertex count V = V_min + round((V_max - V_min) * B), B ~ Beta(alpha, beta),
+   with (alpha, beta) chosen so that the mean is 20 on [8, 37];
+2. a base ellipsoid with semi-axes 1 >= e >= e f (elongation e = I/L and
+   flatness f = S/I drawn uniformly in ``elongation`` and ``flatness``);
+3. V points on it, at uniformly random directions, each pushed in or out
+   radially by up to ``jitter`` (irregular facets), and at least
+   ``min_separation`` x (2 x largest semi-axis) apart; points are added until
+   the hull has exactly V vertices (interior points are dropped);
+   wherever two adjacent triangles are nearly coplanar (bend below
+   ``CREASE_DEG``), one of the two vertices opposite their common edge is
+   replaced by a new random point, until every edge is a clear crease, so
+   every face is a triangle, as in the published library (F = 2V - 4);
+4. the hull is checked (:func:`shapes.polyhedron.check_polyhedron`: no
+   duplicate vertices, no sliver faces, no short edges, convex, closed) and
+   must not be near-spherical (S/L <= ``max_s_over_l``); a draw that fails
+   is redrawn with the same V (so that rejections, more frequent for many
+   vertices, do not bias the count distribution), and the reasons are
+   counted;
+5. the grain is moved to its centre of mass and principal frame and scaled to
+   d = 1 (:func:`shapes.polyhedron.normalise`).
+
+Everything comes from one numpy Generator seeded by the caller, so a library
+is reproducible from its seed.
+"""
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from .polyhedron import CREASE_DEG, ShapeError, bend_angles, check_polyhedron, hull, normalise
+
+
+@dataclass(frozen=True)
+class Recipe:
+    """Parameters of the grain generator (see the module docstring)."""
+
+    v_min: int = 8
+    v_max: int = 37
+    v_beta: tuple = (2.0, 2.83)          # mean 8 + 29 * 2/4.83 = 20.0
+    elongation: tuple = (0.55, 0.95)     # I/L of the base ellipsoid
+    flatness: tuple = (0.5, 0.9)         # S/I of the base ellipsoid
+    jitter: float = 0.10
+    min_separation: float = 0.09
+    max_s_over_l: float = 0.8
+    max_tries: int = 1000
+    repair_steps_per_vertex: int = 20
+
+    def as_dict(self):
+        return asdict(self)
+
+
+def _draw_points(rng, n, axes, recipe):
+    pts = []
+    tries = 0
+    sep = recipe.min_separation * 2 * axes.max()
+    while len(pts) < n:
+        tries += 1
+        if tries > 100 * n:
+            raise ShapeError("could not place points at the minimum separation")
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        x = axes * u * (1 + recipe.jitter * rng.uniform(-1, 1))
+        if all(np.linalg.norm(x - p) >= sep for p in pts):
+            pts.append(x)
+    return pts
+
+
+def _flat_edge_opposites(v, t, crease):
+    """Vertices opposite the edges that bend by less than ``crease`` deg."""
+    edges, pairs, bend = bend_angles(v, t)
+    bad = bend < crease
+    if not bad.any():
+        return np.zeros(0, int)
+    tri = t[pairs[bad].ravel()]
+    e = np.repeat(edges[bad], 2, axis=0)
+    opp = tri[(tri != e[:, [0]]) & (tri != e[:, [1]])]
+    return np.unique(opp)
+
+
+def generate_shape(rng, recipe=Recipe(), rejections=None):
+    """One valid grain (:class:`~shapes.polyhedron.Polyhedron`, d = 1).
+
+    rng : numpy Generator. rejections : optional Counter, incremented with
+    the reason of every redrawn attempt.
+    """
+    rejections = Counter() if rejections is None else rejections
+    target = recipe.v_min + int(round((recipe.v_max - recipe.v_min) * rng.beta(*recipe.v_beta)))
+    for _ in range(recipe.max_tries):
+        # the vertex count is kept across redraws, so that rejections (more
+        # frequent for many vertices) do not bias the count distribution
+        e = rng.uniform(*recipe.elongation)
+        f = rng.uniform(*recipe.flatness)
+        axes = np.array([1.0, e, e * f])
+        try:
+            pts = _draw_points(rng, target, axes, recipe)
+            for _ in range(recipe.repair_steps_per_vertex * target):
+                v, t = hull(np.array(pts), allow_interior=True)
+                if len(v) < target:          # interior points were dropped
+                    pts = [*v, *_draw_points_more(rng, v, axes, recipe)]
+                    continue
+                flat = _flat_edge_opposites(v, t, CREASE_DEG)
+                if not len(flat):
+                    break
+                # a nearly flat edge: move one of the two opposite vertices
+                drop = int(rng.choice(flat))
+                keep = np.delete(v, drop, axis=0)
+                pts = [*keep, *_draw_points_more(rng, keep, axes, recipe)]
+            else:
+                rejections["nearly flat edge (not repaired)"] += 1
+                continue
+            check_polyhedron(v, t)
+            poly = normalise(v, t)
+        except ShapeError as exc:
+            rejections[str(exc).split(":")[0]] += 1
+            continue
+        if poly.dims[2] / poly.dims[0] > recipe.max_s_over_l:
+            rejections["near-spherical"] += 1
+            continue
+        return poly
+    raise ShapeError(f"no valid grain in {recipe.max_tries} draws: {dict(rejections)}")
+
+
+def _draw_points_more(rng, existing, axes, recipe):
+    """One more point at the minimum separation from the existing ones."""
+    sep = recipe.min_separation * 2 * axes.max()
+    for _ in range(1000):
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        x = axes * u * (1 + recipe.jitter * rng.uniform(-1, 1))
+        if np.min(np.linalg.norm(np.asarray(existing) - x, axis=1)) >= sep:
+            return [x]
+    raise ShapeError("could not place points at the minimum separation")
+
+
+def generate_library(n, seed=0, recipe=Recipe()):
+    """``n`` grains from ``seed``; returns (list of Polyhedron, Counter of
+    rejection reasons)."""
+    rng = np.random.default_rng(seed)
+    rejections = Counter()
+    shapes = [generate_shape(rng, recipe, rejections) for _ in range(n)]
+    return shapes, rejections

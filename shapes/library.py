@@ -1,0 +1,95 @@
+"""The shape library file: HDF5, readable with numpy + h5py alone (the YADE
+scene scripts load it on Debian's system Python).
+
+Layout (``schema`` = "ballast-shape-library", ``schema_version`` = 1):
+
+file attributes  ``seed``, ``n_shapes``, ``recipe`` (JSON), ``tolerances``
+                 (JSON), ``created_by``
+``vertex_offsets``    (S+1,) int64  shape s owns vertices[vo[s]:vo[s+1]]
+``vertices``          (V, 3) float64  in the normalised frame: centre of
+                      mass at the origin, principal axes (x long), d = 1
+``triangle_offsets``  (S+1,) int64
+``triangles``         (T, 3) int32  local vertex indices, counter-clockwise
+                      seen from outside
+``triangle_face``     (T,) int32  geometric face of each triangle
+``volume``            (S,) float64  d^3 (d = 1)
+``inertia``           (S, 3, 3) float64  about the centre of mass, unit
+                      density, d^5 (diagonal in this frame)
+``dims``              (S, 3) float64  extents along the principal axes,
+                      L >= I >= S
+``sphericity``        (S,) float64  Wadell's
+``n_vertices``, ``n_faces``, ``n_edges``  (S,) int32  geometric counts
+
+A body of size d (m) and density rho (kg/m^3) has vertices d * v (m), volume
+d^3 * volume (m^3), mass rho * d^3 * volume and inertia rho * d^5 * inertia.
+"""
+from __future__ import annotations
+
+import json
+import os
+
+import h5py
+import numpy as np
+
+SCHEMA = "ballast-shape-library"
+VERSION = 1
+
+
+class LibraryError(ValueError):
+    """A shape library file that cannot be read."""
+
+
+def write_library(path, shapes, seed, recipe, tolerances):
+    """Write the list of Polyhedron ``shapes`` atomically (temporary file +
+    rename)."""
+    tmp = str(path) + ".tmp"
+    with h5py.File(tmp, "w") as f:
+        f.attrs.update({"schema": SCHEMA, "schema_version": VERSION, "seed": int(seed),
+                        "n_shapes": len(shapes), "recipe": json.dumps(recipe),
+                        "tolerances": json.dumps(tolerances),
+                        "created_by": "python -m shapes build"})
+        f["vertex_offsets"] = np.concatenate([[0], np.cumsum([s.n_vertices for s in shapes])]).astype(np.int64)
+        f["triangle_offsets"] = np.concatenate([[0], np.cumsum([len(s.triangles) for s in shapes])]).astype(np.int64)
+        f["vertices"] = np.concatenate([s.vertices for s in shapes])
+        f["triangles"] = np.concatenate([s.triangles for s in shapes]).astype(np.int32)
+        f["triangle_face"] = np.concatenate([s.triangle_face for s in shapes]).astype(np.int32)
+        f["volume"] = np.array([s.volume for s in shapes])
+        f["inertia"] = np.array([s.inertia for s in shapes])
+        f["dims"] = np.array([s.dims for s in shapes])
+        f["sphericity"] = np.array([s.sphericity for s in shapes])
+        for k in ("n_vertices", "n_faces", "n_edges"):
+            f[k] = np.array([getattr(s, k) for s in shapes], np.int32)
+    os.replace(tmp, path)
+
+
+class ShapeLibrary:
+    """Read-only access to a library file; ``lib[s]`` gives (vertices,
+    triangles, triangle_face) of shape s (d = 1)."""
+
+    def __init__(self, path):
+        if not os.path.exists(path):
+            raise LibraryError(f"{path}: no such shape library (build it with 'make shapes')")
+        try:
+            with h5py.File(path, "r") as f:
+                if f.attrs.get("schema") != SCHEMA or int(f.attrs.get("schema_version", -1)) != VERSION:
+                    raise LibraryError(f"{path}: not a {SCHEMA} v{VERSION} file")
+                self.attrs = {k: (v.item() if hasattr(v, "item") else v) for k, v in f.attrs.items()}
+                self.data = {k: f[k][()] for k in f.keys()}
+        except OSError as exc:
+            raise LibraryError(f"{path}: unreadable ({exc.__class__.__name__})") from None
+        self.path = path
+
+    def __len__(self):
+        return len(self.data["volume"])
+
+    def __getitem__(self, s):
+        vo, to = self.data["vertex_offsets"], self.data["triangle_offsets"]
+        return (self.data["vertices"][vo[s]:vo[s + 1]],
+                self.data["triangles"][to[s]:to[s + 1]],
+                self.data["triangle_face"][to[s]:to[s + 1]])
+
+    def __getattr__(self, name):
+        try:
+            return self.__dict__["data"][name]
+        except KeyError:
+            raise AttributeError(name) from None

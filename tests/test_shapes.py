@@ -1,0 +1,181 @@
+"""The ballast-like shape library (issue 3)."""
+import numpy as np
+import pytest
+
+from shapes import polyhedron as P
+from shapes.generate import Recipe, generate_library
+from shapes.library import LibraryError, ShapeLibrary, write_library
+from shapes.polyhedron import ShapeError, check_polyhedron, polyhedron_from_points
+from shapes.report import PUBLISHED, library_stats
+from shapes.sizes import CLASS_DIAMETERS, CLASS_FRACTIONS, class_counts, sample_diameters
+
+N_LIBRARY = 1000
+
+
+@pytest.fixture(scope="module")
+def library(tmp_path_factory):
+    shapes, rejections = generate_library(N_LIBRARY, seed=0)
+    path = tmp_path_factory.mktemp("lib") / "lib.h5"
+    tol = {k: getattr(P, k) for k in ("VERTEX_TOL", "EDGE_TOL", "HEIGHT_TOL", "VOLUME_TOL")}
+    write_library(str(path), shapes, 0, Recipe().as_dict(), tol)
+    return ShapeLibrary(str(path))
+
+
+def test_every_shape_is_valid_and_normalised(library):
+    for s in range(len(library)):
+        v, t, tf = library[s]
+        check_polyhedron(v, t, tf)
+        assert 2 * np.max(np.linalg.norm(v, axis=1)) == pytest.approx(1.0, abs=1e-12)
+        # Euler's formula on the geometric counts; every face is a triangle
+        assert library.n_vertices[s] - library.n_edges[s] + library.n_faces[s] == 2
+        assert library.n_faces[s] == len(t)
+
+
+def test_counts_match_the_published_library(library):
+    st = library_stats(library)
+    for key, (lo, hi, mean) in PUBLISHED.items():
+        x = getattr(library, key)
+        assert x.min() >= lo and x.max() <= hi, key
+        assert abs(x.mean() / mean - 1) < 0.15, (key, x.mean())
+        assert st[key]["mean"] == pytest.approx(x.mean())
+    # crushed stone, not blobs: every grain is elongated or flat (S/L <= 0.8)
+    assert np.all(library.dims[:, 2] / library.dims[:, 0] <= Recipe().max_s_over_l + 1e-12)
+
+
+def tetra_mass_properties(v, t):
+    """Independent volume, barycentre and inertia (unit density) by
+    decomposition into tetrahedra (origin, triangle); integral of x x^T over
+    a tetrahedron (0, a, b, c) = V/20 (a a^T + b b^T + c c^T + s s^T), s = a+b+c."""
+    a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
+    vol = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6
+    V = vol.sum()
+    centre = (vol[:, None] * (a + b + c) / 4).sum(axis=0) / V
+    s = a + b + c
+    C = sum(np.einsum("i,ij,ik->jk", vol / 20, x, x) for x in (a, b, c, s))
+    C -= V * np.outer(centre, centre)
+    return V, centre, np.trace(C) * np.eye(3) - C
+
+
+def test_mass_properties_agree_with_tetrahedral_decomposition(library):
+    for s in range(0, len(library), 7):
+        v, t, _ = library[s]
+        V, centre, I = tetra_mass_properties(v, t)
+        assert abs(V / library.volume[s] - 1) < 1e-10
+        assert np.linalg.norm(centre) < 1e-10          # d = 1
+        scale = np.linalg.norm(I)
+        assert np.linalg.norm(I - library.inertia[s]) < 1e-10 * scale
+        # principal frame: diagonal, increasing moments
+        off = I - np.diag(np.diag(I))
+        assert np.linalg.norm(off) < 1e-10 * scale
+        assert np.all(np.diff(np.diag(I)) >= -1e-10 * scale)
+
+
+def test_reproducible_from_seed():
+    a, _ = generate_library(5, seed=42)
+    b, _ = generate_library(5, seed=42)
+    c, _ = generate_library(5, seed=43)
+    for x, y in zip(a, b):
+        np.testing.assert_array_equal(x.vertices, y.vertices)
+    assert not np.array_equal(a[0].vertices, c[0].vertices)
+
+
+# ------------------------------------------------------------- hard cases
+CUBE = np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], float)
+
+
+def test_coplanar_points_are_rejected():
+    rng = np.random.default_rng(0)
+    grid = np.stack(np.meshgrid(np.arange(5), np.arange(4)), -1).reshape(-1, 2) * 0.25
+    pts = np.column_stack([grid + rng.uniform(-0.05, 0.05, grid.shape), np.zeros(20)])
+    with pytest.raises(ShapeError, match="coplanar"):
+        polyhedron_from_points(pts)
+    pts[:, 2] = 1e-9 * rng.uniform(size=20)      # nearly coplanar
+    with pytest.raises(ShapeError, match="coplanar"):
+        polyhedron_from_points(pts)
+
+
+def test_sliver_tetrahedron_is_rejected():
+    sliver = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.3, 0.3, 0.003]])
+    with pytest.raises(ShapeError, match="coplanar|sliver"):
+        polyhedron_from_points(sliver)
+    # a sliver face on an otherwise fat body: a cube with one vertex nudged
+    # barely out of its face plane makes a needle-thin triangle
+    pts = np.vstack([CUBE, [[0.5, 1e-3, 1.0005]]])
+    with pytest.raises(ShapeError):
+        polyhedron_from_points(pts, allow_interior=True)
+
+
+def test_duplicate_vertices_are_rejected():
+    with pytest.raises(ShapeError, match="duplicate"):
+        polyhedron_from_points(np.vstack([CUBE, CUBE[3]]))
+    with pytest.raises(ShapeError, match="near-duplicate vertices"):
+        polyhedron_from_points(np.vstack([CUBE, CUBE[3] + 1e-6]))
+
+
+@pytest.mark.parametrize("scale", [1e-6, 1e6])
+def test_scaling_is_handled(scale):
+    (grain,), _ = generate_library(1, seed=3)
+    pts = grain.vertices
+    ref = polyhedron_from_points(pts)
+    scaled = polyhedron_from_points(pts * scale + 5 * scale)
+    np.testing.assert_allclose(scaled.vertices, ref.vertices, atol=1e-9)
+    assert scaled.volume == pytest.approx(ref.volume, rel=1e-9)
+
+
+def test_bad_meshes_are_rejected():
+    v, t = P.hull(CUBE)
+    check_polyhedron(v, t)
+    with pytest.raises(ShapeError, match="not closed|vertex .* belongs to no triangle"):
+        check_polyhedron(v, t[1:])
+    flipped = t.copy()
+    flipped[0] = flipped[0][[0, 2, 1]]
+    with pytest.raises(ShapeError, match="oriented|closed"):
+        check_polyhedron(v, flipped)
+    inward = t[:, [0, 2, 1]]
+    with pytest.raises(ShapeError, match="not positive"):
+        check_polyhedron(v, inward)
+    dent = v.copy()
+    dent[0] = dent[0] * 0.6 + v.mean(axis=0) * 0.4       # push a corner inwards
+    with pytest.raises(ShapeError, match="not convex"):
+        check_polyhedron(dent, t)
+    with pytest.raises(ShapeError, match="NaN"):
+        polyhedron_from_points(np.vstack([CUBE, [np.nan, 0, 0]]))
+    with pytest.raises(ShapeError, match="inside the hull"):
+        polyhedron_from_points(np.vstack([CUBE, [0.5, 0.5, 0.5]]))
+
+
+def test_library_reader_errors(tmp_path):
+    with pytest.raises(LibraryError, match="no such shape library"):
+        ShapeLibrary(str(tmp_path / "none.h5"))
+    (tmp_path / "junk.h5").write_bytes(b"not hdf5")
+    with pytest.raises(LibraryError, match="unreadable"):
+        ShapeLibrary(str(tmp_path / "junk.h5"))
+
+
+# ------------------------------------------------------------- sizes
+def test_size_classes_within_binomial_error():
+    n = 200_000
+    d = sample_diameters(n, seed=1, exact=False)
+    for dc, p in zip(CLASS_DIAMETERS, CLASS_FRACTIONS):
+        frac = np.mean(d == dc)
+        assert abs(frac - p) < 5 * np.sqrt(p * (1 - p) / n)
+    assert set(np.unique(d)) == set(CLASS_DIAMETERS)
+
+
+def test_exact_class_counts_and_reproducibility():
+    assert class_counts(100).tolist() == [50, 34, 16]
+    assert class_counts(7).sum() == 7
+    d = sample_diameters(1000, seed=5)
+    assert [int(np.sum(d == c)) for c in CLASS_DIAMETERS] == [500, 340, 160]
+    np.testing.assert_array_equal(d, sample_diameters(1000, seed=5))
+    assert not np.array_equal(d, sample_diameters(1000, seed=6))
+
+
+def test_build_command_writes_library_and_report(tmp_path):
+    from shapes.__main__ import main
+
+    out = tmp_path / "lib.h5"
+    assert main(["build", "--n", "24", "--seed", "1", "--out", str(out), "--report", str(tmp_path / "rep")]) == 0
+    assert len(ShapeLibrary(str(out))) == 24
+    for f in ("report.md", "stats.json", "counts.png", "shape_ratios.png", "sheet.png"):
+        assert (tmp_path / "rep" / f).stat().st_size > 100
