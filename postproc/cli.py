@@ -45,6 +45,15 @@ def _open_source(path, volume, box):
     return len(reader), gen(), reader.close
 
 
+def reference_index(stages):
+    """The snapshot whose box is zero strain: the last "isotropic" one (the
+    state from which shear starts), else the first "shear" one, else 0."""
+    iso = [k for k, s in enumerate(stages) if s == "isotropic"]
+    if iso:
+        return iso[-1]
+    return next((k for k, s in enumerate(stages) if s == "shear"), 0)
+
+
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
                  errors=True, progress=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
@@ -87,7 +96,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         close()
     if not rows:
         raise InputError("no snapshot could be analysed: " + "; ".join(problems[:3]))
-    ref = next((k for k, s in enumerate(stages) if s == "shear"), 0)
+    ref = reference_index(stages)
     add_strains(rows, np.array(lengths), lengths[ref], e)
     df = pd.DataFrame(rows)
     lead = ["step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l",

@@ -340,13 +340,14 @@ class DumpWriter:
         self._write_master()
         return name
 
-    def close(self, pack=True):
-        """Mark the run complete. With ``pack`` (default), copy every part
-        into one self-contained file that atomically replaces ``RUN.h5``,
-        then delete ``RUN.h5.parts/``."""
+    def close(self, pack=True, complete=True):
+        """Close the run; ``complete`` marks a run that reached its end (a
+        run stopped on a failure is closed with complete=False). With
+        ``pack`` (default), copy every part into one self-contained file that
+        atomically replaces ``RUN.h5``, then delete ``RUN.h5.parts/``."""
         if self._closed:
             return
-        self.attrs["complete"] = 1
+        self.attrs["complete"] = int(bool(complete))
         if not pack:
             self._write_master()
             self._closed = True
@@ -371,7 +372,7 @@ class DumpWriter:
     def __exit__(self, exc_type, *exc):
         # On an exception keep the parts (every snapshot already written
         # stays readable through the master file); pack on normal exit.
-        self.close(pack=exc_type is None)
+        self.close(pack=exc_type is None, complete=exc_type is None)
 
 
 # ---------------------------------------------------------------- reading

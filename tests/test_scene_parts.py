@@ -1,0 +1,126 @@
+"""The numpy parts of the YADE scene: presets, servo, sample, time step,
+the tangential-law kernel and the generator (no YADE needed)."""
+import os
+
+import numpy as np
+import pytest
+
+from yade_scripts import sample, servo, timestep
+from yade_scripts.generate import generate, render_scene
+from yade_scripts.presets import PRESETS, ConfigError, resolve
+from yade_scripts.tangential import update_shear
+
+
+def test_presets_resolve_and_reject_bad_config():
+    for preset in PRESETS:
+        for kind in ("polyhedra", "spheres"):
+            p = resolve(preset, kind)
+            assert p["sample"] == kind and p["n_particles"] >= 2
+    assert resolve("paper", "polyhedra")["n_particles"] == 36933
+    assert resolve("paper", "spheres")["n_particles"] == 19998
+    with pytest.raises(ConfigError, match="unknown parameter 'kapa' .*kappa"):
+        resolve("tiny", "spheres", {"kapa": 3})
+    with pytest.raises(ConfigError, match="friction = -1.0 is outside"):
+        resolve("tiny", "spheres", {"friction": "-1"})
+    with pytest.raises(ConfigError, match="n_particles = 'many' is not a int"):
+        resolve("tiny", "spheres", {"n_particles": "many"})
+    with pytest.raises(ConfigError, match="n_particles = 2.5 is not an integer"):
+        resolve("tiny", "spheres", {"n_particles": 2.5})
+    with pytest.raises(ConfigError, match="unknown preset"):
+        resolve("huge", "spheres")
+    with pytest.raises(ConfigError, match="dump_strain"):
+        resolve("tiny", "spheres", {"dump_strain": 0.5})
+
+
+def test_render_scene_sets_every_parameter():
+    p = resolve("default", "polyhedra", {"kappa": "2500", "seed": "7"})
+    text = render_scene(p)
+    assert "    kappa=2500.0," in text and "    seed=7," in text
+    assert "    sample='polyhedra'," in text
+    compile(text, "triaxial.py", "exec")
+
+
+def test_generate_run_folder(tmp_path):
+    out = tmp_path / "run"
+    generate(str(out), "tiny", "spheres", seeds=[3, 4])
+    assert (out / "triaxial.py").exists() and (out / "lib" / "dumpschema.py").exists()
+    lines = (out / "table.txt").read_text().splitlines()
+    assert lines[0].split() == ["description", "seed", "out"] and len(lines) == 3
+    with pytest.raises(ConfigError, match="already holds a run"):
+        generate(str(out), "tiny", "spheres")
+    with pytest.raises(ConfigError, match="shape library .* not found"):
+        generate(str(tmp_path / "p"), "tiny", "polyhedra", library=str(tmp_path / "none.h5"))
+
+
+def test_servo_closes_walls_below_target_and_opens_above():
+    L = np.array([0.1, 0.1, 0.2])
+    F = np.zeros((6, 3))
+    sig = servo.wall_stresses(F, L)
+    rates = servo.servo_rates(sig, 1e4, 0.5, 5.0)
+    assert np.allclose(rates, 0.5)                       # empty box: full speed inwards
+    v = servo.wall_velocities(rates, L)
+    assert v[0, 0] > 0 and v[1, 0] < 0 and v[4, 2] > 0 and v[5, 2] < 0
+    # stress exactly at target: walls at rest; far above: full speed outwards
+    A = np.array([L[1] * L[2], L[0] * L[2], L[0] * L[1]])
+    for a in range(3):
+        F[2 * a, a], F[2 * a + 1, a] = -1e4 * A[a], 1e4 * A[a]
+    assert np.allclose(servo.wall_stresses(F, L), 1e4)
+    assert np.allclose(servo.servo_rates(servo.wall_stresses(F, L), 1e4, 0.5, 5.0), 0)
+    assert np.allclose(servo.servo_rates(3 * servo.wall_stresses(F, L), 1e4, 0.5, 5.0), -0.5)
+
+
+def test_place_spheres_without_overlap():
+    rng = np.random.default_rng(0)
+    d = np.repeat([0.025, 0.0375, 0.05], [50, 34, 16])
+    box = sample.box_for(d, 0.25, 2.0)
+    assert box[2] == pytest.approx(2 * box[0])
+    pos = sample.place_spheres(d, box, rng)
+    from scipy.spatial.distance import pdist, squareform
+
+    gap = squareform(pdist(pos)) - (d[:, None] + d[None, :]) / 2
+    np.fill_diagonal(gap, 1)
+    assert gap.min() >= 0
+    assert np.all(pos - d[:, None] / 2 >= -1e-12) and np.all(pos + d[:, None] / 2 <= box + 1e-12)
+    with pytest.raises(RuntimeError, match="no room|larger than the box"):
+        sample.place_spheres(d, box / 3, rng)
+
+
+def test_random_quaternions_are_uniform_rotations():
+    rng = np.random.default_rng(1)
+    q = sample.random_quaternions(20000, rng)
+    assert np.allclose(np.linalg.norm(q, axis=1), 1)
+    R = sample.quaternion_matrices(q)
+    assert np.allclose(np.einsum("nij,nkj->nik", R, R), np.eye(3), atol=1e-12)
+    # uniform rotations send e_z uniformly on the sphere: <z^2> = 1/3, se = sqrt(4/45/N)
+    z = R[:, :, 2]
+    assert abs(np.mean(z[:, 2] ** 2) - 1 / 3) < 5 * np.sqrt(4 / 45 / len(z))
+
+
+def test_time_step_scaling():
+    m, k = np.array([1.0, 4.0]), np.array([100.0, 100.0])
+    assert timestep.critical_time_step(m, k) == pytest.approx(0.1)
+    cube = np.array([[x, y, z] for x in (-.5, .5) for y in (-.5, .5) for z in (-.5, .5)])
+    # unit cube: V = 1, I = 1/6, r_k^2 = 0.5 -> I/r^2 = 1/3
+    assert timestep.rotational_mass(1.0, [1 / 6] * 3, cube) == pytest.approx(1 / 3)
+    # I = rate d sqrt(rho/p)
+    assert timestep.inertial_strain_rate(1e-3, 0.03, 2700, 1e4) * 0.03 * np.sqrt(0.27) == pytest.approx(1e-3)
+
+
+def test_tangential_kernel_elastic_then_coulomb():
+    n = np.array([[0.0, 0.0, 1.0]] * 3)
+    zero = np.zeros((3, 3))
+    inc = np.array([[1e-6, 0, 0], [-1e-6, 0, 0], [0, 0, 0]])
+    fs = np.zeros((3, 3))
+    kt, mu, fn = np.full(3, 1e5), np.full(3, 0.5), np.full(3, 2.0)
+    for _ in range(5):
+        fs, slide = update_shear(fs, n, zero, zero, inc, kt, mu, fn)
+    assert np.allclose(fs[:, 0], [-0.5, 0.5, 0.0])      # 5 x 1e5 x 1e-6, history per contact
+    assert not slide.any()
+    for _ in range(20):
+        fs, slide = update_shear(fs, n, zero, zero, inc, kt, mu, fn)
+    assert np.allclose(fs[:, 0], [-1.0, 1.0, 0.0])      # Coulomb cap mu fn
+    assert slide.tolist() == [True, True, False]
+    # a tilted normal: the shear force is projected back into the tangent plane
+    tilt = np.array([[0.0, np.sin(0.1), np.cos(0.1)]] * 3)
+    fs2, _ = update_shear(np.array([[0.0, 0.3, 0.0]] * 3), tilt, zero, zero, zero, kt, mu, fn)
+    assert np.allclose(np.einsum("ij,ij->i", fs2, tilt), 0)

@@ -1,0 +1,122 @@
+"""Presets of the triaxial scene: named parameter sets per sample.
+
+``tiny``     the test suite: a few dozen particles, a few percent of strain,
+             well under 3 minutes per sample on this machine.
+``default``  the main job of ``make study`` (see the README for its cost and
+             how it was chosen).
+``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
+             cluster through yade-batch; not run here.
+
+Every key is a parameter of ``triaxial.py`` (its ``readParamsFromTable``
+block holds the full list with units).
+"""
+from __future__ import annotations
+
+COMMON = {
+    "sigma0": 1.0e4, "friction": 0.5, "wall_friction": 0.0, "density": 2700.0,
+    "tangential_ratio": 1.0, "damping": 0.2, "compaction_damping": 0.2, "safety": 0.3, "servo_gain": 5.0,
+    "initial_fraction": 0.25, "aspect": 2.0, "iso_tolerance": 0.01,
+    "unbalanced_tolerance": 0.01, "wall_speed": 0.0, "library": "shapes.h5", "out": "run.h5",
+}
+
+PRESETS = {
+    "tiny": {
+        "common": {"kappa": 150.0, "inertial_number": 1e-2, "compaction_inertial_number": 1e-1,
+                   "initial_fraction": 0.3, "dump_strain": 0.01, "final_strain": 0.02,
+                   "unbalanced_tolerance": 0.05, "iso_tolerance": 0.02, "log_every": 50,
+                   "check_every": 50, "compaction_damping": 0.5},
+        "polyhedra": {"n_particles": 20},
+        "spheres": {"n_particles": 40},
+    },
+    "default": {
+        "common": {"kappa": 1000.0, "inertial_number": 5e-3, "compaction_inertial_number": 2e-2,
+                   "dump_strain": 0.01, "final_strain": 0.3},
+        "polyhedra": {"n_particles": 250},
+        "spheres": {"n_particles": 1000},
+    },
+    "paper": {
+        "common": {"kappa": 1.0e4, "inertial_number": 1e-3, "compaction_inertial_number": 1e-2,
+                   "dump_strain": 0.005, "final_strain": 0.3},
+        "polyhedra": {"n_particles": 36933},
+        "spheres": {"n_particles": 19998},
+    },
+}
+
+# type and allowed range of every parameter a user may set
+SCHEMA = {
+    "sample": (str, ("polyhedra", "spheres")),
+    "n_particles": (int, (2, 10_000_000)),
+    "seed": (int, (0, 2**63 - 1)),
+    "sigma0": (float, (1e-3, 1e12)),
+    "friction": (float, (0.0, 10.0)),
+    "wall_friction": (float, (0.0, 10.0)),
+    "density": (float, (1e-3, 1e6)),
+    "kappa": (float, (1.0, 1e9)),
+    "tangential_ratio": (float, (1e-6, 10.0)),
+    "inertial_number": (float, (1e-7, 1.0)),
+    "wall_speed": (float, (0.0, 1e3)),
+    "compaction_inertial_number": (float, (1e-7, 1.0)),
+    "damping": (float, (0.0, 0.99)),
+    "compaction_damping": (float, (0.0, 0.99)),
+    "safety": (float, (1e-3, 1.0)),
+    "servo_gain": (float, (1e-3, 1e3)),
+    "initial_fraction": (float, (0.01, 0.33)),
+    "aspect": (float, (0.1, 20.0)),
+    "iso_tolerance": (float, (1e-6, 0.5)),
+    "unbalanced_tolerance": (float, (1e-6, 1.0)),
+    "dump_strain": (float, (1e-6, 1.0)),
+    "final_strain": (float, (1e-6, 2.0)),
+    "max_steps": (int, (0, 10**12)),
+    "library": (str, None),
+    "out": (str, None),
+    "log_every": (int, (1, 10**9)),
+    "check_every": (int, (1, 10**9)),
+    "report_seconds": (float, (0.0, 1e6)),
+}
+
+
+class ConfigError(ValueError):
+    """A preset or override that does not make a valid scene."""
+
+
+def coerce(key, value):
+    """Check one parameter against SCHEMA; returns the typed value."""
+    if key not in SCHEMA:
+        import difflib
+
+        close = difflib.get_close_matches(key, SCHEMA, n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise ConfigError(f"unknown parameter {key!r}{hint}")
+    typ, allowed = SCHEMA[key]
+    try:
+        if typ is int and isinstance(value, str):
+            value = int(float(value)) if float(value).is_integer() else value
+        v = typ(value)
+    except (TypeError, ValueError):
+        raise ConfigError(f"{key} = {value!r} is not a {typ.__name__}") from None
+    if typ is int and isinstance(value, float) and not value.is_integer():
+        raise ConfigError(f"{key} = {value!r} is not an integer")
+    if isinstance(allowed, tuple) and typ is str:
+        if v not in allowed:
+            raise ConfigError(f"{key} must be one of {allowed}, got {v!r}")
+    elif allowed is not None:
+        lo, hi = allowed
+        if not (lo <= v <= hi) or v != v:
+            raise ConfigError(f"{key} = {v!r} is outside [{lo:g}, {hi:g}]")
+    return v
+
+
+def resolve(preset, sample, overrides=None):
+    """The full, checked parameter dict of a preset for one sample, with
+    ``overrides`` (dict of name -> value or string) applied last."""
+    if preset not in PRESETS:
+        raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")
+    if sample not in ("polyhedra", "spheres"):
+        raise ConfigError(f"sample must be 'polyhedra' or 'spheres', got {sample!r}")
+    p = {"sample": sample, "seed": 1, **COMMON, **PRESETS[preset]["common"], **PRESETS[preset][sample]}
+    for k, v in (overrides or {}).items():
+        p[k] = v
+    p = {k: coerce(k, v) for k, v in p.items()}
+    if p["dump_strain"] > p["final_strain"]:
+        raise ConfigError(f"dump_strain {p['dump_strain']} is larger than final_strain {p['final_strain']}")
+    return p

@@ -1,0 +1,345 @@
+# -*- encoding=utf-8 -*-
+"""Triaxial compression of a granular sample: S1 (polyhedra) or S2 (spheres).
+
+After Azema, Radjai & Saussine (2009): a sample in a box of Wall bodies, zero
+gravity, friction 0.5 between particles and 0 at the walls, is compressed
+isotropically to sigma0, then sheared: the top wall moves down at constant
+speed, the bottom wall is fixed and the four lateral walls hold sigma0 on
+their current area. Snapshots of every contact go to an HDF5 dump
+(postproc/schema.py, copied as lib/dumpschema.py) and wall stresses to
+log.csv.
+
+This file is a template: ``python -m yade_scripts.generate`` copies it into a
+run folder with the parameters below set from a preset, next to lib/ (the
+helper modules) and, for polyhedra, shapes.h5. Run it there with
+
+    yade -x triaxial.py            (or yade -j2 -x triaxial.py)
+    yade-batch table.txt triaxial.py     (sweeps and seed ensembles)
+
+A yade-batch table overrides any parameter by its name.
+"""
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+from yade import log, polyhedra_utils, utils
+
+# ------------------------------------------------------------ parameters
+# --- parameters (generated) ---
+readParamsFromTable(
+    sample="spheres",            # "polyhedra" (S1) or "spheres" (S2)
+    n_particles=60,              # number of particles
+    seed=1,                      # sample seed (sizes, shapes, orientations, positions)
+    sigma0=1.0e4,                # Pa, confining stress
+    friction=0.5,                # particle-particle friction coefficient
+    wall_friction=0.0,           # particle-wall friction coefficient
+    density=2700.0,              # kg/m^3 (granite ballast)
+    kappa=1.0e3,                 # stiffness level: typical contact stiffness / (sigma0 d)
+    tangential_ratio=1.0,        # tangential / normal stiffness of a typical contact
+    inertial_number=1.0e-3,      # shear: I = rate d sqrt(rho/sigma0) (ignored if wall_speed > 0)
+    wall_speed=0.0,              # m/s, top wall speed during shear (0: from inertial_number)
+    compaction_inertial_number=1.0e-2,  # max rate of the isotropic compression
+    damping=0.2,                 # NewtonIntegrator's local damping during shear
+    compaction_damping=0.2,      # ... and during the isotropic compression
+    safety=0.3,                  # dt = safety * critical time step
+    servo_gain=5.0,              # proportional gain of the wall servo
+    initial_fraction=0.25,       # packing fraction of the bounding spheres at the start
+    aspect=2.0,                  # H/L of the initial box
+    iso_tolerance=0.01,          # isotropic state: |sigma - sigma0| < tol sigma0 on all walls
+    unbalanced_tolerance=0.01,   # ... and unbalanced force ratio below this
+    dump_strain=0.01,            # a snapshot every delta eps_1 during shear
+    final_strain=0.3,            # eps_1 at the end of shear
+    max_steps=0,                 # stop (as a failure) after this many steps (0: no limit)
+    library="shapes.h5",         # polyhedra library (d = 1 grains)
+    out="run.h5",                # dump file
+    log_every=200,               # steps between log.csv rows
+    check_every=200,             # steps between blow-up checks
+    report_seconds=10.0,         # seconds between progress lines
+    noTableOk=True,
+)
+# --- end of parameters ---
+from yade.params.table import *  # noqa: E402,F401,F403
+
+HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
+sys.path.insert(0, os.path.join(HERE, "lib"))
+import dumpschema  # noqa: E402
+import sample as sampling  # noqa: E402
+import servo  # noqa: E402
+import sizes  # noqa: E402
+import timestep  # noqa: E402
+import yadedump  # noqa: E402
+
+POLY = sample == "polyhedra"
+if sample not in ("polyhedra", "spheres"):
+    raise SystemExit(f"triaxial.py: sample must be 'polyhedra' or 'spheres', got {sample!r}")
+# Polyhedra_support.cpp can print gigabytes of "Unhandled switch case"
+# warnings; keep its errors, drop its warnings.
+log.setLevel("Polyhedra_support.cpp", log.ERROR)
+os.chdir(HERE)
+
+# ------------------------------------------------------------ sample
+rng = np.random.default_rng(seed)
+d = sizes.sample_diameters(n_particles, rng)               # m, exact class counts
+d_mean = float(d.mean())
+if POLY:
+    import shapelib  # noqa: E402
+
+    lib = shapelib.ShapeLibrary(os.path.join(HERE, library))
+    shape_of = rng.integers(len(lib), size=n_particles)
+    quats = sampling.random_quaternions(n_particles, rng)
+    face_area = []                                          # per library shape, d = 1
+    for s in range(len(lib)):
+        v, t, _ = lib[s]
+        face_area.append(0.5 * np.linalg.norm(np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]]), axis=1))
+    a_face = float(np.mean(np.concatenate(face_area)))     # mean face area, d = 1
+    max_face = np.array([a.max() for a in face_area])
+    rot_mass = np.array([timestep.rotational_mass(lib.volume[s], np.diag(lib.inertia[s]), lib[s][0])
+                         for s in range(len(lib))])       # d = 1, unit density
+box0 = sampling.box_for(d, initial_fraction, aspect)
+centres = sampling.place_spheres(d, box0, rng)
+
+# ------------------------------------------------------------ materials and stiffness
+if POLY:
+    k_v = kappa * sigma0 / (a_face * d_mean)                 # N/m^3, volumetric law F = k_v V
+    # Ip2 takes kn = E1 E2 / (E1 + E2): E = 2 k_v gives kn = k_v; poisson ~ 0
+    # gives YADE's own (shared-history) shear stiffness ~ 0: see tangential.py
+    POISSON_OFF = 1e-20
+    grain = PolyhedraMat(young=2 * k_v, poisson=POISSON_OFF, frictionAngle=math.atan(friction), density=density)
+    wallmat = PolyhedraMat(young=2 * k_v, poisson=POISSON_OFF, frictionAngle=math.atan(wall_friction), density=density)
+else:
+    young = 2 * kappa * sigma0                               # kn = E R for equal spheres = kappa sigma0 d
+    grain = FrictMat(young=young, poisson=tangential_ratio, frictionAngle=math.atan(friction), density=density)
+    wallmat = FrictMat(young=young, poisson=tangential_ratio, frictionAngle=math.atan(wall_friction), density=density)
+O.materials.append(grain)
+O.materials.append(wallmat)
+
+# ------------------------------------------------------------ bodies: 6 walls, then particles
+walls = []
+for axis in range(3):
+    for side, pos in ((-1, 0.0), (1, box0[axis])):
+        w = utils.wall(pos, axis=axis, sense=0, material=wallmat)
+        w.state.blockedDOFs = "xyzXYZ"
+        walls.append(O.bodies.append(w))
+particles = []
+for k in range(n_particles):
+    if POLY:
+        v, _, _ = lib[int(shape_of[k])]
+        b = polyhedra_utils.polyhedra(grain, v=[tuple(x) for x in v * d[k]])
+        w, x, y, z = quats[k]
+        b.state.ori = Quaternion(w, x, y, z) * b.state.ori
+    else:
+        b = utils.sphere((0, 0, 0), d[k] / 2, material=grain)
+    b.state.pos = tuple(centres[k])
+    particles.append(O.bodies.append(b))
+particles = np.array(particles)
+
+# ------------------------------------------------------------ time step and loading rates
+masses = np.array([O.bodies[int(i)].state.mass for i in particles])
+if POLY:
+    k_contact = k_v * max_face[shape_of] * d ** 2                 # stiffest face contact of each grain
+    k_contact = np.maximum(k_contact, tangential_ratio * k_v * a_face * d ** 2)
+    m_eff = density * d ** 3 * rot_mass[shape_of]
+else:
+    k_contact = 2 * young * (d / 2) * max(1.0, tangential_ratio)  # kn <= 2 E R
+    m_eff = 0.4 * masses                                          # I / R^2 of a sphere
+dt_crit = timestep.critical_time_step(m_eff, k_contact)
+O.dt = safety * dt_crit
+rate_shear = timestep.inertial_strain_rate(inertial_number, d_mean, density, sigma0)
+rate_compact = timestep.inertial_strain_rate(compaction_inertial_number, d_mean, density, sigma0)
+
+
+def kt_of(id1, id2, kn):
+    """Tangential stiffness (N/m) of polyhedra pairs: ratio k_v a_f d_pair^2."""
+    d1, d2 = d_of[id1], d_of[id2]
+    dp = np.where((d1 > 0) & (d2 > 0), 2 * d1 * d2 / np.where(d1 + d2 > 0, d1 + d2, 1), np.maximum(d1, d2))
+    return tangential_ratio * kn * a_face * dp ** 2
+
+
+d_of = np.zeros(int(particles.max()) + 1)
+d_of[particles] = d
+
+# ------------------------------------------------------------ engines
+if POLY:
+    from tangential import TangentialLaw  # noqa: E402
+
+    tangential_law = TangentialLaw(O, Vector3, kt_of)
+    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Wall_Aabb()], verletDist=0.0),
+        InteractionLoop(
+            [Ig2_Polyhedra_Polyhedra_PolyhedraGeom(), Ig2_Wall_Polyhedra_PolyhedraGeom()],
+            [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
+            [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()],
+        ),
+        PyRunner(command="tangential_law()", iterPeriod=1, label="tangential"),
+        PyRunner(command="control()", iterPeriod=1, label="controller"),
+        NewtonIntegrator(damping=compaction_damping, label="newton"),
+    ]
+else:
+    O.engines = [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+        InteractionLoop(
+            [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
+            [Ip2_FrictMat_FrictMat_FrictPhys()],
+            [Law2_ScGeom_FrictPhys_CundallStrack()],
+        ),
+        PyRunner(command="control()", iterPeriod=1, label="controller"),
+        NewtonIntegrator(damping=compaction_damping, label="newton"),
+    ]
+
+# ------------------------------------------------------------ dump and log
+derived = {
+    "dt": O.dt, "dt_crit": dt_crit, "rate_shear": rate_shear, "rate_compaction": rate_compact,
+    "d_mean": d_mean, "kn_volumetric": k_v if POLY else None, "young": 2 * k_v if POLY else young,
+    "a_face": a_face if POLY else None,
+}
+params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
+writer = dumpschema.DumpWriter(os.path.join(HERE, out), sample, {**params, **derived},
+                               overlap_kind="volume" if POLY else "depth")
+if POLY:
+    writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
+shape_index = np.arange(n_particles) if POLY else np.full(n_particles, -1)
+log_file = open(os.path.join(HERE, "log.csv"), "w")
+log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_contacts,steps_per_s\n")
+volume_particles = sum(O.bodies[int(i)].shape.GetVolume() if POLY else 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3
+                       for i in particles)
+
+
+def box():
+    """(lo, hi) of the box from the wall positions."""
+    p = [O.bodies[w].state.pos for w in walls]
+    return (np.array([p[0][0], p[2][1], p[4][2]]), np.array([p[1][0], p[3][1], p[5][2]]))
+
+
+def wall_forces():
+    return np.array([tuple(O.forces.f(w)) for w in walls])
+
+
+def set_wall_velocities(vel):
+    for w, v in zip(walls, vel):
+        O.bodies[w].state.vel = tuple(v)
+
+
+def snapshot(stage):
+    lo, hi = box()
+    writer.write_snapshot(
+        step=O.iter, time=O.time, stage=stage, box_lo=lo, box_hi=hi, wall_ids=walls,
+        wall_forces=wall_forces(),
+        bodies=yadedump.gather_bodies(O, particles, 1 if POLY else 0, shape_index, d),
+        contacts=yadedump.gather_contacts(O, POLY))
+
+
+def fail(reason):
+    """Stop on a blow-up: say why, keep every snapshot written so far."""
+    print(f"triaxial.py: STOPPED at step {O.iter} ({state['stage']}, eps_1 = {state['eps_1']:.4f}): {reason}. "
+          f"The {writer._n_snapshots} snapshot(s) written before are kept in {out}.", flush=True)
+    state["failed"] = reason
+    O.pause()
+
+
+# ------------------------------------------------------------ the controller (every step)
+state = {"stage": "compaction", "H0": None, "eps_1": 0.0, "next_dump": 0.0, "t_wall": time.time(),
+         "last_report": time.time(), "last_iter": 0, "failed": None, "phi_iso": None, "sps": 0.0}
+v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
+
+
+def check_blowup(lo, hi, F):
+    if not np.all(np.isfinite(F)):
+        return "wall forces are NaN"
+    pos = np.array([tuple(O.bodies[int(i)].state.pos) for i in particles])
+    vel = np.array([tuple(O.bodies[int(i)].state.vel) for i in particles])
+    if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel))):
+        return "particle positions or velocities are NaN"
+    out_of_box = np.any((pos < lo - d.max()) | (pos > hi + d.max()), axis=1)
+    if out_of_box.any():
+        return f"particle {int(particles[np.argmax(out_of_box)])} left the box"
+    v_rms = math.sqrt(np.sum(masses * np.sum(vel ** 2, axis=1)) / masses.sum())
+    if v_rms > 50 * v_ref and v_rms > 0.05:
+        return f"runaway kinetic energy (rms speed {v_rms:.3g} m/s, 50 x the wall speed is {50 * v_ref:.3g})"
+    return None
+
+
+def control():
+    lo, hi = box()
+    L = hi - lo
+    F = wall_forces()
+    sig = servo.wall_stresses(F, L)
+    if state["stage"] == "compaction":
+        rates = servo.servo_rates(sig, sigma0, rate_compact, servo_gain)
+        set_wall_velocities(servo.wall_velocities(rates, L))
+        if O.iter % 50 == 0 and np.all(np.abs(sig - sigma0) < iso_tolerance * sigma0) \
+                and utils.unbalancedForce() < unbalanced_tolerance:
+            state["phi_iso"] = volume_particles / np.prod(L)
+            print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
+                  f"solid fraction {state['phi_iso']:.4f}, unbalanced force {utils.unbalancedForce():.2e}", flush=True)
+            snapshot("isotropic")
+            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain)
+            newton.damping = damping
+            state["v_top"] = wall_speed if wall_speed > 0 else rate_shear * L[2]
+    else:
+        eps = np.log(state["L0"] / L)
+        state["eps_1"] = eps[2]
+        rates = servo.servo_rates(sig, sigma0, 2 * state["v_top"] / L[2], servo_gain)
+        vel = servo.wall_velocities(rates, L)
+        vel[4] = 0.0                              # bottom wall fixed
+        vel[5] = (0.0, 0.0, -state["v_top"])      # top wall at constant speed
+        set_wall_velocities(vel)
+        if eps[2] >= state["next_dump"] - 1e-12 or eps[2] >= final_strain:
+            snapshot("shear")
+            state["next_dump"] += dump_strain
+        if eps[2] >= final_strain:
+            state["stage"] = "done"
+            O.pause()
+            return
+    if O.iter % log_every == 0:
+        eps = np.log(state["L0"] / L) if state["H0"] else np.zeros(3)
+        s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
+        log_file.write(f"{O.iter},{O.time:.6g},{state['stage']},{eps[2]:.6g},{eps[0]:.6g},{eps[1]:.6g},{eps.sum():.6g},"
+                       f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{(s1 - s3) / (s1 + 2 * s3):.6g},"
+                       f"{volume_particles / np.prod(L):.6g},{utils.unbalancedForce():.4g},{len(O.interactions)},"
+                       f"{state['sps']:.4g}\n")
+        log_file.flush()
+    if O.iter % check_every == 0:
+        problem = check_blowup(lo, hi, F)
+        if problem:
+            fail(problem)
+            return
+        if max_steps and O.iter >= max_steps:
+            fail(f"max_steps = {max_steps} reached before the end")
+            return
+    now = time.time()
+    if now - state["last_report"] > report_seconds:
+        sps = (O.iter - state["last_iter"]) / (now - state["last_report"])
+        state.update(last_report=now, last_iter=O.iter, sps=sps)
+        s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
+        if state["stage"] == "shear":
+            left = (final_strain - state["eps_1"]) * L[2] / state["v_top"] / O.dt / max(sps, 1e-9)
+            where = f"eps_1 {state['eps_1']:.4f}, q/p (walls) {(s1 - s3) / (s1 + 2 * s3):.3f}"
+        else:
+            left = float("nan")
+            where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
+        print(f"triaxial.py: step {O.iter} {state['stage']}: {where}, {len(O.interactions)} interactions, "
+              f"{sps:.0f} steps/s, about {left / 60:.1f} min left", flush=True)
+
+
+# ------------------------------------------------------------ run
+print(f"triaxial.py: {n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
+      f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m", flush=True)
+t0 = time.time()
+O.run()
+O.wait()
+log_file.close()
+if state["failed"]:
+    writer.close(pack=True, complete=False)
+    sys.exit(3)
+writer.close(pack=True)
+info = {"steps": O.iter, "time": O.time, "wall_seconds": time.time() - t0, "solid_fraction_isotropic": state["phi_iso"],
+        "snapshots": writer._n_snapshots, **derived}
+with open(os.path.join(HERE, "run_info.json"), "w") as fh:
+    json.dump(info, fh, indent=1)
+print(f"triaxial.py: done in {time.time() - t0:.0f} s, {O.iter} steps; dump {out}", flush=True)
+sys.exit(0)
