@@ -14,7 +14,7 @@ from __future__ import annotations
 
 COMMON = {
     "sigma0": 1.0e4, "friction": 0.5, "wall_friction": 0.0, "density": 2700.0,
-    "tangential_ratio": 1.0, "damping": 0.2, "compaction_damping": 0.2, "safety": 0.3, "servo_gain": 5.0,
+    "tangential_ratio": 1.0, "damping": 0.2, "compaction_damping": 0.2, "safety": 0.3, "servo_gain": 10.0, "servo_time": 0.01,
     "initial_fraction": 0.25, "aspect": 2.0, "iso_tolerance": 0.01,
     "unbalanced_tolerance": 0.01, "wall_speed": 0.0, "library": "shapes.h5", "out": "run.h5",
 }
@@ -24,7 +24,7 @@ PRESETS = {
         "common": {"kappa": 150.0, "inertial_number": 1e-2, "compaction_inertial_number": 1e-1,
                    "initial_fraction": 0.3, "dump_strain": 0.01, "final_strain": 0.02,
                    "unbalanced_tolerance": 0.05, "iso_tolerance": 0.02, "log_every": 50,
-                   "check_every": 50, "compaction_damping": 0.5},
+                   "check_every": 50, "compaction_damping": 0.5, "servo_time": 0.003},
         "polyhedra": {"n_particles": 20},
         "spheres": {"n_particles": 40},
     },
@@ -60,6 +60,7 @@ SCHEMA = {
     "compaction_damping": (float, (0.0, 0.99)),
     "safety": (float, (1e-3, 1.0)),
     "servo_gain": (float, (1e-3, 1e3)),
+    "servo_time": (float, (1e-6, 10.0)),
     "initial_fraction": (float, (0.01, 0.33)),
     "aspect": (float, (0.1, 20.0)),
     "iso_tolerance": (float, (1e-6, 0.5)),

@@ -3,13 +3,16 @@ stresses to their targets.
 
 YADE's TriaxialStressController needs Box walls, which Polyhedra cannot
 touch, so the walls are YADE ``Wall`` bodies moved kinematically by this
-proportional controller: along each controlled axis a,
+proportional-integral controller: along each controlled axis a,
 
-    rate_a = max_rate * clip(gain * (target - sigma_a) / target, -1, 1)
+    rate_a = max_rate * clip(gain * e_a + J_a, -1, 1),  e_a = (target - sigma_a) / target,
+    J_a   += gain * e_a * dt / tau
 
 (compression positive: a stress below target closes the walls). With a
-packing of bulk stiffness K ~ kappa sigma0 the stress relaxes with time
-constant 1 / (kappa * max_rate * gain); the caller keeps it well above dt.
+packing of bulk stiffness K ~ kappa sigma0 the proportional part relaxes the
+stress with time constant 1 / (kappa * max_rate * gain), kept well above dt;
+the integral part (time tau, much longer) removes the steady error that a
+purely proportional servo keeps while the walls have to move.
 """
 from __future__ import annotations
 
@@ -30,9 +33,21 @@ def wall_stresses(wall_forces, lengths):
     return push / area
 
 
-def servo_rates(stress, target, max_rate, gain):
-    """(3,) 1/s strain rates (compression positive) for the three axes."""
+def servo_rates(stress, target, max_rate, gain, integral=None, dt=0.0, tau=np.inf):
+    """(3,) 1/s strain rates (compression positive) for the three axes.
+
+    Proportional-integral control: rate = max_rate * clip(gain e + J, -1, 1)
+    with e = (target - stress)/target and J += gain e dt / tau, updated in
+    place in ``integral`` (3,) when given. The integral term removes the
+    steady error a proportional servo keeps while the walls must move (the
+    lateral walls follow the dilatancy during shear); it integrates only
+    while |e| < 0.2 and stays in [-1, 1] (anti-windup)."""
     err = (target - np.asarray(stress, float)) / target
+    if integral is not None and dt > 0 and np.isfinite(tau):
+        near = np.abs(err) < 0.2
+        integral[near] += gain * err[near] * dt / tau
+        np.clip(integral, -1.0, 1.0, out=integral)
+        return max_rate * np.clip(gain * err + integral, -1.0, 1.0)
     return max_rate * np.clip(gain * err, -1.0, 1.0)
 
 

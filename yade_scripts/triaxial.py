@@ -45,7 +45,8 @@ readParamsFromTable(
     damping=0.2,                 # NewtonIntegrator's local damping during shear
     compaction_damping=0.2,      # ... and during the isotropic compression
     safety=0.3,                  # dt = safety * critical time step
-    servo_gain=5.0,              # proportional gain of the wall servo
+    servo_gain=10.0,             # proportional gain of the wall servo (lowered if unstable)
+    servo_time=0.01,             # integral time of the servo, as the strain (of the loading rate) it spans
     initial_fraction=0.25,       # packing fraction of the bounding spheres at the start
     aspect=2.0,                  # H/L of the initial box
     iso_tolerance=0.01,          # isotropic state: |sigma - sigma0| < tol sigma0 on all walls
@@ -151,6 +152,14 @@ rate_shear = timestep.inertial_strain_rate(inertial_number, d_mean, density, sig
 rate_compact = timestep.inertial_strain_rate(compaction_inertial_number, d_mean, density, sigma0)
 
 
+def stable_gain(max_rate):
+    """The servo gain, lowered if needed so that one step changes the wall
+    stress by at most 20 % of the error: kappa * max_rate * gain * dt <= 0.2
+    (gain 20 at kappa * max_rate * dt = 0.02 oscillated here)."""
+    return min(servo_gain, 0.2 / (kappa * max_rate * O.dt))
+
+
+
 def kt_of(id1, id2, kn):
     """Tangential stiffness (N/m) of polyhedra pairs: ratio k_v a_f d_pair^2."""
     d1, d2 = d_of[id1], d_of[id2]
@@ -243,7 +252,8 @@ def fail(reason):
 
 # ------------------------------------------------------------ the controller (every step)
 state = {"stage": "compaction", "H0": None, "eps_1": 0.0, "next_dump": 0.0, "t_wall": time.time(),
-         "last_report": time.time(), "last_iter": 0, "failed": None, "phi_iso": None, "sps": 0.0}
+         "last_report": time.time(), "last_iter": 0, "failed": None, "phi_iso": None, "sps": 0.0,
+         "integral": np.zeros(3)}
 v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
 
 
@@ -269,7 +279,8 @@ def control():
     F = wall_forces()
     sig = servo.wall_stresses(F, L)
     if state["stage"] == "compaction":
-        rates = servo.servo_rates(sig, sigma0, rate_compact, servo_gain)
+        rates = servo.servo_rates(sig, sigma0, rate_compact, stable_gain(rate_compact), state["integral"],
+                                  O.dt, servo_time / rate_compact)
         set_wall_velocities(servo.wall_velocities(rates, L))
         if O.iter % 50 == 0 and np.all(np.abs(sig - sigma0) < iso_tolerance * sigma0) \
                 and utils.unbalancedForce() < unbalanced_tolerance:
@@ -277,13 +288,15 @@ def control():
             print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
                   f"solid fraction {state['phi_iso']:.4f}, unbalanced force {utils.unbalancedForce():.2e}", flush=True)
             snapshot("isotropic")
-            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain)
+            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3))
             newton.damping = damping
             state["v_top"] = wall_speed if wall_speed > 0 else rate_shear * L[2]
     else:
         eps = np.log(state["L0"] / L)
         state["eps_1"] = eps[2]
-        rates = servo.servo_rates(sig, sigma0, 2 * state["v_top"] / L[2], servo_gain)
+        rate_1 = state["v_top"] / L[2]
+        rates = servo.servo_rates(sig, sigma0, 2 * rate_1, stable_gain(2 * rate_1), state["integral"],
+                                  O.dt, servo_time / rate_1)
         vel = servo.wall_velocities(rates, L)
         vel[4] = 0.0                              # bottom wall fixed
         vel[5] = (0.0, 0.0, -state["v_top"])      # top wall at constant speed
