@@ -9,6 +9,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 STUDY ?= runs/study
+PRESET ?= default
 SHAPES_LIB ?= runs/shapes/library.h5
 
 .PHONY: test study system venv bench clean-venv shapes
@@ -40,15 +41,10 @@ $(SHAPES_LIB): | venv
 
 shapes: $(SHAPES_LIB)
 
-# Until the YADE scenes land (issue 4), the study analyses a synthetic dump
-# with known anisotropies, and says so.
+# The main job: S1 and S2 on the default preset, side by side (2 cores),
+# then the analysis of both dumps. Finished runs are not run again.
 study: system venv $(SHAPES_LIB)
-	@echo "make study: NOTE: the YADE simulations are not implemented yet;"
-	@echo "make study: analysing a SYNTHETIC dump with known anisotropies instead."
-	@mkdir -p $(STUDY)
-	@[ -f $(STUDY)/synthetic.h5 ] || $(VENV)/bin/postproc synthetic $(STUDY)/synthetic.h5
-	$(VENV)/bin/postproc analyze $(STUDY)/synthetic.h5 --out $(STUDY)/synthetic-analysis
-	@echo "make study: results in $(STUDY)/synthetic-analysis/"
+	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY)
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

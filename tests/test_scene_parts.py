@@ -83,6 +83,10 @@ def test_place_spheres_without_overlap():
     assert np.all(pos - d[:, None] / 2 >= -1e-12) and np.all(pos + d[:, None] / 2 <= box + 1e-12)
     with pytest.raises(RuntimeError, match="no room|larger than the box"):
         sample.place_spheres(d, box / 3, rng)
+    # too dense for sequential addition: the box grows until everything fits
+    box2, pos2 = sample.place_in_box(d, 0.33, 2.0, np.random.default_rng(2))
+    assert np.all(box2 >= sample.box_for(d, 0.33, 2.0) - 1e-15)
+    assert np.isfinite(pos2).all()
 
 
 def test_random_quaternions_are_uniform_rotations():

@@ -95,7 +95,7 @@ def tiny_runs(tmp_path_factory, shape_library):
 @pytest.mark.parametrize("kind", ["polyhedra", "spheres"])
 def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
     out = tiny_runs[kind]
-    info = json.loads((out / "run_info.json").read_text())
+    info = json.loads((out / "run.info.json").read_text())
     assert 0.3 < info["solid_fraction_isotropic"] < 0.75
     with DumpReader(str(out / "run.h5")) as r:
         assert r.complete and r.sample_kind == kind
@@ -128,7 +128,7 @@ def test_wall_stresses_follow_the_servo(tiny_runs, kind):
         iso = r.read(0)
         sig = wall_stresses(iso.wall_forces, iso.box_lengths)
         assert np.all(np.abs(sig / SIGMA0 - 1) < 0.02), sig       # isotropic: within 2 %
-    with open(out / "log.csv") as fh:
+    with open(out / "run.log.csv") as fh:
         rows = [row for row in csv.DictReader(fh) if row["stage"] == "shear"]
     assert len(rows) >= 5
     lateral = np.array([[float(row["s_xx"]), float(row["s_yy"])] for row in rows])

@@ -92,7 +92,8 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
     with open(os.path.join(out, "table.txt"), "w") as fh:
         fh.write("description seed out\n")
         for s in seeds:
-            fh.write(f"{sample}-seed{s} {s} {sample}-seed{s}.h5\n")
+            # yade-batch evaluates each value as Python: strings are quoted
+            fh.write(f"{sample}-seed{s} {s} '{sample}-seed{s}.h5'\n")
     return params
 
 

@@ -29,9 +29,9 @@ PRESETS = {
         "spheres": {"n_particles": 40},
     },
     "default": {
-        "common": {"kappa": 1000.0, "inertial_number": 5e-3, "compaction_inertial_number": 2e-2,
-                   "dump_strain": 0.01, "final_strain": 0.3},
-        "polyhedra": {"n_particles": 250},
+        "common": {"kappa": 300.0, "inertial_number": 1e-2, "compaction_inertial_number": 5e-2,
+                   "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
+        "polyhedra": {"n_particles": 60},
         "spheres": {"n_particles": 1000},
     },
     "paper": {
@@ -73,6 +73,7 @@ SCHEMA = {
     "log_every": (int, (1, 10**9)),
     "check_every": (int, (1, 10**9)),
     "report_seconds": (float, (0.0, 1e6)),
+    "timing": (bool, None),
 }
 
 
@@ -89,6 +90,13 @@ def coerce(key, value):
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         raise ConfigError(f"unknown parameter {key!r}{hint}")
     typ, allowed = SCHEMA[key]
+    if typ is bool:
+        text = str(value).strip().lower()
+        if text in ("true", "1", "yes"):
+            return True
+        if text in ("false", "0", "no"):
+            return False
+        raise ConfigError(f"{key} = {value!r} is not true or false")
     try:
         if typ is int and isinstance(value, str):
             value = int(float(value)) if float(value).is_integer() else value

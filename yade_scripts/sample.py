@@ -79,3 +79,18 @@ def place_spheres(diameters, box, rng, max_attempts=2000):
             raise RuntimeError(f"no room for particle {k} after {max_attempts} attempts: "
                                "lower the initial packing fraction")
     return pos
+
+
+def place_in_box(diameters, fraction, aspect, rng, grow=1.05, tries=20):
+    """Box (3,) and centres (n, 3) of non-overlapping spheres: start from
+    :func:`box_for` at ``fraction`` and enlarge the box by ``grow`` whenever
+    random sequential addition jams (likely with few particles, where the
+    walls take a large share of the volume). Raises RuntimeError after
+    ``tries`` enlargements."""
+    box = box_for(diameters, fraction, aspect)
+    for _ in range(tries):
+        try:
+            return box, place_spheres(diameters, box, rng)
+        except RuntimeError:
+            box = box * grow
+    raise RuntimeError(f"could not place {len(diameters)} particles even in a box {box}")

@@ -6,8 +6,9 @@ gravity, friction 0.5 between particles and 0 at the walls, is compressed
 isotropically to sigma0, then sheared: the top wall moves down at constant
 speed, the bottom wall is fixed and the four lateral walls hold sigma0 on
 their current area. Snapshots of every contact go to an HDF5 dump
-(postproc/schema.py, copied as lib/dumpschema.py) and wall stresses to
-log.csv.
+(postproc/schema.py, copied as lib/dumpschema.py), wall stresses to
+OUT.log.csv and a summary (solid fraction, time step, costs) to
+OUT.info.json, where OUT is the dump name without .h5 (run.h5 by default).
 
 This file is a template: ``python -m yade_scripts.generate`` copies it into a
 run folder with the parameters below set from a preset, next to lib/ (the
@@ -59,6 +60,7 @@ readParamsFromTable(
     log_every=200,               # steps between log.csv rows
     check_every=200,             # steps between blow-up checks
     report_seconds=10.0,         # seconds between progress lines
+    timing=True,                 # record the time of each engine (run_info.json)
     noTableOk=True,
 )
 # --- end of parameters ---
@@ -99,8 +101,7 @@ if POLY:
     max_face = np.array([a.max() for a in face_area])
     rot_mass = np.array([timestep.rotational_mass(lib.volume[s], np.diag(lib.inertia[s]), lib[s][0])
                          for s in range(len(lib))])       # d = 1, unit density
-box0 = sampling.box_for(d, initial_fraction, aspect)
-centres = sampling.place_spheres(d, box0, rng)
+box0, centres = sampling.place_in_box(d, initial_fraction, aspect, rng)   # bounding spheres never overlap
 
 # ------------------------------------------------------------ materials and stiffness
 if POLY:
@@ -212,8 +213,10 @@ writer = dumpschema.DumpWriter(os.path.join(HERE, out), sample, {**params, **der
 if POLY:
     writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
 shape_index = np.arange(n_particles) if POLY else np.full(n_particles, -1)
-log_file = open(os.path.join(HERE, "log.csv"), "w")
-log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_contacts,steps_per_s\n")
+stem = out[:-3] if out.endswith(".h5") else out                # run.h5 -> run.log.csv, run.info.json
+log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
+log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
+               "n_contacts,steps_per_s\n")
 volume_particles = sum(O.bodies[int(i)].shape.GetVolume() if POLY else 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3
                        for i in particles)
 
@@ -253,7 +256,7 @@ def fail(reason):
 # ------------------------------------------------------------ the controller (every step)
 state = {"stage": "compaction", "H0": None, "eps_1": 0.0, "next_dump": 0.0, "t_wall": time.time(),
          "last_report": time.time(), "last_iter": 0, "failed": None, "phi_iso": None, "sps": 0.0,
-         "integral": np.zeros(3)}
+         "integral": np.zeros(3), "contact_steps": 0, "interaction_steps": 0}
 v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
 
 
@@ -309,12 +312,15 @@ def control():
             O.pause()
             return
     if O.iter % log_every == 0:
+        n_real = O.interactions.countReal()
+        state["contact_steps"] += n_real * log_every
+        state["interaction_steps"] += len(O.interactions) * log_every
         eps = np.log(state["L0"] / L) if state["H0"] else np.zeros(3)
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
         log_file.write(f"{O.iter},{O.time:.6g},{state['stage']},{eps[2]:.6g},{eps[0]:.6g},{eps[1]:.6g},{eps.sum():.6g},"
                        f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{(s1 - s3) / (s1 + 2 * s3):.6g},"
                        f"{volume_particles / np.prod(L):.6g},{utils.unbalancedForce():.4g},{len(O.interactions)},"
-                       f"{state['sps']:.4g}\n")
+                       f"{n_real},{state['sps']:.4g}\n")
         log_file.flush()
     if O.iter % check_every == 0:
         problem = check_blowup(lo, hi, F)
@@ -343,6 +349,7 @@ def control():
 print(f"triaxial.py: {n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
       f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m", flush=True)
 t0 = time.time()
+O.timingEnabled = bool(timing)
 O.run()
 O.wait()
 log_file.close()
@@ -350,9 +357,11 @@ if state["failed"]:
     writer.close(pack=True, complete=False)
     sys.exit(3)
 writer.close(pack=True)
+engine_seconds = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in O.engines} if timing else {}
 info = {"steps": O.iter, "time": O.time, "wall_seconds": time.time() - t0, "solid_fraction_isotropic": state["phi_iso"],
-        "snapshots": writer._n_snapshots, **derived}
-with open(os.path.join(HERE, "run_info.json"), "w") as fh:
+        "snapshots": writer._n_snapshots, "contact_steps": state["contact_steps"],
+        "interaction_steps": state["interaction_steps"], "engine_seconds": engine_seconds, **derived}
+with open(os.path.join(HERE, stem + ".info.json"), "w") as fh:
     json.dump(info, fh, indent=1)
 print(f"triaxial.py: done in {time.time() - t0:.0f} s, {O.iter} steps; dump {out}", flush=True)
 sys.exit(0)
