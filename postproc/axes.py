@@ -41,3 +41,16 @@ def rotation_z_to(axis):
     k /= s
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + s * K + (1 - c) * K @ K
+
+
+def quaternion_matrices(q):
+    """(n, 3, 3) rotation matrices (local -> global) of quaternions (n, 4)
+    in (w, x, y, z) order; the quaternions are normalised first."""
+    q = np.asarray(q, float)
+    q = q / np.linalg.norm(q, axis=1)[:, None]
+    w, x, y, z = q.T
+    return np.stack([
+        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
+    ], -2)

@@ -14,17 +14,6 @@ def random_quaternions(n, rng):
                             a * np.cos(2 * np.pi * u2), b * np.sin(2 * np.pi * u3)])
 
 
-def quaternion_matrices(q):
-    """(n, 3, 3) rotation matrices of unit quaternions (n, 4) (w, x, y, z)."""
-    q = np.asarray(q, float)
-    w, x, y, z = q.T
-    return np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
-    ], -2)
-
-
 def box_for(diameters, solid_fraction, aspect=2.0):
     """Box lengths (3,) m with a square base of side L and height aspect * L
     whose volume holds the bounding spheres of ``diameters`` (m) at the given

@@ -1,0 +1,208 @@
+"""Contact types between convex polyhedra: vertex, edge or face on each side.
+
+YADE stores one contact point and one normal per polyhedra pair and no
+contact type. We classify each particle-particle contact from the shapes
+(local vertices and triangles), each body's orientation and the contact
+normal n (unit, from id1 towards id2).
+
+Criterion (one angular tolerance ``theta``, default 5 deg). For body A the
+outward direction towards its partner is u = +n (A = id1) or -n (A = id2),
+written in A's local frame. The feature of A that touches is its support
+feature in direction u, taken as parallel to the contact plane within theta:
+
+* FACE   if a geometric face of A has its outward normal within theta of u
+         (the face lies flat on the contact plane);
+* EDGE   else, if the two vertices of A furthest along u are the ends of an
+         edge of A and that edge is parallel to the plane within theta:
+         (s_1 - s_2) <= sin(theta) |v_1 - v_2|, s = v . u;
+* VERTEX otherwise.
+
+A tolerance in angle is a tolerance in distance relative to the feature's
+size: a face or edge of length l counts as touching when its far end is
+within l sin(theta) of the contact plane. The pair types are
+VV, VE, VF, EE, EF, FF (unordered), grouped as in the paper into simple
+(one contact point: VF, EE, and the rare VE, VV), double (EF) and triple
+(FF). Everything is vectorised over contacts, in blocks.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .axes import quaternion_matrices
+from .errors import InputError
+
+VERTEX, EDGE, FACE = 0, 1, 2
+FEATURES = ("vertex", "edge", "face")
+PAIR_TYPES = ("VV", "VE", "VF", "EE", "EF", "FF")
+GROUP_OF = {"VV": "simple", "VE": "simple", "VF": "simple", "EE": "simple",
+            "EF": "double", "FF": "triple"}
+DEFAULT_THETA_DEG = 5.0
+_BLOCK = 1 << 14
+
+
+@dataclass
+class ShapeTables:
+    """Per-shape arrays padded to the largest shape (S shapes).
+
+    vertices (S, Vmax, 3) local frame, padded with NaN; face_normals
+    (S, Fmax, 3) unit outward normals of the geometric faces, padded with 0;
+    adjacent (S, Vmax, Vmax) bool: True for the two ends of a geometric edge.
+    """
+
+    vertices: np.ndarray
+    face_normals: np.ndarray
+    adjacent: np.ndarray
+
+
+def shape_tables(vertices, triangles, triangle_faces):
+    """Build :class:`ShapeTables` from per-shape lists (as stored in a dump's
+    ``/shapes``): vertices (V_s, 3), triangles (T_s, 3) outward, and the
+    geometric face of each triangle (T_s,)."""
+    S = len(vertices)
+    if S == 0:
+        raise InputError("no shapes to classify contacts with")
+    vmax = max(len(v) for v in vertices)
+    fmax = max(int(np.max(f)) + 1 for f in triangle_faces)
+    V = np.full((S, vmax, 3), np.nan)
+    N = np.zeros((S, fmax, 3))
+    A = np.zeros((S, vmax, vmax), bool)
+    for s, (v, t, f) in enumerate(zip(vertices, triangles, triangle_faces)):
+        v = np.asarray(v, float)
+        t = np.asarray(t, np.int64)
+        f = np.asarray(f, np.int64)
+        V[s, :len(v)] = v
+        cr = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
+        nf = np.zeros((f.max() + 1, 3))
+        np.add.at(nf, f, cr)                        # area-weighted face normal
+        norm = np.linalg.norm(nf, axis=1)
+        if np.any(norm == 0):
+            raise InputError(f"shape {s}: a face has zero area")
+        N[s, :len(nf)] = nf / norm[:, None]
+        for a, b in ((0, 1), (1, 2), (2, 0)):       # edges between two different faces
+            e1, e2 = t[:, a], t[:, b]
+            A[s, e1, e2] = True
+            A[s, e2, e1] = True
+        # edges inside a geometric face (between its own triangles) are not edges
+        inner = _inner_edges(t, f)
+        A[s, inner[:, 0], inner[:, 1]] = False
+        A[s, inner[:, 1], inner[:, 0]] = False
+    return ShapeTables(V, N, A)
+
+
+def _inner_edges(t, f):
+    directed = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    face = np.tile(f, 3)
+    key = np.sort(directed, axis=1)
+    order = np.lexsort((key[:, 1], key[:, 0]))
+    key, face = key[order], face[order]
+    same = (key[0::2] == key[1::2]).all(axis=1) & (face[0::2] == face[1::2])
+    return key[0::2][same]
+
+
+def touching_features(tables, shape, rotation, direction, theta_deg=DEFAULT_THETA_DEG):
+    """Feature code (VERTEX, EDGE or FACE) of each body at its contact.
+
+    tables : ShapeTables; shape (C,) int row of each body's shape;
+    rotation (C, 3, 3) local -> global; direction (C, 3) unit vector from the
+    body towards its partner (global). Returns (C,) int8.
+    """
+    shape = np.asarray(shape, np.int64)
+    C = len(shape)
+    out = np.empty(C, np.int8)
+    cos_t, sin_t = np.cos(np.radians(theta_deg)), np.sin(np.radians(theta_deg))
+    for s0 in range(0, C, _BLOCK):
+        sl = slice(s0, min(s0 + _BLOCK, C))
+        sh = shape[sl]
+        u = np.einsum("cji,cj->ci", rotation[sl], direction[sl])   # R^T d
+        face = np.einsum("cfk,ck->cf", tables.face_normals[sh], u).max(axis=1) >= cos_t
+        v = tables.vertices[sh]
+        s = np.einsum("cvk,ck->cv", v, u)
+        s = np.where(np.isnan(s), -np.inf, s)
+        top2 = np.argpartition(-s, 1, axis=1)[:, :2]
+        rows = np.arange(len(sh))
+        sa, sb = s[rows, top2[:, 0]], s[rows, top2[:, 1]]
+        i1 = np.where(sa >= sb, top2[:, 0], top2[:, 1])
+        i2 = np.where(sa >= sb, top2[:, 1], top2[:, 0])
+        gap = np.abs(sa - sb)
+        length = np.linalg.norm(v[rows, i1] - v[rows, i2], axis=1)
+        edge = tables.adjacent[sh, i1, i2] & (gap <= sin_t * length)
+        out[sl] = np.where(face, FACE, np.where(edge, EDGE, VERTEX))
+    return out
+
+
+def pair_types(f1, f2):
+    """(C,) int index into PAIR_TYPES of the unordered feature pairs."""
+    lo, hi = np.minimum(f1, f2), np.maximum(f1, f2)
+    # VV VE VF EE EF FF  <->  (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)
+    table = np.array([[0, 1, 2], [1, 3, 4], [2, 4, 5]], np.int8)
+    return table[lo, hi]
+
+
+def first_degenerate_normal(normal):
+    """Index of the first normal that is not a finite unit vector, else -1."""
+    norm = np.linalg.norm(np.asarray(normal, float), axis=1)
+    bad = ~(np.abs(norm - 1) < 1e-6)
+    return int(np.flatnonzero(bad)[0]) if bad.any() else -1
+
+
+def classify_contacts(tables, shape1, shape2, q1, q2, normal, theta_deg=DEFAULT_THETA_DEG):
+    """Pair type of each polyhedra contact.
+
+    shape1, shape2 (C,) shape rows of id1 and id2; q1, q2 (C, 4) their
+    orientations (w, x, y, z); normal (C, 3) unit, from id1 to id2.
+    Returns (feature1, feature2, pair) as (C,) int arrays; ``pair`` indexes
+    PAIR_TYPES. Raises InputError for a degenerate normal.
+    """
+    n = np.asarray(normal, float)
+    k = first_degenerate_normal(n)
+    if k >= 0:
+        raise InputError(f"contact {k}: degenerate contact normal {n[k].tolist()} (not a unit vector)")
+    f1 = touching_features(tables, shape1, quaternion_matrices(q1), n, theta_deg)
+    f2 = touching_features(tables, shape2, quaternion_matrices(q2), -n, theta_deg)
+    return f1, f2, pair_types(f1, f2)
+
+
+def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
+    """Contact classes of a :class:`~postproc.schema.Snapshot`.
+
+    Returns (C,) array of strings: a pair type of PAIR_TYPES for contacts
+    between two polyhedra, ``"sphere"`` for contacts involving a sphere,
+    ``"wall"`` for contacts with a wall. Raises InputError for a polyhedron
+    without a shape, a shape index out of range or a degenerate normal.
+    """
+    where = f"snapshot {snap.name} (step {snap.step})"
+    from .contactset import _lookup
+
+    if snap.normal is None or snap.body_kind is None or snap.shape_index is None:
+        raise InputError(f"{where}: contact types need normals, body kinds and shapes (a dump, not a table)")
+    i1, i2 = _lookup(snap.id1, snap.body_ids), _lookup(snap.id2, snap.body_ids)
+    out = np.full(len(snap.id1), "wall", dtype="<U6")
+    pp = (i1 >= 0) & (i2 >= 0)
+    kind1 = np.where(i1 >= 0, snap.body_kind[np.maximum(i1, 0)], -1)
+    kind2 = np.where(i2 >= 0, snap.body_kind[np.maximum(i2, 0)], -1)
+    sphere = pp & ((kind1 == 0) | (kind2 == 0))
+    out[sphere] = "sphere"
+    poly = pp & (kind1 == 1) & (kind2 == 1)
+    if not poly.any():
+        return out
+    S = tables.vertices.shape[0]
+    for side, rows in (("id1", i1), ("id2", i2)):
+        sidx = snap.shape_index[rows[poly]]
+        bad = (sidx < 0) | (sidx >= S)
+        if bad.any():
+            k = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
+            body = int((snap.id1 if side == "id1" else snap.id2)[k])
+            what = "has no shape" if sidx[np.flatnonzero(bad)[0]] < 0 else \
+                f"has shape index {int(sidx[np.flatnonzero(bad)[0]])} out of range (0..{S - 1})"
+            raise InputError(f"{where}: polyhedron {body} of contact {k} {what}")
+    k = first_degenerate_normal(snap.normal[poly])
+    if k >= 0:
+        c = int(np.flatnonzero(poly)[k])
+        raise InputError(f"{where}: contact {c} has a degenerate normal {snap.normal[c].tolist()}")
+    _, _, pair = classify_contacts(
+        tables, snap.shape_index[i1[poly]], snap.shape_index[i2[poly]],
+        snap.orientations[i1[poly]], snap.orientations[i2[poly]], snap.normal[poly], theta_deg)
+    out[poly] = np.array(PAIR_TYPES)[pair]
+    return out
