@@ -77,7 +77,7 @@ def _has_duplicates(ids):
     return bool((s[1:] == s[:-1]).any())
 
 
-def _lookup(ids, table_ids):
+def lookup(ids, table_ids):
     """Row of each id in ``table_ids`` (unique ids), -1 where absent."""
     ids = np.asarray(ids, np.int64)
     table_ids = np.asarray(table_ids, np.int64)
@@ -123,8 +123,8 @@ def resolve(snap: Snapshot) -> ContactSet:
 
     id1 = np.asarray(snap.id1, np.int64)
     id2 = np.asarray(snap.id2, np.int64)
-    i1, i2 = _lookup(id1, body_ids), _lookup(id2, body_ids)
-    w1, w2 = _lookup(id1, wall_ids), _lookup(id2, wall_ids)
+    i1, i2 = lookup(id1, body_ids), lookup(id2, body_ids)
+    w1, w2 = lookup(id1, wall_ids), lookup(id2, wall_ids)
     for ids, ib, iw in ((id1, i1, w1), (id2, i2, w2)):
         unknown = (ib < 0) & (iw < 0)
         if unknown.any():

@@ -173,11 +173,11 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
     without a shape, a shape index out of range or a degenerate normal.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
-    from .contactset import _lookup
+    from .contactset import lookup
 
     if snap.normal is None or snap.body_kind is None or snap.shape_index is None:
         raise InputError(f"{where}: contact types need normals, body kinds and shapes (a dump, not a table)")
-    i1, i2 = _lookup(snap.id1, snap.body_ids), _lookup(snap.id2, snap.body_ids)
+    i1, i2 = lookup(snap.id1, snap.body_ids), lookup(snap.id2, snap.body_ids)
     out = np.full(len(snap.id1), "wall", dtype="<U6")
     pp = (i1 >= 0) & (i2 >= 0)
     kind1 = np.where(i1 >= 0, snap.body_kind[np.maximum(i1, 0)], -1)
