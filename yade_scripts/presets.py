@@ -29,7 +29,7 @@ PRESETS = {
         "spheres": {"n_particles": 40},
     },
     "default": {
-        "common": {"kappa": 300.0, "inertial_number": 1e-2, "compaction_inertial_number": 5e-2,
+        "common": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
                    "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
         "polyhedra": {"n_particles": 60},
         "spheres": {"n_particles": 1000},

@@ -16,7 +16,7 @@ import sys
 import threading
 
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides
-from .presets import ConfigError
+from .presets import ConfigError, resolve
 
 SAMPLES = ("polyhedra", "spheres")
 
@@ -33,6 +33,26 @@ def finished(folder):
             return bool(f.attrs.get("complete", 0))
     except OSError:
         return False
+
+
+def _set_aside_if_changed(folder, preset, sample, overrides):
+    """A run folder made with other parameters is renamed FOLDER.old-K, so
+    that the run is generated afresh (and never silently reused)."""
+    path = os.path.join(folder, "params.json")
+    if not os.path.exists(path):
+        return
+    import json
+
+    with open(path) as fh:
+        old = json.load(fh)
+    new = {"preset": preset, **resolve(preset, sample, overrides)}
+    if old == json.loads(json.dumps(new)):
+        return
+    k = 1
+    while os.path.exists(f"{folder}.old-{k}"):
+        k += 1
+    os.rename(folder, f"{folder}.old-{k}")
+    print(f"[{sample}] parameters changed: previous run kept as {folder}.old-{k}", flush=True)
 
 
 def _relay(name, proc, logpath):
@@ -53,6 +73,7 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
     procs = {}
     for s in samples:
         folder = os.path.join(out, s)
+        _set_aside_if_changed(folder, preset, s, overrides)
         if finished(folder):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
