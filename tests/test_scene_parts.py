@@ -130,3 +130,15 @@ def test_tangential_kernel_elastic_then_coulomb():
     tilt = np.array([[0.0, np.sin(0.1), np.cos(0.1)]] * 3)
     fs2, _ = update_shear(np.array([[0.0, 0.3, 0.0]] * 3), tilt, zero, zero, zero, kt, mu, fn)
     assert np.allclose(np.einsum("ij,ij->i", fs2, tilt), 0)
+
+
+def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
+    from yade_scripts.study import _set_aside_if_changed, finished
+
+    folder = tmp_path / "spheres"
+    generate(str(folder), "tiny", "spheres")
+    assert not finished(str(folder))                    # generated, not run
+    _set_aside_if_changed(str(folder), "tiny", "spheres", None)
+    assert folder.exists()                              # same parameters: kept
+    _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})
+    assert not folder.exists() and (tmp_path / "spheres.old-1").exists()
