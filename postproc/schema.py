@@ -298,6 +298,14 @@ class DumpWriter:
         self._links["shapes"] = ("shapes.h5", "/shapes")
         self._write_master()
 
+    def update_parameters(self, **values):
+        """Add values learnt during the run (e.g. the solid fraction after
+        compression, the top-wall speed) to the ``parameters`` attribute;
+        stored with the next snapshot (or at close)."""
+        params = json.loads(self.attrs["parameters"])
+        params.update(values)
+        self.attrs["parameters"] = json.dumps(params, sort_keys=True, default=float)
+
     def write_snapshot(self, *, step, time, stage, box_lo, box_hi, wall_ids,
                        wall_forces, bodies, contacts):
         """Append one snapshot atomically.

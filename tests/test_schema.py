@@ -24,11 +24,12 @@ def test_round_trip(tmp_path):
     with DumpWriter(str(path), "polyhedra", {"seed": 3, "sigma0": 1e4}, overlap_kind="volume") as w:
         w.write_shapes([cube], [np.array([[0, 1, 3], [0, 3, 2]])], [np.array([0, 0])])
         write_snapshot(w, snap)
+        w.update_parameters(phi=0.6)
         write_snapshot(w, snap, step=10, stage="final")
     assert not os.path.exists(str(path) + ".parts")           # packed into one file
     with DumpReader(str(path)) as r:
         assert r.complete and r.sample_kind == "polyhedra" and r.overlap_kind == "volume"
-        assert r.parameters == {"seed": 3, "sigma0": 1e4}
+        assert r.parameters == {"seed": 3, "sigma0": 1e4, "phi": 0.6}
         assert len(r) == 2
         v, t, tf = r.shapes()
         np.testing.assert_array_equal(v[0], cube)

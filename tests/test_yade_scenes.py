@@ -99,6 +99,10 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
     assert 0.3 < info["solid_fraction_isotropic"] < 0.75
     with DumpReader(str(out / "run.h5")) as r:
         assert r.complete and r.sample_kind == kind
+        # derived quantities are stored with the run parameters
+        for key in ("dt", "dt_crit", "young", "rate_shear", "top_wall_speed", "solid_fraction_isotropic"):
+            assert np.isfinite(r.parameters[key]) and r.parameters[key] > 0, key
+        assert r.parameters["solid_fraction_isotropic"] == pytest.approx(info["solid_fraction_isotropic"])
         stages = [r.read(i).stage for i in range(len(r))]
         assert stages[0] == "isotropic" and stages.count("shear") >= 2
         if kind == "polyhedra":

@@ -294,6 +294,9 @@ def control():
             state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3))
             newton.damping = damping
             state["v_top"] = wall_speed if wall_speed > 0 else rate_shear * L[2]
+            writer.update_parameters(top_wall_speed=state["v_top"], solid_fraction_isotropic=state["phi_iso"],
+                                     box_isotropic=L.tolist())
+            print(f"triaxial.py: shear: top wall at {state['v_top']:.4g} m/s", flush=True)
     else:
         eps = np.log(state["L0"] / L)
         state["eps_1"] = eps[2]
