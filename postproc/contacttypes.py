@@ -10,8 +10,10 @@ outward direction towards its partner is u = +n (A = id1) or -n (A = id2),
 written in A's local frame. The feature of A that touches is its support
 feature in direction u, taken as parallel to the contact plane within theta:
 
-* FACE   if a geometric face of A has its outward normal within theta of u
-         (the face lies flat on the contact plane);
+* FACE   if a geometric face of A that contains its support vertex (the
+         vertex furthest along u) has its outward normal within theta of u
+         (the face lies flat on the contact plane; a face that does not hold
+         the most advanced vertex is not where the bodies touch);
 * EDGE   else, if the two vertices of A furthest along u are the ends of an
          edge of A and that edge is parallel to the plane within theta:
          (s_1 - s_2) <= sin(theta) |v_1 - v_2|, s = v . u;
@@ -30,7 +32,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .axes import quaternion_matrices
 from .errors import InputError
 
 VERTEX, EDGE, FACE = 0, 1, 2
@@ -46,13 +47,18 @@ _BLOCK = 1 << 14
 class ShapeTables:
     """Per-shape arrays padded to the largest shape (S shapes).
 
-    vertices (S, Vmax, 3) local frame, padded with NaN; face_normals
-    (S, Fmax, 3) unit outward normals of the geometric faces, padded with 0;
-    adjacent (S, Vmax, Vmax) bool: True for the two ends of a geometric edge.
+    vertices (S, Vmax, 3) float32 local frame, padded with 0; pad (S, Vmax)
+    0 for a vertex and -inf for padding; face_normals
+    (S, Fmax + 1, 3) unit outward normals of the geometric faces, padded
+    with 0 (row Fmax is always 0); vertex_faces (S, Vmax, Dmax) the faces
+    containing each vertex, padded with Fmax; adjacent (S, Vmax, Vmax) bool:
+    True for the two ends of a geometric edge.
     """
 
     vertices: np.ndarray
+    pad: np.ndarray
     face_normals: np.ndarray
+    vertex_faces: np.ndarray
     adjacent: np.ndarray
 
 
@@ -66,8 +72,9 @@ def shape_tables(vertices, triangles, triangle_faces):
     vmax = max(len(v) for v in vertices)
     fmax = max(int(np.max(f)) + 1 for f in triangle_faces)
     V = np.full((S, vmax, 3), np.nan)
-    N = np.zeros((S, fmax, 3))
+    N = np.zeros((S, fmax + 1, 3))
     A = np.zeros((S, vmax, vmax), bool)
+    incident = []
     for s, (v, t, f) in enumerate(zip(vertices, triangles, triangle_faces)):
         v = np.asarray(v, float)
         t = np.asarray(t, np.int64)
@@ -88,7 +95,14 @@ def shape_tables(vertices, triangles, triangle_faces):
         inner = _inner_edges(t, f)
         A[s, inner[:, 0], inner[:, 1]] = False
         A[s, inner[:, 1], inner[:, 0]] = False
-    return ShapeTables(V, N, A)
+        incident.append([sorted(set(f[(t == k).any(axis=1)].tolist())) for k in range(len(v))])
+    dmax = max(len(x) for inc in incident for x in inc)
+    VF = np.full((S, vmax, dmax), fmax, np.int64)
+    for s, inc in enumerate(incident):
+        for k, faces in enumerate(inc):
+            VF[s, k, :len(faces)] = faces
+    pad = np.where(np.isnan(V[:, :, 0]), -np.inf, 0.0).astype(np.float32)
+    return ShapeTables(np.nan_to_num(V).astype(np.float32), pad, N.astype(np.float32), VF, A)
 
 
 def _inner_edges(t, f):
@@ -101,33 +115,47 @@ def _inner_edges(t, f):
     return key[0::2][same]
 
 
-def touching_features(tables, shape, rotation, direction, theta_deg=DEFAULT_THETA_DEG):
+def to_local(quaternion, vectors):
+    """(C, 3) global vectors expressed in the local frames of bodies with
+    orientations (C, 4) (w, x, y, z): the inverse rotation
+    v' = v + 2 w (r x v) + 2 r x (r x v) with r = -(x, y, z)."""
+    q = np.asarray(quaternion, float)
+    q = q / np.linalg.norm(q, axis=1)[:, None]
+    w, r = q[:, :1], -q[:, 1:]
+    v = np.asarray(vectors, float)
+    t = 2 * np.cross(r, v)
+    return v + w * t + np.cross(r, t)
+
+
+def touching_features(tables, shape, quaternion, direction, theta_deg=DEFAULT_THETA_DEG):
     """Feature code (VERTEX, EDGE or FACE) of each body at its contact.
 
     tables : ShapeTables; shape (C,) int row of each body's shape;
-    rotation (C, 3, 3) local -> global; direction (C, 3) unit vector from the
-    body towards its partner (global). Returns (C,) int8.
+    quaternion (C, 4) orientations (w, x, y, z), local -> global;
+    direction (C, 3) unit vector from the body towards its partner (global).
+    Returns (C,) int8.
     """
     shape = np.asarray(shape, np.int64)
     C = len(shape)
     out = np.empty(C, np.int8)
     cos_t, sin_t = np.cos(np.radians(theta_deg)), np.sin(np.radians(theta_deg))
+    local = to_local(quaternion, direction)
     for s0 in range(0, C, _BLOCK):
         sl = slice(s0, min(s0 + _BLOCK, C))
         sh = shape[sl]
-        u = np.einsum("cji,cj->ci", rotation[sl], direction[sl])   # R^T d
-        face = np.einsum("cfk,ck->cf", tables.face_normals[sh], u).max(axis=1) >= cos_t
+        u = local[sl].astype(np.float32)[:, :, None]
         v = tables.vertices[sh]
-        s = np.einsum("cvk,ck->cv", v, u)
-        s = np.where(np.isnan(s), -np.inf, s)
-        top2 = np.argpartition(-s, 1, axis=1)[:, :2]
+        s = (v @ u)[:, :, 0] + tables.pad[sh]          # heights along u; padding at -inf
         rows = np.arange(len(sh))
-        sa, sb = s[rows, top2[:, 0]], s[rows, top2[:, 1]]
-        i1 = np.where(sa >= sb, top2[:, 0], top2[:, 1])
-        i2 = np.where(sa >= sb, top2[:, 1], top2[:, 0])
-        gap = np.abs(sa - sb)
+        i1 = np.argmax(s, axis=1)                      # support vertex
+        sa = s[rows, i1]
+        s[rows, i1] = -np.inf
+        i2 = np.argmax(s, axis=1)                      # the next one
+        gap = sa - s[rows, i2]
         length = np.linalg.norm(v[rows, i1] - v[rows, i2], axis=1)
         edge = tables.adjacent[sh, i1, i2] & (gap <= sin_t * length)
+        nf = tables.face_normals[sh[:, None], tables.vertex_faces[sh, i1]]   # faces at the support vertex
+        face = (nf @ u)[:, :, 0].max(axis=1) >= cos_t
         out[sl] = np.where(face, FACE, np.where(edge, EDGE, VERTEX))
     return out
 
@@ -159,8 +187,8 @@ def classify_contacts(tables, shape1, shape2, q1, q2, normal, theta_deg=DEFAULT_
     k = first_degenerate_normal(n)
     if k >= 0:
         raise InputError(f"contact {k}: degenerate contact normal {n[k].tolist()} (not a unit vector)")
-    f1 = touching_features(tables, shape1, quaternion_matrices(q1), n, theta_deg)
-    f2 = touching_features(tables, shape2, quaternion_matrices(q2), -n, theta_deg)
+    f1 = touching_features(tables, shape1, q1, n, theta_deg)
+    f2 = touching_features(tables, shape2, q2, -n, theta_deg)
     return f1, f2, pair_types(f1, f2)
 
 
