@@ -59,6 +59,14 @@ class Recipe:
         return asdict(self)
 
 
+def _surface_point(rng, axes, recipe):
+    """A random point on the base ellipsoid (uniform direction), pushed in or
+    out radially by up to ``recipe.jitter``."""
+    u = rng.normal(size=3)
+    u /= np.linalg.norm(u)
+    return axes * u * (1 + recipe.jitter * rng.uniform(-1, 1))
+
+
 def _draw_points(rng, n, axes, recipe):
     pts = []
     tries = 0
@@ -67,9 +75,7 @@ def _draw_points(rng, n, axes, recipe):
         tries += 1
         if tries > 100 * n:
             raise ShapeError("could not place points at the minimum separation")
-        u = rng.normal(size=3)
-        u /= np.linalg.norm(u)
-        x = axes * u * (1 + recipe.jitter * rng.uniform(-1, 1))
+        x = _surface_point(rng, axes, recipe)
         if all(np.linalg.norm(x - p) >= sep for p in pts):
             pts.append(x)
     return pts
@@ -134,9 +140,7 @@ def _draw_points_more(rng, existing, axes, recipe):
     """One more point at the minimum separation from the existing ones."""
     sep = recipe.min_separation * 2 * axes.max()
     for _ in range(1000):
-        u = rng.normal(size=3)
-        u /= np.linalg.norm(u)
-        x = axes * u * (1 + recipe.jitter * rng.uniform(-1, 1))
+        x = _surface_point(rng, axes, recipe)
         if np.min(np.linalg.norm(np.asarray(existing) - x, axis=1)) >= sep:
             return [x]
     raise ShapeError("could not place points at the minimum separation")
