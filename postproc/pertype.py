@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from .axes import axis_vector
+from .stress import contact_stress
 
 
 def partial_stresses(labels, force, arm, volume):
@@ -22,7 +23,7 @@ def partial_stresses(labels, force, arm, volume):
     pairs, particle-to-contact-point for walls); volume m^3.
     """
     labels = np.asarray(labels)
-    return {str(k): np.asarray(force[labels == k], float).T @ np.asarray(arm[labels == k], float) / volume
+    return {str(k): contact_stress(force[labels == k], arm[labels == k], volume)
             for k in np.unique(labels)}
 
 
