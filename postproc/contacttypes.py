@@ -220,10 +220,11 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
         sidx = snap.shape_index[rows[poly]]
         bad = (sidx < 0) | (sidx >= S)
         if bad.any():
-            k = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
+            j = int(np.flatnonzero(bad)[0])
+            k = int(np.flatnonzero(poly)[j])
             body = int((snap.id1 if side == "id1" else snap.id2)[k])
-            what = "has no shape" if sidx[np.flatnonzero(bad)[0]] < 0 else \
-                f"has shape index {int(sidx[np.flatnonzero(bad)[0]])} out of range (0..{S - 1})"
+            what = "has no shape" if sidx[j] < 0 else \
+                f"has shape index {int(sidx[j])} out of range (0..{S - 1})"
             raise InputError(f"{where}: polyhedron {body} of contact {k} {what}")
     k = first_degenerate_normal(snap.normal[poly])
     if k >= 0:
