@@ -93,10 +93,8 @@ class TangentialLaw:
         self.n_active, self.n_sliding = len(keys), int(slide.sum())
         # forces and torques, summed per body
         cp = a[:, 12:15]
-        bodies = np.unique(ids)
-        index = {b: k for k, b in enumerate(bodies)}
-        i1 = np.array([index[b] for b in ids[:, 0]])
-        i2 = np.array([index[b] for b in ids[:, 1]])
+        bodies, inverse = np.unique(ids, return_inverse=True)
+        i1, i2 = inverse.reshape(-1, 2).T
         pos = np.array([tuple(O.bodies[int(b)].state.pos) for b in bodies])
         F = np.zeros((len(bodies), 3))
         T = np.zeros((len(bodies), 3))
