@@ -11,6 +11,7 @@ import time
 
 import numpy as np
 
+from postproc import contacttypes
 from postproc.contacttypes import DEFAULT_THETA_DEG, PAIR_TYPES, classify_contacts, shape_tables
 from shapes.library import ShapeLibrary
 
@@ -28,12 +29,15 @@ def main():
     q1, q2 = rng.normal(size=(N, 4)), rng.normal(size=(N, 4))
     n = rng.normal(size=(N, 3))
     n /= np.linalg.norm(n, axis=1)[:, None]
-    best = np.inf
-    for _ in range(3):
-        t = time.perf_counter()
-        classify_contacts(tables, s1, s2, q1, q2, n)
-        best = min(best, time.perf_counter() - t)
-    print(f"{N} contacts, {len(lib)} shapes: {best:.2f} s, {N / best:.3g} contacts/s")
+    for threads in (1, contacttypes._THREADS):
+        contacttypes._THREADS = threads
+        best = np.inf
+        for _ in range(3):
+            t = time.perf_counter()
+            classify_contacts(tables, s1, s2, q1, q2, n)
+            best = min(best, time.perf_counter() - t)
+        print(f"{N} contacts, {len(lib)} shapes, {threads} thread(s): {best:.2f} s, "
+              f"{N / best:.3g} contacts/s")
     for theta in (DEFAULT_THETA_DEG / 2, DEFAULT_THETA_DEG, 2 * DEFAULT_THETA_DEG):
         _, _, pair = classify_contacts(tables, s1[:100_000], s2[:100_000], q1[:100_000], q2[:100_000],
                                        n[:100_000], theta)

@@ -28,6 +28,8 @@ VV, VE, VF, EE, EF, FF (unordered), grouped as in the paper into simple
 """
 from __future__ import annotations
 
+import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,26 +42,27 @@ PAIR_TYPES = ("VV", "VE", "VF", "EE", "EF", "FF")
 GROUP_OF = {"VV": "simple", "VE": "simple", "VF": "simple", "EE": "simple",
             "EF": "double", "FF": "triple"}
 DEFAULT_THETA_DEG = 5.0
-_BLOCK = 1 << 14
+_BLOCK = 1 << 13
+_THREADS = min(4, os.cpu_count() or 1)
 
 
 @dataclass
 class ShapeTables:
-    """Per-shape arrays padded to the largest shape (S shapes).
+    """Per-shape arrays padded to the largest shape (S shapes, at most Vmax
+    vertices, at most Dmax geometric faces at a vertex).
 
     vertices (S, Vmax, 3) float32 local frame, padded with 0; pad (S, Vmax)
-    0 for a vertex and -inf for padding; face_normals
-    (S, Fmax + 1, 3) unit outward normals of the geometric faces, padded
-    with 0 (row Fmax is always 0); vertex_faces (S, Vmax, Dmax) the faces
-    containing each vertex, padded with Fmax; adjacent (S, Vmax, Vmax) bool:
-    True for the two ends of a geometric edge.
+    0 for a vertex and -inf for padding; vertex_normals (S, Vmax, Dmax, 3)
+    float32 unit outward normals of the geometric faces that contain each
+    vertex, padded with 0; edge_length (S, Vmax, Vmax) float32 length of
+    the geometric edge between two vertices, 0 when they are not the ends
+    of an edge.
     """
 
     vertices: np.ndarray
     pad: np.ndarray
-    face_normals: np.ndarray
-    vertex_faces: np.ndarray
-    adjacent: np.ndarray
+    vertex_normals: np.ndarray
+    edge_length: np.ndarray
 
 
 def shape_tables(vertices, triangles, triangle_faces):
@@ -97,12 +100,14 @@ def shape_tables(vertices, triangles, triangle_faces):
         A[s, inner[:, 1], inner[:, 0]] = False
         incident.append([sorted(set(f[(t == k).any(axis=1)].tolist())) for k in range(len(v))])
     dmax = max(len(x) for inc in incident for x in inc)
-    VF = np.full((S, vmax, dmax), fmax, np.int64)
+    VN = np.zeros((S, vmax, dmax, 3))
     for s, inc in enumerate(incident):
         for k, faces in enumerate(inc):
-            VF[s, k, :len(faces)] = faces
+            VN[s, k, :len(faces)] = N[s, faces]
     pad = np.where(np.isnan(V[:, :, 0]), -np.inf, 0.0).astype(np.float32)
-    return ShapeTables(np.nan_to_num(V).astype(np.float32), pad, N.astype(np.float32), VF, A)
+    V = np.nan_to_num(V)
+    EL = np.where(A, np.linalg.norm(V[:, :, None, :] - V[:, None, :, :], axis=-1), 0.0)
+    return ShapeTables(V.astype(np.float32), pad, VN.astype(np.float32), EL.astype(np.float32))
 
 
 def _inner_edges(t, f):
@@ -116,15 +121,24 @@ def _inner_edges(t, f):
 
 
 def to_local(quaternion, vectors):
-    """(C, 3) global vectors expressed in the local frames of bodies with
-    orientations (C, 4) (w, x, y, z): the inverse rotation
-    v' = v + 2 w (r x v) + 2 r x (r x v) with r = -(x, y, z)."""
-    q = np.asarray(quaternion, float)
-    q = q / np.linalg.norm(q, axis=1)[:, None]
-    w, r = q[:, :1], -q[:, 1:]
-    v = np.asarray(vectors, float)
-    t = 2 * np.cross(r, v)
-    return v + w * t + np.cross(r, t)
+    """(C, 3) float32 global vectors expressed in the local frames of bodies
+    with orientations (C, 4) (w, x, y, z), local -> global, not necessarily
+    normalised: v' = R(q)^T v, computed component-wise (the transpose of
+    the unit quaternion's rotation matrix applied to each vector)."""
+    q = np.asarray(quaternion, np.float32)
+    v = np.asarray(vectors, np.float32)
+    w, x, y, z = q.T
+    n2 = w * w + x * x + y * y + z * z
+    k = 2 / n2
+    vx, vy, vz = v.T
+    out = np.empty((len(q), 3), np.float32)
+    xx, yy, zz = x * x * k, y * y * k, z * z * k
+    xy, xz, yz = x * y * k, x * z * k, y * z * k
+    wx, wy, wz = w * x * k, w * y * k, w * z * k
+    out[:, 0] = (1 - yy - zz) * vx + (xy + wz) * vy + (xz - wy) * vz
+    out[:, 1] = (xy - wz) * vx + (1 - xx - zz) * vy + (yz + wx) * vz
+    out[:, 2] = (xz + wy) * vx + (yz - wx) * vy + (1 - xx - yy) * vz
+    return out
 
 
 def touching_features(tables, shape, quaternion, direction, theta_deg=DEFAULT_THETA_DEG):
@@ -138,25 +152,33 @@ def touching_features(tables, shape, quaternion, direction, theta_deg=DEFAULT_TH
     shape = np.asarray(shape, np.int64)
     C = len(shape)
     out = np.empty(C, np.int8)
-    cos_t, sin_t = np.cos(np.radians(theta_deg)), np.sin(np.radians(theta_deg))
+    cos_t = np.float32(np.cos(np.radians(theta_deg)))
+    sin_t = np.float32(np.sin(np.radians(theta_deg)))
     local = to_local(quaternion, direction)
-    for s0 in range(0, C, _BLOCK):
+
+    def block(s0):
         sl = slice(s0, min(s0 + _BLOCK, C))
         sh = shape[sl]
-        u = local[sl].astype(np.float32)[:, :, None]
-        v = tables.vertices[sh]
-        s = (v @ u)[:, :, 0] + tables.pad[sh]          # heights along u; padding at -inf
+        u = local[sl][:, :, None]
+        s = (tables.vertices[sh] @ u)[:, :, 0]         # heights along u
+        s += tables.pad[sh]                            # padding at -inf
         rows = np.arange(len(sh))
         i1 = np.argmax(s, axis=1)                      # support vertex
         sa = s[rows, i1]
         s[rows, i1] = -np.inf
         i2 = np.argmax(s, axis=1)                      # the next one
-        gap = sa - s[rows, i2]
-        length = np.linalg.norm(v[rows, i1] - v[rows, i2], axis=1)
-        edge = tables.adjacent[sh, i1, i2] & (gap <= sin_t * length)
-        nf = tables.face_normals[sh[:, None], tables.vertex_faces[sh, i1]]   # faces at the support vertex
-        face = (nf @ u)[:, :, 0].max(axis=1) >= cos_t
+        length = tables.edge_length[sh, i1, i2]        # 0 unless (i1, i2) is an edge
+        edge = (length > 0) & (sa - s[rows, i2] <= sin_t * length)
+        face = (tables.vertex_normals[sh, i1] @ u)[:, :, 0].max(axis=1) >= cos_t
         out[sl] = np.where(face, FACE, np.where(edge, EDGE, VERTEX))
+
+    starts = range(0, C, _BLOCK)
+    if C > 2 * _BLOCK:       # numpy releases the GIL in these kernels: blocks in threads
+        with ThreadPoolExecutor(_THREADS) as pool:
+            list(pool.map(block, starts))
+    else:
+        for s0 in starts:
+            block(s0)
     return out
 
 
