@@ -11,13 +11,17 @@ import numpy as np
 from .angular import AngularFunctions, angular_functions, fit_harmonics
 from .axes import axis_vector
 from .contactset import ContactSet, resolve
+from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, classify_snapshot
 from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
 from .fabric import anisotropies, stress_force_fabric
+from .networks import network_statistics
+from .pertype import class_statistics, partial_stresses, stress_contributions
 from .schema import WALL_ORDER, Snapshot
 from .strain import box_strains
 from .stress import contact_stress, invariants, relative_difference, wall_stress
 
+GROUPS = ("simple", "double", "triple")
 _COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _IDX = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "yz": (1, 2), "xz": (0, 2), "xy": (0, 1)}
 
@@ -29,6 +33,8 @@ class SnapshotResult:
     row: dict                  # scalars for summary.csv
     angular: AngularFunctions  # binned functions (for the polar plots)
     fits: dict                 # harmonic fits
+    normal_force: np.ndarray = None   # (C',) N, force-bearing particle-particle contacts
+    labels: np.ndarray = None         # (C',) their classes ("VV".."FF", "sphere")
 
 
 def wall_forces_from_contacts(cs: ContactSet):
@@ -58,7 +64,66 @@ def _stress_columns(prefix, sigma, axis):
     return row, inv
 
 
-def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True) -> SnapshotResult:
+def contact_type_columns(snap, cs, sel, tables, p, axis, theta_deg=DEFAULT_THETA_DEG):
+    """summary.csv columns of the contact types of a polyhedra snapshot
+    (issue 5; seed fig. 10-12 and claim 6), and the class of each contact.
+
+    ``sel`` (C,) bool marks the force-bearing particle-particle contacts,
+    over which proportions, force ratios, force shares and the signed
+    branch fabric of each class are taken (:func:`postproc.pertype.class_statistics`).
+    Partial stresses are over all contacts (walls as their own class) and
+    sum to the total; ``ct_qp_<k>`` is class k's share of q_axial/p.
+    ``ct_frac_<k>_lo`` / ``_hi`` are the proportions with the tolerance
+    halved and doubled. ``z_points`` counts a contact as 1, 2 or 3 points
+    (simple, double, triple), as a multi-point contact code would, beside
+    ``z`` which counts every pair once (the paper's convention).
+    Returns (row, labels (C,)).
+    """
+    labels = classify_snapshot(snap, tables, theta_deg)
+    group_labels = group_labels_of(labels)
+    row = {"ct_theta_deg": float(theta_deg)}
+    fn, L = cs.normal_force[sel], cs.arm[sel]
+    for lab, classes in ((labels[sel], PAIR_TYPES), (group_labels[sel], GROUPS)):
+        st = class_statistics(lab, fn, L, axis)
+        for k in classes:
+            d = st.get(k)
+            row[f"ct_frac_{k}"] = d["fraction"] if d else 0.0
+            row[f"ct_fratio_{k}"] = d["mean_force_ratio"] if d else np.nan
+            row[f"ct_fshare_{k}"] = d["force_share"] if d else 0.0
+            row[f"ct_fabric_{k}"] = d["fabric_a"] if d else np.nan
+            row[f"ct_fabric_{k}_se"] = d["fabric_a_se"] if d else np.nan
+    row.update({f"ct_qp_{k}": 0.0 for k in PAIR_TYPES + GROUPS})   # a class with no contact carries 0
+    for lab in (labels, group_labels):
+        parts = partial_stresses(lab, cs.force, cs.arm, cs.volume)
+        for k, (_, qk) in stress_contributions(parts, p, axis).items():
+            row[f"ct_qp_{k}"] = qk
+        if lab is labels:
+            total = contact_stress(cs.force, cs.arm, cs.volume)
+            row["ct_partial_sum_reldiff"] = relative_difference(sum(parts.values()), total)
+    for tag, th in (("lo", theta_deg / 2), ("hi", theta_deg * 2)):
+        other = classify_snapshot(snap, tables, th)[sel]
+        og = group_labels_of(other)
+        for k in PAIR_TYPES:
+            row[f"ct_frac_{k}_{tag}"] = float(np.mean(other == k))
+        for k in GROUPS:
+            row[f"ct_frac_{k}_{tag}"] = float(np.mean(og == k))
+    points = np.select([group_labels[sel] == g for g in GROUPS], [1, 2, 3], 1)
+    row["ct_points_per_contact"] = float(points.mean())
+    return row, labels
+
+
+def group_labels_of(labels):
+    """(C,) group of each class label: "simple", "double", "triple" for
+    the pair types, the label itself otherwise ("sphere", "wall")."""
+    labels = np.asarray(labels)
+    out = labels.astype(object)
+    for k, g in GROUP_OF.items():
+        out[labels == k] = g
+    return out.astype(str)
+
+
+def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
+                     theta_deg=DEFAULT_THETA_DEG) -> SnapshotResult:
     """Stress, fabric, force anisotropies and coordination of one snapshot.
 
     Stress (Pa, compression positive) in three forms: ``s_*`` the internal
@@ -134,11 +199,34 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True) -> SnapshotR
     co = coordination(cs.i1, cs.i2, cs.force, cs.n_particles)
     row.update(co)
     row["frac_below_mean"] = fraction_below_mean(cs.normal_force[sel])
+    labels = np.where(cs.pp, "sphere", "wall").astype("<U6")
+    if tables is not None and snap.body_kind is not None and np.any(snap.body_kind == 1):
+        cols, labels = contact_type_columns(snap, cs, sel, tables, p, e, theta_deg)
+        row.update(cols)
+        row["z_points"] = row["z"] * row["ct_points_per_contact"]
+    typed = "ct_theta_deg" in row
+    nets = network_statistics(cs.normal_force[sel], branch, force, e,
+                              labels=labels[sel] if typed else None, classes=PAIR_TYPES)
+    if typed:
+        g = network_statistics(cs.normal_force[sel], branch, force, e,
+                               labels=group_labels_of(labels[sel]), classes=GROUPS)
+        for name in nets:
+            nets[name].update({k: v for k, v in g[name].items() if k.startswith("frac_")})
+    strong = sel & (cs.normal_force > cs.normal_force[sel].mean())
+    parts = partial_stresses(np.where(~cs.pp, "wall", np.where(strong, "strong", "weak")),
+                             cs.force, cs.arm, V)
+    qp = stress_contributions(parts, p, e)
+    for name, d in nets.items():
+        for k, v in d.items():
+            if not k.endswith("_se") and k not in ("l0", "f0"):
+                row[f"{name}_{k}"] = v
+        row[f"{name}_qp"] = qp.get(name, (np.nan, 0.0))[1]
+    row["wall_qp"] = qp.get("wall", (np.nan, 0.0))[1]
     row["n_particles"] = cs.n_particles
     row["n_contacts"] = int(len(cs.force))
     row["n_contacts_pp"] = int(cs.pp.sum())
     row["n_contacts_wall"] = int((~cs.pp).sum())
-    return SnapshotResult(row, af, fits)
+    return SnapshotResult(row, af, fits, cs.normal_force[sel], labels[sel])
 
 
 def add_strains(rows, lengths, reference, axis=2):

@@ -21,13 +21,14 @@ BAD_INPUT = (InputError, DumpFormatError)
 
 
 def _open_source(path, volume, box):
-    """(count, iterator of Snapshot or exception, close) for a dump or table."""
+    """(count, iterator of Snapshot or exception, close, shapes) for a dump
+    or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
     ext = os.path.splitext(path)[1].lower()
     if ext in (".csv", ".parquet", ".pq"):
         from .tables import read_contact_table
 
         snaps = read_contact_table(path, volume=volume, box=box)
-        return len(snaps), iter(snaps), lambda: None
+        return len(snaps), iter(snaps), lambda: None, None
     if volume is not None or box is not None:
         raise InputError("--volume and --box are for flat contact tables; a dump has its box")
     reader = DumpReader(path)
@@ -42,7 +43,59 @@ def _open_source(path, volume, box):
             except DumpFormatError as exc:
                 yield exc
 
-    return len(reader), gen(), reader.close
+    try:
+        shapes = reader.shapes()
+    except DumpFormatError:
+        reader.close()
+        raise
+    return len(reader), gen(), reader.close, shapes
+
+
+def pooled_indices(df, start=0.5):
+    """Rows of the steady part of shear, pooled for distributions: shear
+    snapshots with eps_q >= start * the largest eps_q (the last snapshot
+    alone when strains are unknown or only one qualifies)."""
+    eq = df["eps_q"].to_numpy(float)
+    stage = df["stage"].to_numpy(str)
+    if np.isfinite(eq).any() and (stage == "shear").any():
+        top = np.nanmax(np.where(stage == "shear", eq, np.nan))
+        idx = np.flatnonzero((stage == "shear") & (eq >= start * top))
+        if top > 0 and len(idx) > 1:
+            return idx
+    return np.array([len(df) - 1])
+
+
+def pooled_force_pdf(forces):
+    """Long table (class, binning, x, pdf, pdf_weighted, count) of the densities of f_n/<f_n>
+    over the pooled snapshots, each snapshot normalised by its own mean
+    over all its force-bearing particle-particle contacts: class "all" and
+    each contact class and group present. ``forces`` is a list of
+    (normal_force (C,), labels (C,))."""
+    import pandas as pd
+
+    from .analysis import group_labels_of
+    from .networks import force_pdf
+
+    x = np.concatenate([f / f.mean() for f, _ in forces])
+    lab = np.concatenate([lab for _, lab in forces])
+    log_bins = np.geomspace(max(x[x > 0].min(), 1e-4), x.max() * (1 + 1e-9), 31)
+    lin_bins = np.linspace(0, x.max() * (1 + 1e-9), 31)
+    frames = []
+    groups = group_labels_of(lab)
+    for name, sel in [("all", np.ones(len(x), bool))] + \
+            [(k, lab == k) for k in np.unique(lab)] + \
+            [(g, groups == g) for g in np.unique(groups) if g not in np.unique(lab)]:
+        if sel.sum() == 0:
+            continue
+        for binning, bins in (("log", log_bins), ("linear", lin_bins)):
+            c, d = force_pdf(x[sel], mean=1.0, bins=bins)
+            if binning == "linear":
+                c = 0.5 * (bins[:-1] + bins[1:])
+            # density of the class alone, and weighted by its share so the
+            # classes add up to the "all" curve
+            frames.append(pd.DataFrame({"class": name, "binning": binning, "x": c, "pdf": d,
+                                        "pdf_weighted": d * sel.mean(), "count": int(sel.sum())}))
+    return pd.concat(frames, ignore_index=True)
 
 
 def reference_index(stages):
@@ -55,9 +108,17 @@ def reference_index(stages):
 
 
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
-                 errors=True, progress=None):
+                 errors=True, progress=None, theta_deg=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
-    the figures. Returns (n_good, list of error lines)."""
+    the figures. For a dump of polyhedra also the contact types (tolerance
+    ``theta_deg``, default :data:`postproc.contacttypes.DEFAULT_THETA_DEG`),
+    ``force_pdf.csv`` and their figures. Returns (n_good, list of error
+    lines)."""
+    from .contacttypes import DEFAULT_THETA_DEG, shape_tables
+
+    theta_deg = DEFAULT_THETA_DEG if theta_deg is None else float(theta_deg)
+    if not (np.isfinite(theta_deg) and 0 < theta_deg < 45):
+        raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
     import pandas as pd
 
     from . import plots
@@ -71,8 +132,13 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         e = axis_vector(axis)
     except ValueError as exc:
         raise InputError(f"--axis: {exc}") from None
-    count, snaps, close = _open_source(path, volume, box)
-    rows, lengths, stages, last, problems = [], [], [], None, []
+    count, snaps, close, shapes = _open_source(path, volume, box)
+    try:
+        tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
+    except InputError as exc:
+        close()
+        raise InputError(f"{path}: /shapes: {exc}") from None
+    rows, lengths, stages, last, problems, forces = [], [], [], None, [], []
     try:
         from tqdm import tqdm
 
@@ -83,7 +149,8 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
                 problems.append(str(snap))
                 continue
             try:
-                res = analyze_snapshot(snap, axis=e, nbins=nbins, errors=errors)
+                res = analyze_snapshot(snap, axis=e, nbins=nbins, errors=errors,
+                                       tables=tables, theta_deg=theta_deg)
             except BAD_INPUT as exc:
                 problems.append(str(exc) if str(exc).startswith(("snapshot", path))
                                 else f"snapshot {snap.name}: {exc}")
@@ -92,6 +159,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
             lengths.append(snap.box_lengths)
             stages.append(snap.stage)
             last = (snap, res)
+            forces.append((res.normal_force, res.labels))
     finally:
         close()
     if not rows:
@@ -114,6 +182,15 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         snap, res = last
         plots.plot_polar(res.angular, res.fits, os.path.join(tmp, "polar_last.png"),
                          f"{label}: snapshot {snap.name} (step {snap.step})")
+        pool = pooled_indices(df)
+        pdf = pooled_force_pdf([forces[k] for k in pool])
+        pdf.to_csv(os.path.join(tmp, "force_pdf.csv"), index=False)
+        what = (f"{label}: snapshots {df['snapshot'].iloc[pool[0]]}-{df['snapshot'].iloc[pool[-1]]}"
+                f" pooled ({len(pool)})")
+        plots.plot_force_pdf(pdf, os.path.join(tmp, "force_pdf.png"), what)
+        plots.plot_networks(df, os.path.join(tmp, "networks.png"), label)
+        if "ct_theta_deg" in df:
+            plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
         if problems:
             with open(os.path.join(tmp, "errors.txt"), "w") as fh:
                 fh.write("\n".join(problems) + "\n")
@@ -139,6 +216,8 @@ def main(argv=None):
     an.add_argument("--box", type=float, nargs=3, metavar=("LX", "LY", "LZ"),
                     help="box lengths in m (flat tables; gives volume and wall areas)")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
+    an.add_argument("--theta", type=float, default=None,
+                    help="contact-type angular tolerance in degrees (polyhedra; default 5)")
     an.add_argument("--no-errors", action="store_true", help="skip standard errors (faster)")
     an.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                     help="progress bar (default: on for 5 snapshots or more)")
@@ -166,7 +245,7 @@ def main(argv=None):
             raise InputError("--bins must be at least 2")
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
                                    box=args.box, nbins=args.bins, errors=not args.no_errors,
-                                   progress=args.progress)
+                                   progress=args.progress, theta_deg=args.theta)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)
         return 2

@@ -61,3 +61,23 @@ def class_statistics(labels, normal_force, branch, axis=2):
             "fabric_a_se": float(g[sel].std(ddof=1) / np.sqrt(n)) if n > 1 else np.nan,
         }
     return out
+
+
+def stress_contributions(partials, p, axis=2):
+    """{label: (p_k / p, q_k / p)}: the share of the mean stress and of the
+    signed axial deviator q = (sigma_aa - mean lateral)/3 carried by each
+    class. Both are linear in the stress, so over all classes they sum to 1
+    and to the total q_axial / p (seed eq. 2 split by class).
+
+    partials {label: (3, 3) Pa} from :func:`partial_stresses`; p the total
+    mean stress, Pa, compression positive; axis the compression axis.
+    """
+    e = axis_vector(axis)
+    out = {}
+    for k, s in partials.items():
+        sym = 0.5 * (s + s.T)
+        s_aa = e @ sym @ e
+        pk = np.trace(sym) / 3.0
+        qk = (s_aa - (np.trace(sym) - s_aa) / 2.0) / 3.0
+        out[k] = (pk / p, qk / p) if p else (np.nan, np.nan)
+    return out

@@ -160,3 +160,33 @@ def test_snapshot_classes_and_bad_input(tables):
     snap.normal[2] = [0.0, 0.0, 0.0]
     with pytest.raises(InputError, match="contact 2 has a degenerate normal"):
         classify_snapshot(snap, tables)
+
+
+def test_tiny_and_deep_overlaps_classify_alike(tables):
+    """The criterion uses orientations and the normal only, so a pair with a
+    tiny (1e-9 d) or deep (0.3 d) overlap gets the same type."""
+    cases = list(CASES.values())
+    ref = classify_snapshot(_snapshot(tables, cases), tables).tolist()
+    for depth in (1e-9, 0.3):
+        snap = _snapshot(tables, cases)
+        snap.positions[1::2, 2] -= depth
+        snap.point[:, 2] -= depth / 2
+        assert classify_snapshot(snap, tables).tolist() == ref == [c[4] for c in cases]
+
+
+def test_threaded_blocks_match_one_thread(tables, monkeypatch):
+    from postproc import contacttypes
+
+    rng = np.random.default_rng(5)
+    n = 5 * contacttypes._BLOCK + 17
+    s1, s2 = rng.integers(2, size=n), rng.integers(2, size=n)
+    q1, q2 = rng.normal(size=(n, 4)), rng.normal(size=(n, 4))
+    nn = rng.normal(size=(n, 3))
+    nn /= np.linalg.norm(nn, axis=1)[:, None]
+    monkeypatch.setattr(contacttypes, "_THREADS", 1)
+    one = classify_contacts(tables, s1, s2, q1, q2, nn)
+    monkeypatch.setattr(contacttypes, "_THREADS", 3)
+    many = classify_contacts(tables, s1, s2, q1, q2, nn)
+    for a, b in zip(one, many):
+        assert np.array_equal(a, b)
+    assert len(np.unique(one[2])) >= 4
