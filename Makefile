@@ -10,6 +10,7 @@ STAMP := $(VENV)/.installed
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 STUDY ?= runs/study
 PRESET ?= default
+ENSEMBLE ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 
 .PHONY: test study system venv bench clean-venv shapes
@@ -42,9 +43,11 @@ $(SHAPES_LIB): | venv
 shapes: $(SHAPES_LIB)
 
 # The main job: S1 and S2 on the default preset, side by side (2 cores),
-# then the analysis of both dumps. Finished runs are not run again.
+# then the analysis of every dump and the report (STUDY/report/report.md).
+# ENSEMBLE=n runs n seeds per sample through yade-batch. Finished runs are
+# not run again.
 study: system venv $(SHAPES_LIB)
-	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY)
+	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE)
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

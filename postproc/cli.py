@@ -51,18 +51,12 @@ def _open_source(path, volume, box):
     return len(reader), gen(), reader.close, shapes
 
 
-def pooled_indices(df, start=0.5):
-    """Rows of the steady part of shear, pooled for distributions: shear
-    snapshots with eps_q >= start * the largest eps_q (the last snapshot
-    alone when strains are unknown or only one qualifies)."""
-    eq = df["eps_q"].to_numpy(float)
-    stage = df["stage"].to_numpy(str)
-    if np.isfinite(eq).any() and (stage == "shear").any():
-        top = np.nanmax(np.where(stage == "shear", eq, np.nan))
-        idx = np.flatnonzero((stage == "shear") & (eq >= start * top))
-        if top > 0 and len(idx) > 1:
-            return idx
-    return np.array([len(df) - 1])
+def pooled_indices(df):
+    """Rows pooled for distributions: the steady part of shear
+    (:func:`postproc.statistics.steady_indices`)."""
+    from .statistics import steady_indices
+
+    return steady_indices(df["eps_q"], df["stage"])
 
 
 def pooled_force_pdf(forces):
@@ -228,7 +222,43 @@ def main(argv=None):
     sy.add_argument("--final", type=float, nargs=4, default=(0.3, 0.1, 0.5, 0.2),
                     metavar=("A", "A_L", "A_N", "A_T"), help="anisotropies of the last snapshot")
     sy.add_argument("--seed", type=int, default=0)
+    rp = sub.add_parser("report", help="the study report (figures, published values, the six claims)")
+    rp.add_argument("study", help="study folder written by 'make study' (holds manifest.json)")
+    rp.add_argument("--out", help="report folder (default STUDY/report)")
+    vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
+    vt.add_argument("path", help="RUN.h5 dump")
+    vt.add_argument("outdir", help="output folder")
+    vt.add_argument("--theta", type=float, default=None, help="contact-type tolerance, degrees")
+    vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")
     args = ap.parse_args(argv)
+    if args.cmd == "report":
+        from .report import build_report
+
+        if not os.path.isdir(args.study):
+            print(f"postproc: error: {args.study}: no such study folder", file=sys.stderr)
+            return 2
+        path = build_report(args.study, args.out)
+        print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
+        return 0
+    if args.cmd == "export-vtk":
+        from .vtk import export_vtk
+
+        try:
+            snaps = None
+            if args.snapshots:
+                with DumpReader(args.path) as r:
+                    n = len(r)
+                bad = [k for k in args.snapshots if not -n <= k < n]
+                if bad:
+                    raise InputError(f"--snapshots: index {bad[0]} out of range (the dump has {n})")
+                snaps = [k % n for k in args.snapshots]
+            files = export_vtk(args.path, args.outdir, args.theta, snaps, progress=True)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(f"postproc: wrote {len(files)} files to {args.outdir} (open particles.pvd and "
+              f"contacts.pvd in ParaView)", file=sys.stderr)
+        return 0
     if args.cmd == "synthetic":
         from .synthetic import write_synthetic_dump
 

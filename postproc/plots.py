@@ -185,3 +185,162 @@ def plot_contact_types(df, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def plot_packing(snap, shapes, labels, path, label=""):
+    """A 3D picture of one snapshot: particles (polyhedra as translucent
+    triangles, spheres as translucent dots) and the particle-particle
+    contacts as segments between centres, coloured and thickened by the
+    normal force (the seed's force-chain snapshot figure)."""
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+
+    from .vtk import contact_mesh, particle_mesh
+
+    plt = _plt()
+    pts, cells, _, pdata = particle_mesh(snap, shapes)
+    cpts, ccells, cdata = contact_mesh(snap, labels)
+    fig = plt.figure(figsize=(5.5, 7))
+    ax = fig.add_subplot(projection="3d")
+    for kind, conn in cells:
+        if kind == "triangle":
+            ax.add_collection3d(Poly3DCollection(pts[conn], facecolor="0.8", edgecolor="0.6",
+                                                 linewidths=0.1, alpha=0.12))
+        else:
+            p = pts[conn[:, 0]]
+            ax.scatter(p[:, 0], p[:, 1], p[:, 2], s=2, color="0.6", alpha=0.3)
+    fn = cdata["fn"][0]
+    pp = np.asarray(labels) != "wall"
+    if pp.any() and fn[pp].max() > 0:
+        lines = ccells[0][1][pp]
+        seg = cpts[lines]
+        w = fn[pp] / fn[pp].mean()
+        order = np.argsort(w)
+        cmap = plt.get_cmap("inferno_r")
+        lc = Line3DCollection(seg[order], colors=cmap(np.clip(w[order] / 3, 0, 1)),
+                              linewidths=0.3 + 1.2 * np.clip(w[order], 0, 4))
+        ax.add_collection3d(lc)
+        sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(0, 3))
+        fig.colorbar(sm, ax=ax, shrink=0.5, label=r"$f_n/\langle f_n\rangle$")
+    lo, hi = snap.box_lo, snap.box_hi
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_zlim(lo[2], hi[2])
+    ax.set_box_aspect(hi - lo)
+    ax.set_axis_off()
+    ax.view_init(elev=12, azim=-60)
+    ax.set_title(label, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+_SAMPLE_STYLE = {"polyhedra": ("C3", "S1 polyhedra"), "spheres": ("C0", "S2 spheres")}
+
+
+def _shear(df):
+    return df[df["stage"] == "shear"]
+
+
+def plot_report_qp(summaries, published, path):
+    """q/p against eps_q for S1 and S2, one line per seed, with the
+    published plateau values dashed (seed fig. 3). summaries {sample: [df]}."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for s, frames in summaries.items():
+        col, lab = _SAMPLE_STYLE.get(s, ("k", s))
+        for k, df in enumerate(frames):
+            sh = _shear(df)
+            ax.plot(sh["eps_q"], sh["q_over_p"], "-", color=col, lw=1.2, alpha=0.8,
+                    label=lab if k == 0 else None)
+        if published.get(s) is not None:
+            ax.axhline(published[s], color=col, ls="--", lw=1, label=f"{lab}, published plateau")
+    ax.set_xlabel(r"$\varepsilon_q$")
+    ax.set_ylabel("q/p")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def _mean_over_seeds(frames, col):
+    grid = None
+    curves = []
+    for df in frames:
+        sh = _shear(df)
+        x, y = sh["eps_q"].to_numpy(float), sh[col].to_numpy(float)
+        if grid is None:
+            grid = x
+        ok = np.isfinite(x) & np.isfinite(y)
+        if ok.sum() >= 2:
+            o = np.argsort(x[ok])
+            curves.append(np.interp(grid, x[ok][o], y[ok][o], left=np.nan, right=np.nan))
+    if not curves:
+        return np.array([]), np.array([])
+    return grid, np.nanmean(curves, axis=0)
+
+
+def plot_report_anisotropies(summaries, path):
+    """a, a_l, a_n, a_t against eps_q, S1 and S2 side by side (mean over
+    seeds; seed figs. 6 and 7)."""
+    plt = _plt()
+    samples = [s for s in ("polyhedra", "spheres") if summaries.get(s)]
+    fig, axes = plt.subplots(1, max(len(samples), 1), figsize=(5.5 * max(len(samples), 1), 4),
+                             sharey=True, squeeze=False)
+    for ax, s in zip(axes[0], samples):
+        for k, col in zip(("a", "a_l", "a_n", "a_t"), ("C0", "C1", "C2", "C3")):
+            x, y = _mean_over_seeds(summaries[s], k)
+            ax.plot(x, y, "-o", ms=2.5, color=col, label=k)
+        ax.axhline(0, color="0.7", lw=0.5)
+        ax.set_title(_SAMPLE_STYLE[s][1] + f" ({len(summaries[s])} seed(s))", fontsize=10)
+        ax.set_xlabel(r"$\varepsilon_q$")
+        ax.legend(fontsize=8)
+    axes[0][0].set_ylabel("anisotropy")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_report_sff(summaries, path):
+    """q_axial/p against (2/5)(a+a_l+a_n+a_t), every shear snapshot of
+    every seed, with the line of equality (seed fig. 8)."""
+    plt = _plt()
+    fig, ax = plt.subplots(figsize=(4.8, 4.5))
+    top = 0.1
+    for s, frames in summaries.items():
+        col, lab = _SAMPLE_STYLE.get(s, ("k", s))
+        for k, df in enumerate(frames):
+            sh = _shear(df)
+            ax.plot(sh["sff"], sh["q_axial_over_p"], "o", ms=3, color=col, alpha=0.7,
+                    label=lab if k == 0 else None)
+            top = max(top, np.nanmax(np.r_[sh["sff"], sh["q_axial_over_p"], 0]))
+    ax.plot([0, top * 1.05], [0, top * 1.05], "k-", lw=0.8, label="equality")
+    ax.set_xlabel(r"$\frac{2}{5}(a+a_l+a_n+a_t)$")
+    ax.set_ylabel(r"$q/p$ (signed, axial)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_report_polar(polar, path):
+    """P_Omega(theta) and <l>(theta) with their harmonic fits, one row per
+    sample (seed figs. 5 and 7). polar {sample: (AngularFunctions, fits, caption)}."""
+    plt = _plt()
+    fig, axes = plt.subplots(len(polar), 2, subplot_kw={"projection": "polar"},
+                             figsize=(7, 3.4 * len(polar)), squeeze=False)
+    tt = np.linspace(0, 2 * np.pi, 361)
+    for row, (s, (af, fits, caption)) in zip(axes, polar.items()):
+        th = af.centers
+        full = np.concatenate([th, np.pi - th[::-1], np.pi + th, 2 * np.pi - th[::-1]])
+        curves = harmonic_curves(fits, tt)
+        for ax, key, data, title in ((row[0], "P", af.P, r"$P_\Omega(\theta)$"),
+                                     (row[1], "l", af.l_mean, r"$\langle\ell\rangle(\theta)$")):
+            ax.set_theta_zero_location("N")
+            m = np.concatenate([data, data[::-1], data, data[::-1]])
+            ax.plot(full, m, "o", ms=3, color="k")
+            ax.plot(tt, curves[key], "r-", lw=1)
+            ax.set_title(f"{_SAMPLE_STYLE.get(s, ('', s))[1]}: {title}\n{caption}", fontsize=8)
+            ax.tick_params(labelsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

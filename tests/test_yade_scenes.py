@@ -61,17 +61,6 @@ def test_per_contact_tangential_law():
 
 # ------------------------------------------------------------ tiny triaxial runs
 @pytest.fixture(scope="session")
-def shape_library(tmp_path_factory):
-    from shapes.generate import Recipe, generate_library
-    from shapes.library import write_library
-
-    path = tmp_path_factory.mktemp("shapes") / "lib.h5"
-    shapes, _ = generate_library(60, seed=5)
-    write_library(str(path), shapes, 5, Recipe().as_dict(), {})
-    return str(path)
-
-
-@pytest.fixture(scope="session")
 def tiny_runs(tmp_path_factory, shape_library):
     """Both samples on the tiny preset, run side by side (2 cores)."""
     base = tmp_path_factory.mktemp("tiny")

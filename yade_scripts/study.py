@@ -1,10 +1,17 @@
-"""Run S1 and S2 on a preset side by side and analyse both dumps:
-``python -m yade_scripts.study --preset default --out runs/study``.
+"""The study: run S1 and S2, analyse every dump, write the report.
 
-Each sample gets its own run folder (``OUT/polyhedra``, ``OUT/spheres``); a
-run whose dump is complete is not run again. YADE's progress lines are
-relayed with the sample name in front. A failed run is reported and the other
-one is still analysed; the exit code is non-zero when any run failed.
+    python -m yade_scripts.study --preset default --out runs/study [--ensemble N]
+
+One seed (default): each sample gets its run folder (``OUT/polyhedra``,
+``OUT/spheres``) and both run side by side (one core each), YADE's progress
+lines relayed with the sample name in front. ``--ensemble N`` (N >= 2):
+each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
+1..N, run by yade-batch on ``--jobs`` cores (spheres first, they are
+quick). Complete dumps are never run again, so a rerun only does what is
+missing. Every dump is analysed by ``postproc analyze`` into an analysis
+folder; ``OUT/manifest.json`` lists the runs and their status, and
+``postproc report`` writes ``OUT/report/``. A failed run is reported and
+everything else still builds; the exit code is non-zero when a run failed.
 """
 from __future__ import annotations
 
@@ -98,31 +105,93 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
     return codes
 
 
+def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES):
+    """Seeds 1..n of each sample through yade-batch; returns
+    {sample: [(label, dump path, status)]} (status 0 = complete)."""
+    from .batch import dump_of, read_table, run_batch
+
+    result = {}
+    for s in sorted(samples, key=lambda x: x != "spheres"):      # spheres first
+        folder = os.path.join(out, f"{s}-ensemble")
+        _set_aside_if_changed(folder, preset, s, overrides)
+        seeds = list(range(1, n + 1))
+        if not os.path.exists(os.path.join(folder, "triaxial.py")):
+            generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
+        else:                      # same parameters, maybe another n: rewrite the table only
+            with open(os.path.join(folder, "table.txt"), "w") as fh:
+                fh.write("description seed out\n")
+                fh.writelines(f"{s}-seed{k} {k} '{s}-seed{k}.h5'\n" for k in seeds)
+        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True))
+        result[s] = [(f"seed {r['seed']}", dump_of(folder, r), status[r["description"]])
+                     for _, r in read_table(folder)]
+    return result
+
+
+def analyse_and_report(out, runs):
+    """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
+    write OUT/manifest.json and the report; returns the list of failures."""
+    import json
+
+    from postproc.cli import main as postproc_main
+
+    manifest, failed = {}, []
+    for s, items in runs.items():
+        manifest[s] = []
+        for label, dump, status in items:
+            stem = os.path.splitext(dump)[0]
+            folder = os.path.dirname(dump)
+            analysis = os.path.join(folder, "analysis" if os.path.basename(stem) == "run"
+                                    else "analysis-" + os.path.basename(stem))
+            info = stem + ".info.json"
+            if status != 0:
+                why = f"run failed ({status}); see {folder}"
+                failed.append(f"{s} {label}")
+            elif not os.path.exists(dump):
+                why = "no dump"
+                failed.append(f"{s} {label}")
+            else:
+                print(f"[{s}] analysing {label}: {dump}", flush=True)
+                rc = postproc_main(["analyze", dump, "--out", analysis, "--no-progress"])
+                why = "ok" if rc in (0, 1) and os.path.exists(os.path.join(analysis, "summary.csv")) \
+                    else f"analysis failed (exit {rc})"
+                if why != "ok":
+                    failed.append(f"{s} {label}")
+            manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
+                                "analysis": os.path.relpath(analysis, out),
+                                "info": os.path.relpath(info, out), "status": why})
+    with open(os.path.join(out, "manifest.json"), "w") as fh:
+        json.dump(manifest, fh, indent=1)
+    postproc_main(["report", out])
+    return failed
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.study", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
     ap.add_argument("--out", required=True)
     ap.add_argument("--set", action="append", metavar="NAME=VALUE")
     ap.add_argument("--library")
+    ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: via yade-batch)")
+    ap.add_argument("--jobs", type=int, default=2, help="yade-batch jobs at a time (ensembles)")
     args = ap.parse_args(argv)
     try:
-        codes = run_samples(args.out, args.preset, parse_overrides(args.set), args.library)
+        if args.ensemble < 1:
+            raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
+        os.makedirs(args.out, exist_ok=True)
+        overrides = parse_overrides(args.set)
+        if args.ensemble == 1:
+            codes = run_samples(args.out, args.preset, overrides, args.library)
+            runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
+        else:
+            runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
-    from postproc.cli import main as postproc_main
-
-    for s, code in codes.items():
-        dump = os.path.join(args.out, s, "run.h5")
-        if os.path.exists(dump):
-            rc = postproc_main(["analyze", dump, "--out", os.path.join(args.out, s, "analysis")])
-            if rc:
-                print(f"study: analysis of {s} exited {rc}", file=sys.stderr)
-    failed = [s for s, c in codes.items() if c]
+    failed = analyse_and_report(args.out, runs)
     if failed:
-        print(f"study: failed runs: {', '.join(failed)}", file=sys.stderr)
+        print(f"study: failed: {', '.join(failed)} (the report lists them)", file=sys.stderr)
         return 1
-    print(f"study: results in {args.out}/<sample>/analysis/", file=sys.stderr)
+    print(f"study: report in {args.out}/report/report.md (and report.html)", file=sys.stderr)
     return 0
 
 

@@ -1,0 +1,310 @@
+"""The study report: ``postproc report STUDY_DIR`` → ``STUDY_DIR/report/``.
+
+Reads what the study wrote (no simulation here): for each sample the runs
+listed in ``STUDY_DIR/manifest.json`` (written by ``yade_scripts.study``:
+label, dump, analysis folder and status of every run), or, without a
+manifest, ``STUDY_DIR/<sample>/run.h5`` and its ``analysis/``. Writes
+
+* ``report.md`` and ``report.html`` (rendered from it, figures embedded by
+  relative links);
+* the paper's figures for S1 and S2 side by side (``fig_*.png``), the
+  contact-type figures of S1, one picture of each packing coloured by
+  normal force;
+* ``comparison.csv`` (our values beside the published ones) and
+  ``claims.csv`` (the six claims, their numbers and verdicts).
+
+A failed or missing run is listed in the report and left out of the
+numbers; the rest of the report still builds.
+"""
+from __future__ import annotations
+
+import datetime
+import json
+import os
+import shutil
+
+import numpy as np
+
+from .claims import evaluate
+from .statistics import plateau_estimate, steady_indices
+
+SAMPLES = ("polyhedra", "spheres")
+LABEL = {"polyhedra": "S1 polyhedra", "spheres": "S2 spheres"}
+HERE = os.path.dirname(os.path.abspath(__file__))
+REFERENCE = os.path.join(os.path.dirname(HERE), "reference_data", "paper_values.json")
+
+
+def discover(study):
+    """{sample: [run dict]} with keys label, dump, analysis, status
+    ("ok" or the reason it failed), info (run.info.json path or None)."""
+    path = os.path.join(study, "manifest.json")
+    if os.path.exists(path):
+        with open(path) as fh:
+            runs = json.load(fh)
+        for sample in runs:
+            for r in runs[sample]:
+                for k in ("dump", "analysis", "info"):
+                    if r.get(k) and not os.path.isabs(r[k]):
+                        r[k] = os.path.join(study, r[k])
+        return runs
+    runs = {}
+    for s in SAMPLES:
+        folder = os.path.join(study, s)
+        if not os.path.isdir(folder):
+            continue
+        ok = os.path.exists(os.path.join(folder, "analysis", "summary.csv"))
+        runs[s] = [{"label": "seed 1", "dump": os.path.join(folder, "run.h5"),
+                    "analysis": os.path.join(folder, "analysis"),
+                    "info": os.path.join(folder, "run.info.json"),
+                    "status": "ok" if ok else "no analysis (run failed or unfinished)"}]
+    return runs
+
+
+def _summaries(runs):
+    import pandas as pd
+
+    out = {}
+    for s, rs in runs.items():
+        frames = []
+        for r in rs:
+            p = os.path.join(r["analysis"], "summary.csv") if r.get("analysis") else None
+            if r.get("status") == "ok" and p and os.path.exists(p):
+                frames.append(pd.read_csv(p, dtype={"snapshot": str}).copy())
+        out[s] = frames
+    return out
+
+
+def _est(frames, col):
+    series = [df[col].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])]
+              for df in frames if col in df]
+    return plateau_estimate(series)
+
+
+def comparison_table(summaries, reference):
+    """Rows (quantity, sample, ours (Estimate), published value or None)."""
+    res = reference["results"]
+    rows = []
+
+    def add(name, sample, col, pub, combine=None):
+        frames = summaries.get(sample, [])
+        if combine:
+            frames = [df.assign(**{col: combine(df)}) for df in frames]
+        rows.append((name, sample, _est(frames, col) if frames else None, pub))
+
+    for s in SAMPLES:
+        add("q/p plateau", s, "q_over_p", res["q_over_p_plateau"].get(s))
+        add("a + a_l", s, "a_al", res["a_plus_a_l"].get(s), lambda d: d["a"] + d["a_l"])
+        add("a_n + a_t", s, "an_at", res["a_n_plus_a_t"].get(s), lambda d: d["a_n"] + d["a_t"])
+        for k in ("a", "a_l", "a_n", "a_t"):
+            add(k, s, k, res.get(k, {}).get(s))
+        add("(2/5)(a+a_l+a_n+a_t)", s, "sff", res["sff_vs_q_over_p"].get(s, [None])[0])
+        add("z (a pair counts once)", s, "z", res["coordination_z"].get(s))
+        add("fraction of forces below the mean", s, "frac_below_mean",
+            res["fraction_forces_below_mean"].get(s))
+    types = res["contact_types_simple_double_triple"]["polyhedra"]
+    ratios = res["mean_normal_force_by_type_relative"]["polyhedra"]
+    for g, pub, rpub in zip(("simple", "double", "triple"), types,
+                            (ratios["simple"], ratios["double"], ratios["triple"])):
+        add(f"proportion of {g} contacts", "polyhedra", f"ct_frac_{g}", pub)
+        add(f"mean f_n of {g} contacts / mean", "polyhedra", f"ct_fratio_{g}", rpub)
+    return rows
+
+
+def _cost_rows(runs):
+    rows = []
+    for s, rs in runs.items():
+        for r in rs:
+            info = r.get("info")
+            if info and os.path.exists(info):
+                with open(info) as fh:
+                    d = json.load(fh)
+                eng = sum(d.get("engine_seconds", {}).values())
+                cs = d.get("contact_steps") or 0
+                rows.append((LABEL.get(s, s), r["label"], d.get("steps"), d.get("wall_seconds"),
+                             1e6 * eng / cs if cs else np.nan, d.get("solid_fraction_isotropic")))
+    return rows
+
+
+def _polar_data(run, target=0.3):
+    """(af, fits, caption) at the snapshot nearest eps_q = target (or the
+    last one) of a run's dump."""
+    import pandas as pd
+
+    from .analysis import analyze_snapshot
+    from .schema import DumpReader
+
+    df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
+    eq = df["eps_q"].to_numpy(float)
+    k = int(np.nanargmin(np.abs(eq - target))) if np.isfinite(eq).any() else len(df) - 1
+    if np.nanmax(eq) < target:
+        k = len(df) - 1
+    name = str(df["snapshot"].iloc[k]).zfill(6)
+    with DumpReader(run["dump"]) as reader:
+        i = reader.names.index(name) if name in reader.names else len(reader) - 1
+        snap = reader.read(i)
+    res = analyze_snapshot(snap, errors=False)
+    return res.angular, res.fits, f"snapshot {snap.name}, eps_q = {eq[k]:.3f}"
+
+
+def _packing_picture(run, title, path):
+    from . import plots
+    from .contactset import lookup
+    from .contacttypes import classify_snapshot, shape_tables
+    from .schema import DumpReader
+
+    with DumpReader(run["dump"]) as reader:
+        shapes = reader.shapes()
+        snap = reader.read(len(reader) - 1)
+    if shapes is not None and len(shapes[0]):
+        labels = classify_snapshot(snap, shape_tables(*shapes))
+    else:
+        both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
+        labels = np.where(both, "sphere", "wall")
+    plots.plot_packing(snap, shapes, labels, path, f"{title}, snapshot {snap.name}")
+
+
+def build_report(study, out=None, reference=REFERENCE):
+    """Write the report of the study folder ``study``; returns the path of
+    report.md. Raises nothing for failed runs: they are listed."""
+    import pandas as pd
+
+    from . import plots
+
+    out = out or os.path.join(study, "report")
+    os.makedirs(out, exist_ok=True)
+    with open(reference) as fh:
+        ref = json.load(fh)
+    runs = discover(study)
+    summaries = _summaries(runs)
+    problems = []
+    for s in SAMPLES:
+        for r in runs.get(s, []):
+            if r.get("status") != "ok":
+                problems.append(f"{LABEL[s]} {r['label']}: {r['status']}")
+        if not summaries.get(s):
+            problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
+    figures = []
+
+    def figure(name, fn, *args, caption=""):
+        try:
+            fn(*args, os.path.join(out, name))
+            figures.append((name, caption))
+        except Exception as exc:       # a figure that cannot be drawn is reported, not fatal
+            problems.append(f"figure {name} not drawn: {exc.__class__.__name__}: {exc}")
+
+    pub = ref["results"]
+    figure("fig_qp.png", plots.plot_report_qp, summaries,
+           {s: pub["q_over_p_plateau"].get(s) for s in SAMPLES},
+           caption="q/p against εq (each seed; dashed: published plateau), seed fig. 3")
+    figure("fig_anisotropies.png", plots.plot_report_anisotropies, summaries,
+           caption="a, a_l, a_n, a_t against εq (mean over seeds), seed figs. 6–7")
+    figure("fig_sff.png", plots.plot_report_sff, summaries,
+           caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
+    polar = {}
+    for s in SAMPLES:
+        ok = [r for r in runs.get(s, []) if r.get("status") == "ok"]
+        if ok:
+            try:
+                polar[s] = _polar_data(ok[0])
+            except Exception as exc:
+                problems.append(f"polar data of {LABEL[s]}: {exc.__class__.__name__}: {exc}")
+    if polar:
+        figure("fig_polar.png", plots.plot_report_polar, polar,
+               caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
+                       "snapshot), first seed, seed figs. 5 and 7")
+    s1 = [r for r in runs.get("polyhedra", []) if r.get("status") == "ok"]
+    if s1:
+        for name, cap in (("contact_types.png", "contact types of S1 against εq: proportions "
+                           "(bands: tolerance halved and doubled), force ratios, signed fabric, "
+                           "q/p shares (first seed)"),
+                          ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
+                          ("networks.png", "strong and weak networks of S1")):
+            src = os.path.join(s1[0]["analysis"], name)
+            if os.path.exists(src):
+                shutil.copyfile(src, os.path.join(out, "s1_" + name))
+                figures.append(("s1_" + name, cap))
+    for s in SAMPLES:
+        ok = [r for r in runs.get(s, []) if r.get("status") == "ok"]
+        if ok:
+            figure(f"packing_{s}.png", _packing_picture, ok[0], LABEL[s],
+                   caption=f"{LABEL[s]}, last snapshot: contacts between centres, coloured and "
+                           "thickened by f_n/⟨f_n⟩")
+
+    rows = comparison_table(summaries, ref)
+    comp = pd.DataFrame([{"quantity": q, "sample": s,
+                          "ours": e.mean if e else np.nan,
+                          "ci_low": e.ci()[0] if e else np.nan, "ci_high": e.ci()[1] if e else np.nan,
+                          "interval": e.method if e else "no run", "published": p}
+                         for q, s, e, p in rows])
+    comp.to_csv(os.path.join(out, "comparison.csv"), index=False)
+    claims = evaluate(summaries)
+    pd.DataFrame(claims).to_csv(os.path.join(out, "claims.csv"), index=False)
+
+    md = _markdown(study, runs, summaries, ref, rows, claims, figures, problems)
+    with open(os.path.join(out, "report.md"), "w") as fh:
+        fh.write(md)
+    _html(md, os.path.join(out, "report.html"))
+    return os.path.join(out, "report.md")
+
+
+def _fmt(x, digits=2):
+    return "–" if x is None or not np.isfinite(x) else f"{x:.{digits}f}"
+
+
+def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
+    n = {s: len(summaries.get(s, [])) for s in SAMPLES}
+    lines = [f"# Study report: {os.path.basename(os.path.abspath(study))}", "",
+             f"Generated {datetime.datetime.now().isoformat(timespec='seconds')} from `{study}`. "
+             f"Published values: {ref['citation']}", ""]
+    lines += ["## Runs", "", "| sample | run | status | preset / parameters |", "|---|---|---|---|"]
+    for s in SAMPLES:
+        for r in runs.get(s, []):
+            params = ""
+            pj = os.path.join(os.path.dirname(r.get("dump") or ""), "params.json")
+            if os.path.exists(pj):
+                with open(pj) as fh:
+                    p = json.load(fh)
+                params = (f"{p.get('preset')}: N = {p.get('n_particles')}, κ = {p.get('kappa')}, "
+                          f"I = {p.get('inertial_number')}, ε1 final = {p.get('final_strain')}")
+            lines.append(f"| {LABEL[s]} | {r['label']} | {r['status']} | {params} |")
+    cost = _cost_rows(runs)
+    if cost:
+        lines += ["", "| sample | run | steps | wall time (s) | µs per contact-step | solid fraction "
+                  "after compression |", "|---|---|---|---|---|---|"]
+        lines += [f"| {a} | {b} | {c} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
+                  for a, b, c, d, e, f in cost]
+    if problems:
+        lines += ["", "**Problems** (the rest of the report is built without them):", ""]
+        lines += [f"* {p}" for p in problems]
+    basis = ("over seeds (Student's t)" if min(n.values()) >= 2 else
+             "batch means of one seed's steady snapshots (4 batches, Student's t): an indication, "
+             "not an ensemble interval; run `make study ENSEMBLE=n` for intervals over seeds")
+    lines += ["", "## Our values beside the published ones", "",
+              f"Steady shear: snapshots with εq ≥ half the final εq. Intervals are 95 % {basis}.", "",
+              "| quantity | sample | ours [95 % interval] | published |", "|---|---|---|---|"]
+    for q, s, e, p in rows:
+        lines.append(f"| {q} | {LABEL[s]} | {e.text() if e else '–'} | {_fmt(p) if p is not None else '–'} |")
+    lines += ["", "## The six claims", "",
+              "Thresholds and rules: `postproc/claims.py` (reproduced: every condition holds with its "
+              "interval; not reproduced: one is contradicted with its interval; else inconclusive).", "",
+              "| # | claim | verdict | numbers |", "|---|---|---|---|"]
+    for c in claims:
+        numbers = c["numbers"].replace("|", "\\|")
+        lines.append(f"| {c['id']} | {c['claim']} | **{c['verdict']}** | {numbers} "
+                     f"(intervals: {c['basis']}) |")
+    lines += ["", "## Figures", ""]
+    for name, cap in figures:
+        lines += [f"![{cap}]({name})", "", f"*{cap}*", ""]
+    return "\n".join(lines) + "\n"
+
+
+def _html(md, path):
+    import markdown
+
+    body = markdown.markdown(md, extensions=["tables"])
+    style = ("body{font-family:sans-serif;max-width:1100px;margin:2em auto;line-height:1.4}"
+             "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:3px 6px;"
+             "font-size:90%}img{max-width:100%}")
+    with open(path, "w") as fh:
+        fh.write(f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>Study report</title>"
+                 f"<style>{style}</style></head><body>{body}</body></html>\n")

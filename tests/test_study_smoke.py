@@ -1,0 +1,68 @@
+"""The whole study pipeline on the tiny preset, two seeds per sample through
+yade-batch: runs, analyses, report, figures and the claims table."""
+import json
+import math
+import os
+import shutil
+
+import pandas as pd
+import pytest
+
+YADE = shutil.which("yade")
+pytestmark = [pytest.mark.skipif(YADE is None or shutil.which("yade-batch") is None,
+                                 reason="Debian yade is not installed")]
+
+FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
+           "s1_contact_types.png", "s1_force_pdf.png", "s1_networks.png",
+           "packing_polyhedra.png", "packing_spheres.png")
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory, shape_library):
+    from yade_scripts.study import main
+
+    out = tmp_path_factory.mktemp("study")
+    rc = main(["--preset", "tiny", "--out", str(out), "--ensemble", "2", "--library", shape_library])
+    return out, rc
+
+
+def test_report_figures_and_claims_are_produced(study, capsys):
+    out, rc = study
+    assert rc == 0
+    rep = out / "report"
+    md = (rep / "report.md").read_text()
+    assert (rep / "report.html").stat().st_size > 0
+    for name in FIGURES:
+        assert (rep / name).stat().st_size > 1000, name
+        assert f"]({name})" in md, name
+    claims = pd.read_csv(rep / "claims.csv")
+    assert claims["id"].tolist() == [1, 2, 3, 4, 5, 6]
+    assert set(claims["verdict"]) <= {"reproduced", "not reproduced", "inconclusive"}
+    assert (claims["basis"] == "seeds").all()
+    comp = pd.read_csv(rep / "comparison.csv")
+    assert comp["ours"].map(math.isfinite).all() and (comp["interval"] == "seeds").all()
+    assert "Intervals are 95 % over seeds" in md
+    manifest = json.loads((out / "manifest.json").read_text())
+    assert [r["status"] for s in manifest.values() for r in s] == ["ok"] * 4
+
+
+def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
+    from postproc.report import build_report
+    from yade_scripts.study import main
+
+    out, _ = study
+    mtime = os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5")
+    assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "2"]) == 0
+    assert "polyhedra-seed1 already complete, not run again" in capsys.readouterr().out
+    assert os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5") == mtime
+    # a failed run: listed, the rest still builds (the other seed gives the numbers)
+    manifest = json.loads((out / "manifest.json").read_text())
+    manifest["polyhedra"][1]["status"] = "run failed (3); see polyhedra-ensemble"
+    (out / "manifest.json").write_text(json.dumps(manifest))
+    md = open(build_report(str(out), str(out / "report-failed"))).read()
+    assert "S1 polyhedra seed 2: run failed (3)" in md
+    comp = pd.read_csv(out / "report-failed" / "comparison.csv")
+    # one seed left: no interval over seeds (tiny runs have 2 steady snapshots: "one value")
+    assert comp.loc[comp["sample"] == "polyhedra", "interval"].isin(["one value", "batch means (one seed)"]).all()
+    assert (comp.loc[comp["sample"] == "spheres", "interval"] == "seeds").all()
+    assert (out / "report-failed" / "fig_qp.png").exists()

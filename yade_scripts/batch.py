@@ -1,0 +1,132 @@
+"""Run the lines of a yade-batch table in a generated run folder, skipping
+the lines whose dump is already complete (seed ensembles, sweeps).
+
+    run_batch(folder, jobs=2, tag="polyhedra")
+
+The table is the folder's ``table.txt`` (written by
+:func:`yade_scripts.generate.generate`): a header line, then one line per
+run with a ``description`` column and an ``out`` column naming its dump.
+yade-batch runs every job single-threaded (polyhedra crash with several
+threads per job), ``jobs`` at a time; its progress lines are relayed with
+``tag`` in front, and each job's own log is ``triaxial.py.<description>.log``.
+"""
+from __future__ import annotations
+
+import os
+import shlex
+import shutil
+import subprocess
+import threading
+
+from .presets import ConfigError
+
+PROGRESS_SECONDS = 20.0
+
+
+def read_table(folder):
+    """[(file line number, {column: raw value})] of the folder's table.txt."""
+    path = os.path.join(folder, "table.txt")
+    with open(path) as fh:
+        lines = fh.read().splitlines()
+    if not lines:
+        raise ConfigError(f"{path} is empty")
+    head = lines[0].split()
+    rows = []
+    for k, line in enumerate(lines[1:], start=2):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        vals = shlex.split(line, posix=False)
+        if len(vals) != len(head):
+            raise ConfigError(f"{path} line {k}: {len(vals)} values for {len(head)} columns")
+        rows.append((k, dict(zip(head, vals))))
+    return rows
+
+
+def dump_of(folder, row):
+    """Path of the dump a table row writes (its ``out`` column, unquoted)."""
+    return os.path.join(folder, row.get("out", "'run.h5'").strip("'\""))
+
+
+def complete(dump):
+    """True when ``dump`` is a finished, packed dump (attribute complete=1)."""
+    if not os.path.exists(dump):
+        return False
+    import h5py
+
+    try:
+        with h5py.File(dump, "r") as f:
+            return bool(f.attrs.get("complete", 0))
+    except OSError:
+        return False
+
+
+def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
+    """Relay the newest progress line of each job's log every ``every`` s."""
+    last = {}
+    while not stop.wait(every):
+        for d in descriptions:
+            path = os.path.join(folder, f"triaxial.py.{d}.log")
+            try:
+                with open(path, "rb") as fh:
+                    fh.seek(max(0, os.path.getsize(path) - 4096))
+                    tail = fh.read().decode("utf-8", "replace").splitlines()
+            except OSError:
+                continue
+            lines = [x for x in tail if x.startswith("triaxial.py:")]
+            if lines and lines[-1] != last.get(d):
+                last[d] = lines[-1]
+                echo(f"[{tag}] {d}: {lines[-1][len('triaxial.py: '):].strip()}")
+
+
+def run_batch(folder, jobs=2, tag="batch", echo=print):
+    """Run the unfinished lines of ``folder/table.txt`` with yade-batch.
+
+    Returns {description: exit status} for every line of the table (0 for
+    lines already complete, None when yade-batch did not report a line).
+    """
+    exe = shutil.which("yade-batch")
+    if exe is None:
+        raise ConfigError("yade-batch is not installed (it comes with Debian's yade)")
+    rows = read_table(folder)
+    todo = [(k, r) for k, r in rows if not complete(dump_of(folder, r))]
+    status = {r["description"]: 0 for _, r in rows}
+    for k, r in rows:
+        if (k, r) not in todo:
+            echo(f"[{tag}] {r['description']} already complete, not run again")
+    if not todo:
+        return status
+    for _, r in todo:              # an unfinished earlier attempt starts afresh
+        stem = dump_of(folder, r)[:-3]
+        for p in (stem + ".h5", stem + ".h5.parts", stem + ".info.json", stem + ".log.csv"):
+            shutil.rmtree(p, ignore_errors=True) if os.path.isdir(p) else (os.path.exists(p) and os.remove(p))
+        status[r["description"]] = None
+    lines = ",".join(str(k) for k, _ in todo)
+    cmd = [exe, "-j", str(jobs), "--job-threads", "1", "-l", lines, "--plot-update", "0",
+           "table.txt", "triaxial.py"]
+    echo(f"[{tag}] yade-batch: {len(todo)} run(s), {jobs} at a time: "
+         + ", ".join(r["description"] for _, r in todo))
+    proc = subprocess.Popen(cmd, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            stdin=subprocess.DEVNULL, text=True, bufsize=1)
+    stop = threading.Event()
+    watcher = threading.Thread(target=_watch_logs, daemon=True,
+                               args=(folder, [r["description"] for _, r in todo], tag, echo, stop))
+    watcher.start()
+    with open(os.path.join(folder, "batch.out"), "a") as log:
+        for line in proc.stdout:
+            log.write(line)
+            log.flush()
+            s = line.strip()
+            if s.startswith("#") and ("started" in s or "done" in s):
+                echo(f"[{tag}] {s}")
+                if "done" in s and "exit status" in s:
+                    desc = s[s.index("(") + 1:s.index(")")]
+                    code = s.split("exit status")[1].split(")")[0].strip()
+                    status[desc] = int(code) if code.lstrip("-").isdigit() else code
+    proc.wait()
+    stop.set()
+    watcher.join()
+    for _, r in todo:              # a job that ran but left no complete dump failed
+        d = r["description"]
+        if status[d] == 0 and not complete(dump_of(folder, r)):
+            status[d] = "no complete dump"
+    return status
