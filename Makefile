@@ -13,7 +13,7 @@ PRESET ?= default
 ENSEMBLE ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 
-.PHONY: test study system venv bench clean-venv shapes
+.PHONY: test study system venv bench clean-venv shapes front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3) and h5py for that Python.
 system:
@@ -48,6 +48,15 @@ shapes: $(SHAPES_LIB)
 # not run again.
 study: system venv $(SHAPES_LIB)
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE)
+
+# Speed against error (issue 7): a yade-batch sweep over kappa, I, N and shape
+# detail for S1 and S2 (FRONT_PLAN=quick, about 40 min on 2 cores), then the
+# analysis estimators on synthetic sets. Finished runs are not run again.
+FRONT ?= runs/front
+FRONT_PLAN ?= quick
+front: system venv $(SHAPES_LIB)
+	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
+	$(PY) benchmarks/front_analysis.py --out $(FRONT)-analysis
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

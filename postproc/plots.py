@@ -344,3 +344,59 @@ def plot_report_polar(polar, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def plot_front(runs, path):
+    """Wall time against error, one panel per sample: the largest of the
+    plateau errors of q/p, a, a_n, a_t against the reference run (big
+    markers, Pareto points filled) and each error (small markers), with the
+    reference run's own one-seed noise (2 batch-means s.e. of q/p) shaded."""
+    plt = _plt()
+    samples = list(dict.fromkeys(runs["sample"]))
+    fig, axes = plt.subplots(1, len(samples), figsize=(6 * len(samples), 4.5), squeeze=False)
+    marks = {"err_q_over_p": ("s", "q/p"), "err_a": ("^", "a"), "err_a_n": ("v", "a_n"),
+             "err_a_t": ("D", "a_t")}
+    for ax, s in zip(axes[0], samples):
+        g = runs[runs["sample"] == s]
+        x = g["wall_seconds"].to_numpy(float)
+        for col, (m, lab) in marks.items():
+            ax.plot(x, g[col], m, ms=4, alpha=0.5, label=lab)
+        ax.scatter(x, g["err_max"], s=60, facecolors=np.where(g["pareto"], "k", "none"),
+                   edgecolors="k", zorder=3, label="largest (filled: Pareto)")
+        for xi, yi, name in zip(x, g["err_max"], g["run"]):
+            ax.annotate(name, (xi, yi), fontsize=6, xytext=(3, 3), textcoords="offset points")
+        ref = g[g["ref"]]
+        if len(ref) and np.isfinite(ref["q_over_p_se"].iloc[0]):
+            ax.axhspan(0, 2 * ref["q_over_p_se"].iloc[0], color="0.85", zorder=0,
+                       label="2 s.e. of the reference q/p (one seed)")
+        ax.set_xscale("log")
+        ax.set_xlabel("wall time of the run (s)")
+        ax.set_ylabel("|plateau - reference plateau|")
+        ax.set_title(s, fontsize=10)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_analysis_front(table, path):
+    """Analysis estimators: RMS error (largest over a, a_l, a_n, a_t)
+    against contacts per set, and time per set against RMS error."""
+    plt = _plt()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for name, g in table.groupby("estimator", sort=False):
+        axes[0].loglog(g["n"], g["rms_max"], "-o", ms=3, label=name)
+        axes[1].loglog(g["seconds"], g["rms_max"], "-o", ms=3, label=name)
+    n = np.array(sorted(set(table["n"])))
+    t = table[table["estimator"] == "tensors"].sort_values("n")
+    if len(t):
+        axes[0].loglog(n, t["rms_max"].iloc[0] * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto n^{-1/2}$")
+    axes[0].set_xlabel("contacts per set")
+    axes[0].set_ylabel("RMS error (largest of a, a_l, a_n, a_t)")
+    axes[1].set_xlabel("time per set (s)")
+    axes[1].set_ylabel("RMS error")
+    for ax in axes:
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

@@ -1,0 +1,146 @@
+"""Speed against error: a yade-batch sweep over stiffness, inertial number,
+particle count and shape detail, for S1 and S2.
+
+    python -m yade_scripts.front --plan quick --out runs/front [--jobs 2]
+
+Each sample gets one run folder ``OUT/<sample>`` (one scene, one table):
+every table line overrides ``kappa``, ``inertial_number``, ``n_particles``
+and ``library`` (the shape detail: ``shapes.h5`` is the standard library,
+8-37 vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices,
+mean 10, from the same generator). Complete dumps are not run again. Each
+dump is analysed (``postproc analyze``) and the front is written by
+:func:`postproc.front.write_front` into ``OUT/front.csv`` and
+``OUT/front.png``: wall time, contact-steps and the error of the q/p
+plateau, a, a_n and a_t against the sweep's reference run, the stiffest
+and slowest one (largest kappa, smallest I, largest N, standard shapes).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+
+from .generate import DEFAULT_LIBRARY, generate, parse_overrides
+from .presets import ConfigError, coerce
+
+# plan: {sample: [(description, overrides)]}; the first line is the reference
+PLANS = {
+    # the smoke test: two points per sample on the tiny preset
+    "smoke": {"preset": "tiny", "common": {},
+              "polyhedra": [("ref", {"kappa": 150.0, "inertial_number": 1e-2}),
+                            ("low", {"kappa": 150.0, "inertial_number": 1e-2,
+                                     "library": "shapes-low.h5"})],
+              "spheres": [("ref", {"kappa": 300.0, "inertial_number": 5e-3}),
+                          ("fast", {"kappa": 150.0, "inertial_number": 1e-2})]},
+    # the front of the README: small samples sheared to eps_1 = 0.08
+    "quick": {"preset": "default", "common": {"final_strain": 0.08, "dump_strain": 0.005},
+              "polyhedra": [
+                  ("ref-k1000-I1e-2", {"kappa": 1000.0, "inertial_number": 1e-2, "n_particles": 24}),
+                  ("k300-I1e-2", {"kappa": 300.0, "inertial_number": 1e-2, "n_particles": 24}),
+                  ("k300-I2e-2", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 24}),
+                  ("k150-I2e-2", {"kappa": 150.0, "inertial_number": 2e-2, "n_particles": 24}),
+                  ("k300-I2e-2-N12", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 12}),
+                  ("k300-I2e-2-low", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 24,
+                                      "library": "shapes-low.h5"})],
+              "spheres": [
+                  ("ref-k3000-I1e-3", {"kappa": 3000.0, "inertial_number": 1e-3, "n_particles": 1000}),
+                  ("k1000-I5e-3", {"kappa": 1000.0, "inertial_number": 5e-3, "n_particles": 1000}),
+                  ("k300-I1e-2", {"kappa": 300.0, "inertial_number": 1e-2, "n_particles": 1000}),
+                  ("k300-I2e-2", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 1000}),
+                  ("k150-I2e-2", {"kappa": 150.0, "inertial_number": 2e-2, "n_particles": 1000}),
+                  ("k300-I2e-2-N250", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 250}),
+                  ("k300-I2e-2-N4000", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 4000})]},
+}
+LOW_DETAIL = {"v_min": 8, "v_max": 12}
+
+
+def low_detail_library(path, n=200, seed=0):
+    """A library of grains with 8-12 vertices (mean 10), else the standard
+    recipe: the "shape detail" axis of the front."""
+    from shapes.generate import Recipe, generate_library
+    from shapes.library import write_library
+
+    recipe = Recipe(v_min=LOW_DETAIL["v_min"], v_max=LOW_DETAIL["v_max"])
+    shapes, _ = generate_library(n, seed=seed, recipe=recipe)
+    write_library(path, shapes, seed, recipe.as_dict(), {})
+
+
+def write_table(folder, sample, lines):
+    """The yade-batch table: one line per point, its overrides as columns."""
+    keys = sorted({k for _, o in lines for k in o} | {"library"})
+    with open(os.path.join(folder, "table.txt"), "w") as fh:
+        fh.write(" ".join(["description"] + keys + ["out"]) + "\n")
+        for desc, o in lines:
+            vals = []
+            for k in keys:
+                v = o.get(k, "shapes.h5" if k == "library" else None)
+                if v is None:
+                    raise ConfigError(f"front line {desc}: no value for {k}")
+                if k != "library":
+                    v = coerce(k, v)
+                vals.append(repr(v))
+            fh.write(" ".join([f"{sample}-{desc}"] + vals + [repr(f"{sample}-{desc}.h5")]) + "\n")
+
+
+def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra")):
+    """Generate, run (yade-batch), analyse; returns {sample: {description: status}}."""
+    from postproc.cli import main as postproc_main
+
+    from .batch import dump_of, read_table, run_batch
+
+    if plan not in PLANS:
+        raise ConfigError(f"unknown plan {plan!r}; choose from {sorted(PLANS)}")
+    spec = PLANS[plan]
+    status = {}
+    for s in samples:
+        folder = os.path.join(out, s)
+        if not os.path.exists(os.path.join(folder, "triaxial.py")):
+            generate(folder, spec["preset"], s, spec["common"], library=library or DEFAULT_LIBRARY)
+        if s == "polyhedra" and any(o.get("library") == "shapes-low.h5" for _, o in spec[s]):
+            low = os.path.join(folder, "shapes-low.h5")
+            if not os.path.exists(low):
+                low_detail_library(low)
+        write_table(folder, s, spec[s])
+        st = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True))
+        status[s] = {}
+        for _, r in read_table(folder):
+            dump = dump_of(folder, r)
+            d = r["description"]
+            if st.get(d) == 0 and os.path.exists(dump):
+                ana = os.path.join(folder, "analysis-" + d)
+                if not os.path.exists(os.path.join(ana, "summary.csv")):
+                    postproc_main(["analyze", dump, "--out", ana, "--no-progress", "--no-errors"])
+            status[s][d] = st.get(d)
+    with open(os.path.join(out, "front-plan.json"), "w") as fh:
+        json.dump({"plan": plan, **{k: v for k, v in spec.items()}}, fh, indent=1)
+    return status
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.front", description=__doc__.splitlines()[0])
+    ap.add_argument("--plan", default="quick", help=f"one of {sorted(PLANS)}")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--library")
+    ap.add_argument("--samples", nargs="+", default=["spheres", "polyhedra"])
+    args = ap.parse_args(argv)
+    try:
+        status = run_front(args.out, args.plan, args.jobs, args.library, args.samples)
+    except ConfigError as exc:
+        print(f"front: error: {exc}", file=sys.stderr)
+        return 2
+    from postproc.front import write_front
+
+    table = write_front(args.out)
+    print(table.to_string(index=False), flush=True)
+    failed = [f"{s} {d}" for s, st in status.items() for d, c in st.items() if c != 0]
+    if failed:
+        print(f"front: failed runs: {', '.join(failed)}", file=sys.stderr)
+        return 1
+    print(f"front: {args.out}/front.csv and front.png", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
