@@ -29,17 +29,11 @@ SAMPLES = ("polyhedra", "spheres")
 
 
 def finished(folder):
-    """True when the folder holds a complete dump."""
-    path = os.path.join(folder, "run.h5")
-    if not os.path.exists(os.path.join(folder, "run.info.json")) or not os.path.exists(path):
-        return False
-    import h5py
+    """True when the folder holds a complete dump and its run.info.json."""
+    from .batch import complete
 
-    try:
-        with h5py.File(path, "r") as f:
-            return bool(f.attrs.get("complete", 0))
-    except OSError:
-        return False
+    return os.path.exists(os.path.join(folder, "run.info.json")) and \
+        complete(os.path.join(folder, "run.h5"))
 
 
 def _set_aside_if_changed(folder, preset, sample, overrides):
