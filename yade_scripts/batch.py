@@ -72,7 +72,7 @@ def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
                     tail = fh.read().decode("utf-8", "replace").splitlines()
             except OSError:
                 continue
-            lines = [x for x in tail if x.startswith("triaxial.py:")]
+            lines = [x for x in tail if x.startswith("triaxial.py: ")]
             if lines and lines[-1] != last.get(d):
                 last[d] = lines[-1]
                 echo(f"[{tag}] {d}: {lines[-1][len('triaxial.py: '):].strip()}")

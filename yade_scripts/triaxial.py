@@ -340,12 +340,14 @@ def control():
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
         if state["stage"] == "shear":
             left = (final_strain - state["eps_1"]) * L[2] / state["v_top"] / O.dt / max(sps, 1e-9)
-            where = f"eps_1 {state['eps_1']:.4f}, q/p (walls) {(s1 - s3) / (s1 + 2 * s3):.3f}"
+            qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 > 0 else float("nan")
+            where = f"eps_1 {state['eps_1']:.4f}, q/p (walls) {qp:.3f}"
+            eta = f"about {left / 60:.1f} min left"
         else:
-            left = float("nan")
             where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
+            eta = "time left known once shear starts"
         print(f"triaxial.py: step {O.iter} {state['stage']}: {where}, {len(O.interactions)} interactions, "
-              f"{sps:.0f} steps/s, about {left / 60:.1f} min left", flush=True)
+              f"{sps:.0f} steps/s, {eta}", flush=True)
 
 
 # ------------------------------------------------------------ run
