@@ -50,7 +50,7 @@ study: system venv $(SHAPES_LIB)
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE)
 
 # Speed against error (issue 7): a yade-batch sweep over kappa, I, N and shape
-# detail for S1 and S2 (FRONT_PLAN=quick, about 40 min on 2 cores), then the
+# detail for S1 and S2 (FRONT_PLAN=quick, about 27 min on 2 cores), then the
 # analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front
 FRONT_PLAN ?= quick
