@@ -83,6 +83,20 @@ def write_table(folder, sample, lines):
             fh.write(" ".join([f"{sample}-{desc}"] + vals + [repr(f"{sample}-{desc}.h5")]) + "\n")
 
 
+def _stale(dump, overrides):
+    """True when a finished dump's parameters differ from the line's overrides
+    (a plan edited without renaming its line): it is never silently reused."""
+    from postproc.schema import DumpReader
+
+    with DumpReader(dump) as r:
+        par = r.parameters
+    for k, v in overrides.items():
+        v = v if k == "library" else coerce(k, v)
+        if par.get(k) != v:
+            return True
+    return False
+
+
 def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra")):
     """Generate, run (yade-batch), analyse; returns {sample: {description: status}}."""
     from postproc.cli import main as postproc_main
@@ -104,9 +118,14 @@ def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra"))
         write_table(folder, s, spec[s])
         st = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True))
         status[s] = {}
+        overrides = {f"{s}-{desc}": o for desc, o in spec[s]}
         for _, r in read_table(folder):
             dump = dump_of(folder, r)
             d = r["description"]
+            if st.get(d) == 0 and os.path.exists(dump) and _stale(dump, overrides.get(d, {})):
+                print(f"[{s}] {d}: {dump} was made with other parameters; delete it to rerun",
+                      flush=True)
+                st[d] = "stale dump"
             if st.get(d) == 0 and os.path.exists(dump):
                 ana = os.path.join(folder, "analysis-" + d)
                 if not os.path.exists(os.path.join(ana, "summary.csv")):
