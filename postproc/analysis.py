@@ -15,7 +15,7 @@ from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, classify_snap
 from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
 from .fabric import anisotropies, stress_force_fabric
-from .networks import network_statistics
+from .networks import network_statistics, strong_mask
 from .pertype import class_statistics, partial_stresses, stress_contributions
 from .schema import WALL_ORDER, Snapshot
 from .strain import box_strains
@@ -64,7 +64,7 @@ def _stress_columns(prefix, sigma, axis):
     return row, inv
 
 
-def contact_type_columns(snap, cs, sel, tables, p, axis, theta_deg=DEFAULT_THETA_DEG):
+def contact_type_columns(snap, cs, sel, tables, p, total, axis, theta_deg=DEFAULT_THETA_DEG):
     """summary.csv columns of the contact types of a polyhedra snapshot
     (issue 5; seed fig. 10-12 and claim 6), and the class of each contact.
 
@@ -77,6 +77,7 @@ def contact_type_columns(snap, cs, sel, tables, p, axis, theta_deg=DEFAULT_THETA
     halved and doubled. ``z_points`` counts a contact as 1, 2 or 3 points
     (simple, double, triple), as a multi-point contact code would, beside
     ``z`` which counts every pair once (the paper's convention).
+    ``total`` is the (3, 3) stress over all contacts the partials must sum to.
     Returns (row, labels (C,)).
     """
     labels = classify_snapshot(snap, tables, theta_deg)
@@ -98,7 +99,6 @@ def contact_type_columns(snap, cs, sel, tables, p, axis, theta_deg=DEFAULT_THETA
         for k, (_, qk) in stress_contributions(parts, p, axis).items():
             row[f"ct_qp_{k}"] = qk
         if lab is labels:
-            total = contact_stress(cs.force, cs.arm, cs.volume)
             row["ct_partial_sum_reldiff"] = relative_difference(sum(parts.values()), total)
     for tag, th in (("lo", theta_deg / 2), ("hi", theta_deg * 2)):
         other = classify_snapshot(snap, tables, th)[sel]
@@ -201,18 +201,19 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     row["frac_below_mean"] = fraction_below_mean(cs.normal_force[sel])
     labels = np.where(cs.pp, "sphere", "wall").astype("<U6")
     if tables is not None and snap.body_kind is not None and np.any(snap.body_kind == 1):
-        cols, labels = contact_type_columns(snap, cs, sel, tables, p, e, theta_deg)
+        cols, labels = contact_type_columns(snap, cs, sel, tables, p, s_m, e, theta_deg)
         row.update(cols)
         row["z_points"] = row["z"] * row["ct_points_per_contact"]
     typed = "ct_theta_deg" in row
-    nets = network_statistics(cs.normal_force[sel], branch, force, e,
+    fn = cs.normal_force[sel]
+    nets = network_statistics(fn, branch, force, e,
                               labels=labels[sel] if typed else None, classes=PAIR_TYPES)
-    if typed:
-        g = network_statistics(cs.normal_force[sel], branch, force, e,
-                               labels=group_labels_of(labels[sel]), classes=GROUPS)
-        for name in nets:
-            nets[name].update({k: v for k, v in g[name].items() if k.startswith("frac_")})
-    strong = sel & (cs.normal_force > cs.normal_force[sel].mean())
+    if typed:                  # a group's share is the sum of its types' shares
+        for d in nets.values():
+            for g in GROUPS:
+                d[f"frac_{g}"] = sum(d[f"frac_{k}"] for k in PAIR_TYPES if GROUP_OF[k] == g)
+    strong = np.zeros(len(sel), bool)
+    strong[sel] = strong_mask(fn)
     parts = partial_stresses(np.where(~cs.pp, "wall", np.where(strong, "strong", "weak")),
                              cs.force, cs.arm, V)
     qp = stress_contributions(parts, p, e)

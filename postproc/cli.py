@@ -51,14 +51,6 @@ def _open_source(path, volume, box):
     return len(reader), gen(), reader.close, shapes
 
 
-def pooled_indices(df):
-    """Rows pooled for distributions: the steady part of shear
-    (:func:`postproc.statistics.steady_indices`)."""
-    from .statistics import steady_indices
-
-    return steady_indices(df["eps_q"], df["stage"])
-
-
 def pooled_force_pdf(forces):
     """Long table (class, binning, x, pdf, pdf_weighted, count) of the densities of f_n/<f_n>
     over the pooled snapshots, each snapshot normalised by its own mean
@@ -117,6 +109,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
 
     from . import plots
     from .analysis import add_strains, analyze_snapshot
+    from .statistics import steady_indices
 
     if volume is not None and not (np.isfinite(volume) and volume > 0):
         raise InputError(f"--volume must be finite and > 0, got {volume}")
@@ -176,7 +169,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         snap, res = last
         plots.plot_polar(res.angular, res.fits, os.path.join(tmp, "polar_last.png"),
                          f"{label}: snapshot {snap.name} (step {snap.step})")
-        pool = pooled_indices(df)
+        pool = steady_indices(df["eps_q"], df["stage"])
         pdf = pooled_force_pdf([forces[k] for k in pool])
         pdf.to_csv(os.path.join(tmp, "force_pdf.csv"), index=False)
         what = (f"{label}: snapshots {df['snapshot'].iloc[pool[0]]}-{df['snapshot'].iloc[pool[-1]]}"
