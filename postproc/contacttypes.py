@@ -257,3 +257,15 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
         snap.orientations[i1[poly]], snap.orientations[i2[poly]], snap.normal[poly], theta_deg)
     out[poly] = np.array(PAIR_TYPES)[pair]
     return out
+
+
+def contact_classes(snap, tables, theta_deg=DEFAULT_THETA_DEG):
+    """Class of every contact of ``snap``: :func:`classify_snapshot` when the
+    dump has shapes (``tables`` not None), else "sphere" for particle-particle
+    contacts and "wall" for wall contacts. Returns (C,) str."""
+    if tables is not None:
+        return classify_snapshot(snap, tables, theta_deg)
+    from .contactset import lookup
+
+    both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
+    return np.where(both, "sphere", "wall")

@@ -25,8 +25,7 @@ import shutil
 
 import numpy as np
 
-from .claims import evaluate
-from .statistics import plateau_estimate, steady_indices
+from .claims import evaluate, plateau
 
 SAMPLES = ("polyhedra", "spheres")
 LABEL = {"polyhedra": "S1 polyhedra", "spheres": "S2 spheres"}
@@ -74,12 +73,6 @@ def _summaries(runs):
     return out
 
 
-def _est(frames, col):
-    series = [df[col].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])]
-              for df in frames if col in df]
-    return plateau_estimate(series)
-
-
 def comparison_table(summaries, reference):
     """Rows (quantity, sample, ours (Estimate), published value or None)."""
     res = reference["results"]
@@ -89,7 +82,7 @@ def comparison_table(summaries, reference):
         frames = summaries.get(sample, [])
         if combine:
             frames = [df.assign(**{col: combine(df)}) for df in frames]
-        rows.append((name, sample, _est(frames, col) if frames else None, pub))
+        rows.append((name, sample, plateau(frames, col) if frames else None, pub))
 
     for s in SAMPLES:
         add("q/p plateau", s, "q_over_p", res["q_over_p_plateau"].get(s))
@@ -148,18 +141,14 @@ def _polar_data(run, target=0.3):
 
 def _packing_picture(run, title, path):
     from . import plots
-    from .contactset import lookup
-    from .contacttypes import classify_snapshot, shape_tables
+    from .contacttypes import contact_classes, shape_tables
     from .schema import DumpReader
 
     with DumpReader(run["dump"]) as reader:
         shapes = reader.shapes()
         snap = reader.read(len(reader) - 1)
-    if shapes is not None and len(shapes[0]):
-        labels = classify_snapshot(snap, shape_tables(*shapes))
-    else:
-        both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
-        labels = np.where(both, "sphere", "wall")
+    tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
+    labels = contact_classes(snap, tables)
     plots.plot_packing(snap, shapes, labels, path, f"{title}, snapshot {snap.name}")
 
 

@@ -111,7 +111,7 @@ def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False):
     list of files written. ``snapshots``: indices to export (default all)."""
     import meshio
 
-    from .contacttypes import DEFAULT_THETA_DEG, classify_snapshot, shape_tables
+    from .contacttypes import DEFAULT_THETA_DEG, contact_classes, shape_tables
     from .schema import DumpReader
 
     theta_deg = DEFAULT_THETA_DEG if theta_deg is None else theta_deg
@@ -129,12 +129,7 @@ def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False):
             fp = f"particles_{snap.name}.vtu"
             meshio.write(os.path.join(outdir, fp), meshio.Mesh(pts, cells, point_data=pdata,
                                                                cell_data=cdata), binary=True)
-            if tables is not None:
-                labels = classify_snapshot(snap, tables, theta_deg)
-            else:
-                both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
-                labels = np.where(both, "sphere", "wall")
-            pts, cells, cdata = contact_mesh(snap, labels)
+            pts, cells, cdata = contact_mesh(snap, contact_classes(snap, tables, theta_deg))
             fc = f"contacts_{snap.name}.vtu"
             meshio.write(os.path.join(outdir, fc), meshio.Mesh(pts, cells, cell_data=cdata), binary=True)
             pvd_p.append((snap.time, fp))
