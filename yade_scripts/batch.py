@@ -60,6 +60,17 @@ def complete(dump):
         return False
 
 
+def clear_attempt(dump):
+    """Remove what an unfinished run writing ``dump`` (STEM.h5) left: the
+    dump, its part files, STEM.info.json and STEM.log.csv (logs are kept)."""
+    stem = os.path.splitext(dump)[0]
+    for p in (stem + ".h5", stem + ".h5.parts", stem + ".info.json", stem + ".log.csv"):
+        if os.path.isdir(p):
+            shutil.rmtree(p, ignore_errors=True)
+        elif os.path.exists(p):
+            os.remove(p)
+
+
 def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
     """Relay the newest progress line of each job's log every ``every`` s."""
     last = {}
@@ -96,9 +107,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print):
     if not todo:
         return status
     for _, r in todo:              # an unfinished earlier attempt starts afresh
-        stem = dump_of(folder, r)[:-3]
-        for p in (stem + ".h5", stem + ".h5.parts", stem + ".info.json", stem + ".log.csv"):
-            shutil.rmtree(p, ignore_errors=True) if os.path.isdir(p) else (os.path.exists(p) and os.remove(p))
+        clear_attempt(dump_of(folder, r))
         status[r["description"]] = None
     lines = ",".join(str(k) for k, _ in todo)
     cmd = [exe, "-j", str(jobs), "--job-threads", "1", "-l", lines, "--plot-update", "0",

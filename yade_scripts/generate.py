@@ -88,13 +88,18 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
         fh.write(render_scene(params))
     with open(os.path.join(out, "params.json"), "w") as fh:
         json.dump({"preset": preset, **params}, fh, indent=1)
-    seeds = seeds or [params["seed"]]
+    write_seed_table(out, sample, seeds or [params["seed"]])
+    return params
+
+
+def write_seed_table(out, sample, seeds):
+    """``out/table.txt``: a yade-batch table with one line per seed, each
+    writing ``<sample>-seed<k>.h5``."""
     with open(os.path.join(out, "table.txt"), "w") as fh:
         fh.write("description seed out\n")
         for s in seeds:
             # yade-batch evaluates each value as Python: strings are quoted
             fh.write(f"{sample}-seed{s} {s} '{sample}-seed{s}.h5'\n")
-    return params
 
 
 def main(argv=None):

@@ -22,7 +22,8 @@ import subprocess
 import sys
 import threading
 
-from .generate import DEFAULT_LIBRARY, generate, parse_overrides
+from .batch import clear_attempt
+from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .presets import ConfigError, resolve
 
 SAMPLES = ("polyhedra", "spheres")
@@ -79,10 +80,7 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
         if os.path.exists(os.path.join(folder, "triaxial.py")):
-            # an unfinished earlier attempt: start afresh, keep its log
-            for name in ("run.h5", "run.h5.parts", "run.log.csv", "run.info.json"):
-                p = os.path.join(folder, name)
-                shutil.rmtree(p, ignore_errors=True) if os.path.isdir(p) else (os.path.exists(p) and os.remove(p))
+            clear_attempt(os.path.join(folder, "run.h5"))   # an unfinished attempt; its log is kept
         else:
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
         proc = subprocess.Popen([yade, "-n", "-x", "triaxial.py"], cwd=folder, stdout=subprocess.PIPE,
@@ -112,9 +110,7 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         if not os.path.exists(os.path.join(folder, "triaxial.py")):
             generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
         else:                      # same parameters, maybe another n: rewrite the table only
-            with open(os.path.join(folder, "table.txt"), "w") as fh:
-                fh.write("description seed out\n")
-                fh.writelines(f"{s}-seed{k} {k} '{s}-seed{k}.h5'\n" for k in seeds)
+            write_seed_table(folder, s, seeds)
         status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True))
         result[s] = [(f"seed {r['seed']}", dump_of(folder, r), status[r["description"]])
                      for _, r in read_table(folder)]
