@@ -13,14 +13,16 @@ PRESET ?= default
 ENSEMBLE ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 
-.PHONY: test study system venv bench clean-venv shapes front
+.PHONY: test study system venv bench clean-venv shapes front kernel
 
-# Debian's YADE (runs the scenes on /usr/bin/python3) and h5py for that Python.
+# Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
+# and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
 system:
-	@if ! command -v yade >/dev/null 2>&1 || ! /usr/bin/python3 -c 'import h5py' >/dev/null 2>&1; then \
-	  echo "make: installing Debian packages yade python3-h5py"; \
+	@if ! command -v yade >/dev/null 2>&1 || ! /usr/bin/python3 -c 'import h5py' >/dev/null 2>&1 \
+	    || ! command -v gcc >/dev/null 2>&1; then \
+	  echo "make: installing Debian packages yade python3-h5py gcc"; \
 	  $(SUDO) apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq yade python3-h5py; \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq yade python3-h5py gcc libgomp1; \
 	fi
 
 $(STAMP): pyproject.toml
@@ -32,7 +34,13 @@ $(STAMP): pyproject.toml
 
 venv: $(STAMP)
 
-test: system venv
+# The compiled contact kernel: shapes/_build/polycontact-<hash>.so (gcc,
+# OpenMP), loaded with ctypes by YADE's Python and the venv alike. Rebuilt
+# only when the source changes (the hash names the build).
+kernel: system venv
+	$(PY) -c "from shapes import ckernel; ckernel.build(quiet=False)"
+
+test: system venv kernel
 	$(PY) -m pytest -q
 
 # The polyhedra library (1000 ballast-like grains, seed 0) and its report.
@@ -46,7 +54,7 @@ shapes: $(SHAPES_LIB)
 # then the analysis of every dump and the report (STUDY/report/report.md).
 # ENSEMBLE=n runs n seeds per sample through yade-batch. Finished runs are
 # not run again.
-study: system venv $(SHAPES_LIB)
+study: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE)
 
 # Speed against error (issue 7): a yade-batch sweep over kappa, I, N and shape
@@ -54,7 +62,7 @@ study: system venv $(SHAPES_LIB)
 # analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front
 FRONT_PLAN ?= quick
-front: system venv $(SHAPES_LIB)
+front: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
 	$(PY) benchmarks/front_analysis.py --out $(FRONT)-analysis
 

@@ -5,12 +5,13 @@ numpy 1.24, h5py 3.7) and by the ``postproc`` analysis package. It therefore
 imports **only** the standard library, numpy and h5py, and nothing else from
 ``postproc``. It can be copied next to a generated ``triaxial.py`` as is.
 
-Layout of one run (schema version 1, all quantities in SI units)
+Layout of one run (schema version 2, all quantities in SI units)
 =================================================================
 One HDF5 file per simulation run, ``RUN.h5``. File attributes:
 
 ``schema``            ``"granular-contact-dump"``
-``schema_version``    ``1`` (an integer; readers refuse other versions)
+``schema_version``    ``2`` (an integer). Version 1 (no contact footprint)
+                      is still read; readers refuse any other version
 ``sample_kind``       ``"polyhedra"`` or ``"spheres"``
 ``parameters``        JSON text: every parameter that generated the run
 ``units``             JSON text: unit of every dataset below
@@ -59,6 +60,11 @@ time order). Group attributes ``step`` (int), ``time`` (s), ``stage``
                               ``force_normal . normal > 0``.
 ``contacts/force_tangential`` (C, 3) N. Tangential force on id2 by id1.
 ``contacts/overlap``          (C,) m^3 or m (see ``overlap_kind``).
+``contacts/footprint``        (C, 2) m, optional (version 2, polyhedra runs
+                              with the compiled kernel): the principal
+                              extents of the overlap's shadow on the contact
+                              plane, largest first (``shapes/overlap.py``).
+``contacts/footprint_area``   (C,) m^2, optional: the area of that shadow.
 
 Sign convention: forces are the forces on id2 by id1; stresses computed from
 them are compression positive.
@@ -90,7 +96,8 @@ import h5py
 import numpy as np
 
 SCHEMA_NAME = "granular-contact-dump"
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
+READABLE_VERSIONS = (1, 2)   # version 1: no contacts/footprint
 SAMPLE_KINDS = ("polyhedra", "spheres")
 WALL_ORDER = ("x-", "x+", "y-", "y+", "z-", "z+")
 KIND_SPHERE, KIND_POLYHEDRON, KIND_WALL = 0, 1, 2
@@ -102,6 +109,7 @@ UNITS = {
     "contacts/point": "m", "contacts/normal": "1",
     "contacts/force_normal": "N", "contacts/force_tangential": "N",
     "contacts/overlap": "m^3 (overlap_kind=volume) or m (overlap_kind=depth)",
+    "contacts/footprint": "m", "contacts/footprint_area": "m^2",
     "shapes/vertices": "m",
 }
 
@@ -118,6 +126,8 @@ _CONTACT_FIELDS = {
     "force_normal": (np.float64, (3,), True),
     "force_tangential": (np.float64, (3,), True),
     "overlap": (np.float64, (), True),
+    "footprint": (np.float64, (2,), False),
+    "footprint_area": (np.float64, (), False),
 }
 
 
@@ -159,6 +169,8 @@ class Snapshot:
     masses: Optional[np.ndarray] = None         # (B,)
     shape_index: Optional[np.ndarray] = None    # (B,)
     sizes: Optional[np.ndarray] = None          # (B,)
+    footprint: Optional[np.ndarray] = None      # (C, 2) m, overlap shadow extents (kernel runs)
+    footprint_area: Optional[np.ndarray] = None  # (C,) m^2
     extra: dict = field(default_factory=dict)
 
     @property
@@ -321,7 +333,7 @@ class DumpWriter:
         b = {k: _as_field("bodies/" + k, bodies[k], s, nb)
              for k, s in _BODY_FIELDS.items() if s[2] or k in bodies}
         c = {k: _as_field("contacts/" + k, contacts[k], s, nc)
-             for k, s in _CONTACT_FIELDS.items()}
+             for k, s in _CONTACT_FIELDS.items() if s[2] or k in contacts}
         lo = _as_field("box/lo", box_lo, (np.float64, (), True), 3)
         hi = _as_field("box/hi", box_hi, (np.float64, (), True), 3)
         wid = _as_field("walls/id", wall_ids, (np.int64, (), True), len(WALL_ORDER))
@@ -408,10 +420,12 @@ class DumpReader:
             raise DumpFormatError(f"{self.path}: not a {SCHEMA_NAME} file "
                                   f"(attribute 'schema' is {a.get('schema')!r})")
         version = int(a.get("schema_version", -1))
-        if version != SCHEMA_VERSION:
+        if version not in READABLE_VERSIONS:
             self._f.close()
             raise DumpFormatError(f"{self.path}: schema version {version} is not "
-                                  f"supported (this reader reads version {SCHEMA_VERSION})")
+                                  f"supported (this reader reads versions "
+                                  f"{', '.join(map(str, READABLE_VERSIONS))}; current {SCHEMA_VERSION})")
+        self.version = version
         self.sample_kind = str(a["sample_kind"])
         self.parameters = json.loads(a["parameters"])
         self.units = json.loads(a["units"])
@@ -454,7 +468,8 @@ class DumpReader:
             g = self._f["snapshots/" + name]
             lo, hi = g["box/lo"][()], g["box/hi"][()]
             b = {k: g["bodies/" + k][()] for k in _BODY_FIELDS if "bodies/" + k in g}
-            c = {k: g["contacts/" + k][()] for k in _CONTACT_FIELDS}
+            c = {k: g["contacts/" + k][()] for k, s in _CONTACT_FIELDS.items()
+                 if s[2] or "contacts/" + k in g}
             snap = Snapshot(
                 name=name, step=int(g.attrs["step"]), time=float(g.attrs["time"]),
                 stage=str(g.attrs["stage"]),
@@ -467,6 +482,7 @@ class DumpReader:
                 overlap=c["overlap"], body_kind=b["kind"],
                 orientations=b["orientation"], volumes=b["volume"],
                 masses=b["mass"], shape_index=b["shape_index"], sizes=b["size"],
+                footprint=c.get("footprint"), footprint_area=c.get("footprint_area"),
             )
         except (KeyError, OSError, ValueError) as exc:
             raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "

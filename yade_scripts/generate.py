@@ -36,6 +36,9 @@ LIB_FILES = {  # copied name: source
     "timestep.py": os.path.join(HERE, "timestep.py"),
     "tangential.py": os.path.join(HERE, "tangential.py"),
     "yadedump.py": os.path.join(HERE, "yadedump.py"),
+    "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
+    "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
+    "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),
 }
 DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")
 _LINE = re.compile(r"^(\s+)(\w+)=(.*?),(\s+#.*)?$")

@@ -74,6 +74,9 @@ SCHEMA = {
     "check_every": (int, (1, 10**9)),
     "report_seconds": (float, (0.0, 1e6)),
     "timing": (bool, None),
+    "contact_engine": (str, ("kernel", "yade")),
+    "kernel_threads": (int, (0, 1024)),
+    "verlet_skin": (float, (1e-4, 10.0)),
 }
 
 

@@ -61,6 +61,9 @@ readParamsFromTable(
     check_every=200,             # steps between blow-up checks
     report_seconds=10.0,         # seconds between progress lines
     timing=True,                 # record the time of each engine (run_info.json)
+    contact_engine="kernel",     # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
+    kernel_threads=0,            # OpenMP threads of the kernel (0: every core)
+    verlet_skin=0.1,             # kernel neighbour-list margin, in units of the mean d
     noTableOk=True,
 )
 # --- end of parameters ---
@@ -78,6 +81,9 @@ import yadedump  # noqa: E402
 POLY = sample == "polyhedra"
 if sample not in ("polyhedra", "spheres"):
     raise SystemExit(f"triaxial.py: sample must be 'polyhedra' or 'spheres', got {sample!r}")
+if contact_engine not in ("kernel", "yade"):
+    raise SystemExit(f"triaxial.py: contact_engine must be 'kernel' or 'yade', got {contact_engine!r}")
+KERNEL = POLY and contact_engine == "kernel"
 # Polyhedra_support.cpp can print gigabytes of "Unhandled switch case"
 # warnings; keep its errors, drop its warnings.
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
@@ -172,7 +178,21 @@ d_of = np.zeros(int(particles.max()) + 1)
 d_of[particles] = d
 
 # ------------------------------------------------------------ engines
-if POLY:
+if KERNEL:
+    # Every polyhedra-polyhedra and polyhedra-wall contact comes from the
+    # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
+    from kernel_contacts import KernelContacts, KernelError  # noqa: E402
+
+    shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
+    kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
+                            friction, wall_friction, verlet_skin * d_mean, kernel_threads)
+    O.engines = [
+        ForceResetter(),
+        PyRunner(command="kernel_step()", iterPeriod=1, label="kernel_contacts"),
+        PyRunner(command="control()", iterPeriod=1, label="controller"),
+        NewtonIntegrator(damping=compaction_damping, label="newton"),
+    ]
+elif POLY:
     from tangential import TangentialLaw  # noqa: E402
 
     tangential_law = TangentialLaw(O, Vector3, kt_of)
@@ -205,7 +225,7 @@ else:
 derived = {
     "dt": O.dt, "dt_crit": dt_crit, "rate_shear": rate_shear, "rate_compaction": rate_compact,
     "d_mean": d_mean, "kn_volumetric": k_v if POLY else None, "young": 2 * k_v if POLY else young,
-    "a_face": a_face if POLY else None,
+    "a_face": a_face if POLY else None, "contact_engine": contact_engine if POLY else "yade",
 }
 params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
 writer = dumpschema.DumpWriter(os.path.join(HERE, out), sample, {**params, **derived},
@@ -236,13 +256,34 @@ def set_wall_velocities(vel):
         O.bodies[w].state.vel = tuple(v)
 
 
+def kernel_step():
+    """One kernel step; a refused step (NaN positions) stops the run cleanly."""
+    try:
+        kernel()
+    except KernelError as exc:
+        fail(f"contact kernel: {exc}")
+
+
+def unbalanced():
+    """YADE's unbalanced-force ratio (from the kernel's sums with the kernel,
+    which leaves YADE no interactions to average over)."""
+    return kernel.unbalanced() if KERNEL else utils.unbalancedForce()
+
+
+def counts():
+    """(interactions or neighbour pairs, touching contacts) now."""
+    if KERNEL:
+        return kernel.n_pairs, kernel.n_contacts
+    return len(O.interactions), O.interactions.countReal()
+
+
 def snapshot(stage):
     lo, hi = box()
     writer.write_snapshot(
         step=O.iter, time=O.time, stage=stage, box_lo=lo, box_hi=hi, wall_ids=walls,
         wall_forces=wall_forces(),
         bodies=yadedump.gather_bodies(O, particles, 1 if POLY else 0, shape_index, d),
-        contacts=yadedump.gather_contacts(O, POLY))
+        contacts=kernel.contacts() if KERNEL else yadedump.gather_contacts(O, POLY))
 
 
 def fail(reason):
@@ -286,10 +327,10 @@ def control():
                                   O.dt, servo_time / rate_compact)
         set_wall_velocities(servo.wall_velocities(rates, L))
         if O.iter % 50 == 0 and np.all(np.abs(sig - sigma0) < iso_tolerance * sigma0) \
-                and utils.unbalancedForce() < unbalanced_tolerance:
+                and unbalanced() < unbalanced_tolerance:
             state["phi_iso"] = volume_particles / np.prod(L)
             print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
-                  f"solid fraction {state['phi_iso']:.4f}, unbalanced force {utils.unbalancedForce():.2e}", flush=True)
+                  f"solid fraction {state['phi_iso']:.4f}, unbalanced force {unbalanced():.2e}", flush=True)
             snapshot("isotropic")
             state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3))
             newton.damping = damping
@@ -315,14 +356,14 @@ def control():
             O.pause()
             return
     if O.iter % log_every == 0:
-        n_real = O.interactions.countReal()
+        n_inter, n_real = counts()
         state["contact_steps"] += n_real * log_every
-        state["interaction_steps"] += len(O.interactions) * log_every
+        state["interaction_steps"] += n_inter * log_every
         eps = np.log(state["L0"] / L) if state["H0"] else np.zeros(3)
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
         log_file.write(f"{O.iter},{O.time:.6g},{state['stage']},{eps[2]:.6g},{eps[0]:.6g},{eps[1]:.6g},{eps.sum():.6g},"
                        f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{(s1 - s3) / (s1 + 2 * s3):.6g},"
-                       f"{volume_particles / np.prod(L):.6g},{utils.unbalancedForce():.4g},{len(O.interactions)},"
+                       f"{volume_particles / np.prod(L):.6g},{unbalanced():.4g},{n_inter},"
                        f"{n_real},{state['sps']:.4g}\n")
         log_file.flush()
     if O.iter % check_every == 0:
@@ -346,7 +387,7 @@ def control():
         else:
             where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
             eta = "time left known once shear starts"
-        print(f"triaxial.py: step {O.iter} {state['stage']}: {where}, {len(O.interactions)} interactions, "
+        print(f"triaxial.py: step {O.iter} {state['stage']}: {where}, {counts()[0]} interactions, "
               f"{sps:.0f} steps/s, {eta}", flush=True)
 
 
@@ -366,6 +407,9 @@ engine_seconds = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in 
 info = {"steps": O.iter, "time": O.time, "wall_seconds": time.time() - t0, "solid_fraction_isotropic": state["phi_iso"],
         "snapshots": writer._n_snapshots, "contact_steps": state["contact_steps"],
         "interaction_steps": state["interaction_steps"], "engine_seconds": engine_seconds, **derived}
+if KERNEL:   # the kernel's own split and exact touching contact-steps
+    info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
+                      "memory_bytes": kernel.memory_bytes()}
 with open(os.path.join(HERE, stem + ".info.json"), "w") as fh:
     json.dump(info, fh, indent=1)
 print(f"triaxial.py: done in {time.time() - t0:.0f} s, {O.iter} steps; dump {out}", flush=True)

@@ -1,0 +1,1104 @@
+/* polycontact.c: exact overlap of convex polyhedra and YADE's volumetric
+ * contact law, for the triaxial scenes (loaded with ctypes by shapes/ckernel.py).
+ *
+ * Geometry. A convex polyhedron is a set of outward triangles. The overlap
+ * A n B is built by clipping A's triangles by every face plane of B
+ * (Sutherland-Hodgman in 3D): each plane cuts the current convex polygons and
+ * closes the hole with a cap polygon on that plane. In exact arithmetic the
+ * result is the overlap polyhedron; in doubles it is exact to round-off (no
+ * face merging, no tolerance). All coordinates are relative to A's centre, so
+ * round-off scales with the grain size, not with the position in the box.
+ *
+ *   V        volume of the overlap (divergence theorem, tetrahedra from a
+ *            vertex of the overlap)
+ *   c        its centroid: the contact point
+ *   S_A      sum over the overlap's faces lying on A's surface of
+ *            (area x A's outward normal) = -dV/dx_B
+ *   n        S_A / |S_A|, from A to B
+ *   shadow   the overlap projected on the plane normal to n (a convex
+ *            polygon: the 2D hull of the projected vertices); its area, and its
+ *            widths (max - min of the projected vertices) along the principal
+ *            axes of its second moment of area, largest first.
+ *
+ * Contact law (YADE's Law2_PolyhedraGeom_PolyhedraPhys_Volumetric normal
+ * part, per-contact tangential part):
+ *   F_n = k_V V n on B (A receives -F_n), applied at c;
+ *   f_t <- f_t projected on the new tangent plane (norm kept), turned by the
+ *          pair's mean spin about n, then f_t -= k_t du_t with du_t the
+ *          tangential displacement of B's material point at c relative to
+ *          A's over the step, and |f_t| <= mu |F_n|.
+ *
+ * No allocation on the per-step path except when the neighbour list grows.
+ * OpenMP over pairs; each thread has its own clipping workspace.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#define PC_OK 0
+#define PC_DEGENERATE_NORMAL 1   /* |S_A| ~ 0: normal from the centres (or z) */
+#define PC_WORKSPACE 2           /* workspace overflow (should not happen)    */
+
+/* ------------------------------------------------------------------ small vector helpers */
+static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static inline void cross3(const double *a, const double *b, double *c) {
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static void quat_to_mat(const double *q, double *R) {
+    /* q = (w, x, y, z), normalised here; R row-major, local -> global */
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    double s = sqrt(w * w + x * x + y * y + z * z);
+    if (s > 0) { w /= s; x /= s; y /= s; z /= s; } else { w = 1; x = y = z = 0; }
+    R[0] = 1 - 2 * (y * y + z * z); R[1] = 2 * (x * y - w * z);     R[2] = 2 * (x * z + w * y);
+    R[3] = 2 * (x * y + w * z);     R[4] = 1 - 2 * (x * x + z * z); R[5] = 2 * (y * z - w * x);
+    R[6] = 2 * (x * z - w * y);     R[7] = 2 * (y * z + w * x);     R[8] = 1 - 2 * (x * x + y * y);
+}
+static inline void matvec(const double *R, const double *v, double *o) {
+    o[0] = R[0] * v[0] + R[1] * v[1] + R[2] * v[2];
+    o[1] = R[3] * v[0] + R[4] * v[1] + R[5] * v[2];
+    o[2] = R[6] * v[0] + R[7] * v[1] + R[8] * v[2];
+}
+static inline void mattvec(const double *R, const double *v, double *o) {
+    o[0] = R[0] * v[0] + R[3] * v[1] + R[6] * v[2];
+    o[1] = R[1] * v[0] + R[4] * v[1] + R[7] * v[2];
+    o[2] = R[2] * v[0] + R[5] * v[1] + R[8] * v[2];
+}
+
+/* ------------------------------------------------------------------ posed polyhedron */
+/* A polyhedron placed in a frame: nv vertices (x, y, z), nt outward triangles,
+ * one plane per triangle (unit normal n, offset h: inside is n.x <= h). */
+typedef struct {
+    int nv, nt;
+    const double *v;    /* nv x 3 */
+    const int *t;       /* nt x 3 */
+    const double *n;    /* nt x 3 */
+    const double *h;    /* nt     */
+} posed_t;
+
+/* ------------------------------------------------------------------ clipping workspace */
+typedef struct {
+    int cap_poly, cap_pts;
+    /* two polygon buffers (double buffering) */
+    int *start[2], *count[2], *tag[2];
+    double *pts[2];
+    double *capp;       /* cap points of one cut */
+    double *dist;       /* distances of the current vertex set, or scratch */
+    int *order;         /* plane order */
+    double *proj;       /* projected points for the shadow (x, y pairs) */
+    int *hull;          /* hull indices */
+    double *dA;         /* nvA x ntB distances */
+    int *nout;          /* per plane: number of A's vertices outside */
+} work_t;
+
+static void work_free(work_t *w) {
+    for (int k = 0; k < 2; k++) { free(w->start[k]); free(w->count[k]); free(w->tag[k]); free(w->pts[k]); }
+    free(w->capp); free(w->dist); free(w->order); free(w->proj); free(w->hull); free(w->dA); free(w->nout);
+    memset(w, 0, sizeof(*w));
+}
+
+/* workspace for polyhedra with at most max_t triangles and max_v vertices */
+static int work_init(work_t *w, int max_t, int max_v) {
+    memset(w, 0, sizeof(*w));
+    int P = 2 * max_t + 4;                      /* polygons: A's triangles + one cap per B plane */
+    long pts = (long)P * (long)(max_t + 4) + 16; /* each convex polygon gains at most one vertex per cut */
+    w->cap_poly = P; w->cap_pts = (int)pts;
+    for (int k = 0; k < 2; k++) {
+        w->start[k] = malloc(sizeof(int) * P); w->count[k] = malloc(sizeof(int) * P);
+        w->tag[k] = malloc(sizeof(int) * P); w->pts[k] = malloc(sizeof(double) * 3 * pts);
+    }
+    w->capp = malloc(sizeof(double) * 3 * (2 * P + 4));
+    w->dist = malloc(sizeof(double) * pts);
+    w->order = malloc(sizeof(int) * (max_t + 4));
+    w->proj = malloc(sizeof(double) * 2 * pts);
+    w->hull = malloc(sizeof(int) * (pts + 2));
+    w->dA = malloc(sizeof(double) * (long)max_v * (max_t + 1) + 8);
+    w->nout = malloc(sizeof(int) * (max_t + 4));
+    for (int k = 0; k < 2; k++)
+        if (!w->start[k] || !w->count[k] || !w->tag[k] || !w->pts[k]) { work_free(w); return -1; }
+    if (!w->capp || !w->dist || !w->order || !w->proj || !w->hull || !w->dA || !w->nout) { work_free(w); return -1; }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ result of one pair */
+typedef struct {
+    double volume, centroid[3], normal[3], footprint[2], area;
+    int status;
+} overlap_t;
+
+static void overlap_zero(overlap_t *r) {
+    memset(r, 0, sizeof(*r));
+    r->centroid[0] = r->centroid[1] = r->centroid[2] = NAN;
+    r->normal[0] = r->normal[1] = r->normal[2] = NAN;
+}
+
+/* sort cap points counter-clockwise about the plane normal n */
+static int cmp_ang(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Build the cap polygon from m points on a plane of unit normal n (outward of
+ * the kept part): returns the points ordered counter-clockwise seen from n.
+ * Sorting key/value pairs: we sort (angle, index) in a scratch array. */
+static void order_cap(double *p, int m, const double *n, double *scratch) {
+    double c[3] = {0, 0, 0};
+    for (int i = 0; i < m; i++) { c[0] += p[3 * i]; c[1] += p[3 * i + 1]; c[2] += p[3 * i + 2]; }
+    c[0] /= m; c[1] /= m; c[2] /= m;
+    double u[3], v[3], a[3] = {1, 0, 0};
+    if (fabs(n[0]) > 0.6) { a[0] = 0; a[1] = 1; }
+    cross3(n, a, u);
+    double un = sqrt(dot3(u, u)); u[0] /= un; u[1] /= un; u[2] /= un;
+    cross3(n, u, v);
+    /* scratch: 4 doubles per point: angle, x, y, z */
+    for (int i = 0; i < m; i++) {
+        double d[3] = {p[3 * i] - c[0], p[3 * i + 1] - c[1], p[3 * i + 2] - c[2]};
+        scratch[4 * i] = atan2(dot3(d, v), dot3(d, u));
+        scratch[4 * i + 1] = p[3 * i]; scratch[4 * i + 2] = p[3 * i + 1]; scratch[4 * i + 3] = p[3 * i + 2];
+    }
+    qsort(scratch, m, 4 * sizeof(double), cmp_ang);
+    for (int i = 0; i < m; i++) { p[3 * i] = scratch[4 * i + 1]; p[3 * i + 1] = scratch[4 * i + 2]; p[3 * i + 2] = scratch[4 * i + 3]; }
+}
+
+static int cmp_xy(const void *a, const void *b) {
+    const double *p = a, *q = b;
+    if (p[0] != q[0]) return (p[0] > q[0]) - (p[0] < q[0]);
+    return (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+/* shadow of the point set (npts points, 3D) on the plane normal to n:
+ * area, and widths along the principal axes of the shadow polygon */
+static void shadow(const double *pts, int npts, const double *n, work_t *w, double *area, double *fp) {
+    double u[3], v[3], a[3] = {1, 0, 0};
+    if (fabs(n[0]) > 0.6) { a[0] = 0; a[1] = 1; }
+    cross3(n, a, u);
+    double un = sqrt(dot3(u, u)); u[0] /= un; u[1] /= un; u[2] /= un;
+    cross3(n, u, v);
+    double *P = w->proj;
+    for (int i = 0; i < npts; i++) { P[2 * i] = dot3(pts + 3 * i, u); P[2 * i + 1] = dot3(pts + 3 * i, v); }
+    qsort(P, npts, 2 * sizeof(double), cmp_xy);
+    /* Andrew's monotone chain */
+    int *H = w->hull, k = 0;
+    for (int i = 0; i < npts; i++) {
+        while (k >= 2) {
+            const double *o = P + 2 * H[k - 2], *p = P + 2 * H[k - 1], *q = P + 2 * i;
+            if ((p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]) <= 0) k--; else break;
+        }
+        H[k++] = i;
+    }
+    for (int i = npts - 2, lo = k + 1; i >= 0; i--) {
+        while (k >= lo) {
+            const double *o = P + 2 * H[k - 2], *p = P + 2 * H[k - 1], *q = P + 2 * i;
+            if ((p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]) <= 0) k--; else break;
+        }
+        H[k++] = i;
+    }
+    int m = k - 1;                      /* last point repeats the first */
+    if (m < 3) {                        /* segment or point: widths from the points */
+        double ext = 0;
+        for (int i = 0; i < npts; i++)
+            for (int j = i + 1; j < npts; j++) {
+                double dx = P[2 * i] - P[2 * j], dy = P[2 * i + 1] - P[2 * j + 1];
+                double e = sqrt(dx * dx + dy * dy);
+                if (e > ext) ext = e;
+            }
+        *area = 0; fp[0] = ext; fp[1] = 0;
+        return;
+    }
+    /* area, centroid and second moments of the polygon (origin at its first vertex) */
+    const double *o = P + 2 * H[0];
+    double A2 = 0, cx = 0, cy = 0, ixx = 0, iyy = 0, ixy = 0;
+    for (int i = 0; i < m; i++) {
+        const double *p = P + 2 * H[i], *q = P + 2 * H[i + 1];
+        double x0 = p[0] - o[0], y0 = p[1] - o[1], x1 = q[0] - o[0], y1 = q[1] - o[1];
+        double cr = x0 * y1 - x1 * y0;
+        A2 += cr;
+        cx += (x0 + x1) * cr; cy += (y0 + y1) * cr;
+        ixx += (x0 * x0 + x0 * x1 + x1 * x1) * cr;   /* integral of x^2 (times 12) */
+        iyy += (y0 * y0 + y0 * y1 + y1 * y1) * cr;
+        ixy += (x0 * y1 + 2 * x0 * y0 + 2 * x1 * y1 + x1 * y0) * cr;
+    }
+    double A = 0.5 * A2;
+    *area = fabs(A);
+    double mx = 0, my = 0;
+    if (A != 0) { mx = cx / (6 * A); my = cy / (6 * A); }
+    double Sxx = ixx / 12 - A * mx * mx, Syy = iyy / 12 - A * my * my, Sxy = ixy / 24 - A * mx * my;
+    /* principal axis of the largest second moment of the x-distribution:
+     * the covariance [[Sxx, Sxy], [Sxy, Syy]] (integrals of x^2 etc.) */
+    double th = 0.5 * atan2(2 * Sxy, Sxx - Syy);
+    double e1[2] = {cos(th), sin(th)}, e2[2] = {-sin(th), cos(th)};
+    double lo1 = INFINITY, hi1 = -INFINITY, lo2 = INFINITY, hi2 = -INFINITY;
+    for (int i = 0; i < m; i++) {
+        const double *p = P + 2 * H[i];
+        double s1 = p[0] * e1[0] + p[1] * e1[1], s2 = p[0] * e2[0] + p[1] * e2[1];
+        lo1 = s1 < lo1 ? s1 : lo1; hi1 = s1 > hi1 ? s1 : hi1;
+        lo2 = s2 < lo2 ? s2 : lo2; hi2 = s2 > hi2 ? s2 : hi2;
+    }
+    double w1 = hi1 - lo1, w2 = hi2 - lo2;
+    if (w1 >= w2) { fp[0] = w1; fp[1] = w2; } else { fp[0] = w2; fp[1] = w1; }
+}
+
+/* Finish: volume, centroid, S_A and the shadow from the polygon set. */
+static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, const double *xB_minus_xA,
+                      overlap_t *r) {
+    int *start = w->start[buf], *count = w->count[buf], *tag = w->tag[buf];
+    double *pts = w->pts[buf];
+    if (np == 0) { overlap_zero(r); return; }
+    const double *o = pts + 3 * start[0];
+    double V6 = 0, C[3] = {0, 0, 0}, SA[3] = {0, 0, 0}, Stot = 0;
+    int npts = 0;
+    for (int f = 0; f < np; f++) {
+        const double *p0 = pts + 3 * start[f];
+        double av[3] = {0, 0, 0};
+        for (int i = 1; i + 1 < count[f]; i++) {
+            const double *p1 = pts + 3 * (start[f] + i), *p2 = pts + 3 * (start[f] + i + 1);
+            double a[3] = {p0[0] - o[0], p0[1] - o[1], p0[2] - o[2]};
+            double b[3] = {p1[0] - o[0], p1[1] - o[1], p1[2] - o[2]};
+            double c[3] = {p2[0] - o[0], p2[1] - o[1], p2[2] - o[2]};
+            double bc[3];
+            cross3(b, c, bc);
+            double v6 = dot3(a, bc);
+            V6 += v6;
+            C[0] += v6 * (a[0] + b[0] + c[0]); C[1] += v6 * (a[1] + b[1] + c[1]); C[2] += v6 * (a[2] + b[2] + c[2]);
+            double e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+            double e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+            double t[3];
+            cross3(e1, e2, t);
+            av[0] += 0.5 * t[0]; av[1] += 0.5 * t[1]; av[2] += 0.5 * t[2];
+        }
+        Stot += sqrt(dot3(av, av));
+        if (tag[f] >= 0 && tag[f] < ntA) {   /* a face on A's surface: area x A's unit normal */
+            const double *nf = nA + 3 * tag[f];
+            double a = dot3(av, nf);
+            SA[0] += a * nf[0]; SA[1] += a * nf[1]; SA[2] += a * nf[2];
+        }
+        npts += count[f];
+    }
+    double V = V6 / 6.0;
+    if (!(V > 0)) { overlap_zero(r); return; }
+    r->volume = V;
+    r->centroid[0] = o[0] + C[0] / (4 * V6); r->centroid[1] = o[1] + C[1] / (4 * V6); r->centroid[2] = o[2] + C[2] / (4 * V6);
+    double s = sqrt(dot3(SA, SA));
+    r->status = PC_OK;
+    if (s > 1e-9 * Stot && s > 0) {
+        r->normal[0] = SA[0] / s; r->normal[1] = SA[1] / s; r->normal[2] = SA[2] / s;
+    } else {
+        /* B inside A or identical poses: no net area on A's side; fall back
+         * to the line of centres, else +z */
+        r->status = PC_DEGENERATE_NORMAL;
+        double l = xB_minus_xA ? sqrt(dot3(xB_minus_xA, xB_minus_xA)) : 0;
+        if (l > 0) { r->normal[0] = xB_minus_xA[0] / l; r->normal[1] = xB_minus_xA[1] / l; r->normal[2] = xB_minus_xA[2] / l; }
+        else { r->normal[0] = 0; r->normal[1] = 0; r->normal[2] = 1; }
+    }
+    /* the shadow, from the polygon vertices (contiguous in the buffer) */
+    int first = start[0];
+    int last = start[np - 1] + count[np - 1];
+    shadow(pts + 3 * first, last - first, r->normal, w, &r->area, r->footprint);
+}
+
+/* Clip the current polygon set (buffer buf, np polygons) by the plane
+ * n.x <= h (tag = cap tag). Returns the new polygon count in buffer 1-buf. */
+static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int captag, int *overflow) {
+    int *s0 = w->start[buf], *c0 = w->count[buf], *t0 = w->tag[buf];
+    double *p0 = w->pts[buf];
+    int *s1 = w->start[1 - buf], *c1 = w->count[1 - buf], *t1 = w->tag[1 - buf];
+    double *p1 = w->pts[1 - buf];
+    double *cap = w->capp;
+    int ncap = 0, out = 0, q = 0;
+    for (int f = 0; f < np; f++) {
+        int st = s0[f], cn = c0[f];
+        double *P = p0 + 3 * st;
+        double *d = w->dist;
+        int nin = 0;
+        for (int i = 0; i < cn; i++) { d[i] = dot3(P + 3 * i, n) - h; nin += d[i] <= 0; }
+        if (nin == 0) continue;                                     /* all outside */
+        if (q + cn + 1 > w->cap_pts || out + 2 > w->cap_poly) { *overflow = 1; return 0; }
+        s1[out] = q; t1[out] = t0[f];
+        if (nin == cn) {                                            /* all inside: copy */
+            memcpy(p1 + 3 * q, P, sizeof(double) * 3 * cn);
+            q += cn; c1[out++] = cn;
+            continue;
+        }
+        int m = 0;
+        for (int i = 0; i < cn; i++) {
+            int j = (i + 1 == cn) ? 0 : i + 1;
+            const double *a = P + 3 * i, *b = P + 3 * j;
+            double da = d[i], db = d[j];
+            if (da <= 0) { memcpy(p1 + 3 * (q + m), a, 3 * sizeof(double)); m++; }
+            if ((da <= 0) != (db <= 0)) {
+                /* canonical: from the inside end to the outside end */
+                const double *pi = da <= 0 ? a : b, *po = da <= 0 ? b : a;
+                double di = da <= 0 ? da : db, dout = da <= 0 ? db : da;
+                double t = di / (di - dout);
+                double x[3] = {pi[0] + t * (po[0] - pi[0]), pi[1] + t * (po[1] - pi[1]), pi[2] + t * (po[2] - pi[2])};
+                memcpy(p1 + 3 * (q + m), x, 3 * sizeof(double)); m++;
+                memcpy(cap + 3 * ncap, x, 3 * sizeof(double)); ncap++;
+            }
+        }
+        if (m >= 3) { c1[out++] = m; q += m; }
+    }
+    if (ncap >= 3 && out > 0) {
+        if (q + ncap > w->cap_pts || out + 1 > w->cap_poly) { *overflow = 1; return 0; }
+        order_cap(cap, ncap, n, w->proj);
+        memcpy(p1 + 3 * q, cap, sizeof(double) * 3 * ncap);
+        s1[out] = q; c1[out] = ncap; t1[out] = captag; out++; q += ncap;
+    }
+    return out;
+}
+
+/* Overlap of A and B posed in the same frame. A's triangles are clipped by
+ * B's planes (those that cut A, most cutting first). dAB is an optional
+ * centre difference for the degenerate-normal fallback. */
+static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
+                         double *sep_axis) {
+    int ntB = B->nt;
+    if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
+    /* distances of A's vertices to B's planes; separation by a face of B */
+    int *nout = w->nout;
+    for (int k = 0; k < ntB; k++) {
+        const double *n = B->n + 3 * k;
+        double h = B->h[k];
+        int c = 0;
+        for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
+        if (c == A->nv) {   /* A wholly outside B's face k: axis -n_k (from A to B) */
+            overlap_zero(r);
+            if (sep_axis) { sep_axis[0] = -n[0]; sep_axis[1] = -n[1]; sep_axis[2] = -n[2]; }
+            return;
+        }
+        nout[k] = c;
+    }
+    /* separation by a face of A */
+    for (int k = 0; k < A->nt; k++) {
+        const double *n = A->n + 3 * k;
+        double h = A->h[k];
+        int c = 0;
+        for (int i = 0; i < B->nv; i++) c += dot3(B->v + 3 * i, n) - h > 0;
+        if (c == B->nv) {   /* B wholly outside A's face k: axis n_k */
+            overlap_zero(r);
+            if (sep_axis) memcpy(sep_axis, n, 3 * sizeof(double));
+            return;
+        }
+    }
+    /* the planes that cut A, most cutting first (insertion sort, small n) */
+    int *ord = w->order, m = 0;
+    for (int k = 0; k < ntB; k++) {
+        if (nout[k] == 0) continue;
+        int j = m++;
+        while (j > 0 && nout[ord[j - 1]] < nout[k]) { ord[j] = ord[j - 1]; j--; }
+        ord[j] = k;
+    }
+    /* A's triangles as the starting polygons */
+    int np = A->nt, buf = 0, overflow = 0;
+    for (int f = 0; f < np; f++) {
+        w->start[0][f] = 3 * f; w->count[0][f] = 3; w->tag[0][f] = f;
+        for (int c = 0; c < 3; c++) memcpy(w->pts[0] + 3 * (3 * f + c), A->v + 3 * A->t[3 * f + c], 3 * sizeof(double));
+    }
+    for (int i = 0; i < m && np > 0; i++) {
+        int k = ord[i];
+        np = clip_plane(w, buf, np, B->n + 3 * k, B->h[k], A->nt + k, &overflow);
+        buf = 1 - buf;
+        if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
+    }
+    integrate(w, buf, np, A->nt, A->n, dAB, r);
+}
+
+/* Overlap of polyhedron A with the half-space beyond a plane n.x > h (the
+ * wall's material side is n.x >= h ... here we keep n.x <= h): the part of A
+ * with n.x <= h. The normal is -n (from the wall towards A) when wall_to_a. */
+static void overlap_halfspace(const posed_t *A, const double *n, double h, work_t *w, overlap_t *r) {
+    int c = 0;
+    for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
+    if (c == A->nv) { overlap_zero(r); return; }
+    int np = A->nt, buf = 0, overflow = 0;
+    for (int f = 0; f < np; f++) {
+        w->start[0][f] = 3 * f; w->count[0][f] = 3; w->tag[0][f] = f;
+        for (int k = 0; k < 3; k++) memcpy(w->pts[0] + 3 * (3 * f + k), A->v + 3 * A->t[3 * f + k], 3 * sizeof(double));
+    }
+    if (c > 0) { np = clip_plane(w, buf, np, n, h, -1, &overflow); buf = 1; }
+    if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
+    /* S for the wall side: the cap (tag -1) with the wall's outward normal n;
+     * compute V, centroid via integrate (tag -1 is not an A face), then set
+     * the normal: from the wall to A is -n. */
+    double negn[3] = {-n[0], -n[1], -n[2]};
+    integrate(w, buf, np, 0, NULL, negn, r);
+    if (r->volume > 0) {
+        r->normal[0] = -n[0]; r->normal[1] = -n[1]; r->normal[2] = -n[2];
+        r->status = PC_OK;     /* the shadow on the plane normal to -n is the one computed */
+    }
+}
+
+/* ------------------------------------------------------------------ shape table */
+typedef struct {
+    int ns;
+    const int *voff, *toff;     /* (ns+1) */
+    const double *v;            /* local vertices */
+    const int *t;               /* local triangles (indices local to the shape) */
+    double *n, *h;              /* local unit normals and offsets per triangle */
+    double *radius;             /* bounding radius about the local origin */
+    int max_t, max_v;
+} table_t;
+
+static int table_init(table_t *T, int ns, const int *voff, const double *v, const int *toff, const int *t) {
+    T->ns = ns; T->voff = voff; T->toff = toff; T->v = v; T->t = t;
+    int ntot = toff[ns];
+    T->n = malloc(sizeof(double) * 3 * (ntot + 1));
+    T->h = malloc(sizeof(double) * (ntot + 1));
+    T->radius = malloc(sizeof(double) * (ns + 1));
+    if (!T->n || !T->h || !T->radius) return -1;
+    T->max_t = 0; T->max_v = 0;
+    for (int s = 0; s < ns; s++) {
+        const double *V = v + 3 * voff[s];
+        int nv = voff[s + 1] - voff[s], nt = toff[s + 1] - toff[s];
+        if (nt > T->max_t) T->max_t = nt;
+        if (nv > T->max_v) T->max_v = nv;
+        double r = 0;
+        for (int i = 0; i < nv; i++) { double q = sqrt(dot3(V + 3 * i, V + 3 * i)); if (q > r) r = q; }
+        T->radius[s] = r;
+        for (int f = 0; f < nt; f++) {
+            const int *tri = t + 3 * (toff[s] + f);
+            const double *a = V + 3 * tri[0], *b = V + 3 * tri[1], *c = V + 3 * tri[2];
+            double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+            double nn[3];
+            cross3(e1, e2, nn);
+            double l = sqrt(dot3(nn, nn));
+            if (l > 0) { nn[0] /= l; nn[1] /= l; nn[2] /= l; }
+            double *N = T->n + 3 * (toff[s] + f);
+            N[0] = nn[0]; N[1] = nn[1]; N[2] = nn[2];
+            /* offset from the mean of the three vertices (less round-off) */
+            T->h[toff[s] + f] = (dot3(a, nn) + dot3(b, nn) + dot3(c, nn)) / 3.0;
+        }
+    }
+    return 0;
+}
+static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); }
+
+/* pose shape s: rotated vertices (+ offset), rotated normals, offsets */
+static void pose_shape(const table_t *T, int s, const double *R, const double *off,
+                       double *vo, double *no, double *ho, posed_t *P) {
+    int v0 = T->voff[s], nv = T->voff[s + 1] - v0, t0 = T->toff[s], nt = T->toff[s + 1] - t0;
+    for (int i = 0; i < nv; i++) {
+        matvec(R, T->v + 3 * (v0 + i), vo + 3 * i);
+        vo[3 * i] += off[0]; vo[3 * i + 1] += off[1]; vo[3 * i + 2] += off[2];
+    }
+    for (int f = 0; f < nt; f++) {
+        matvec(R, T->n + 3 * (t0 + f), no + 3 * f);
+        ho[f] = T->h[t0 + f] + dot3(no + 3 * f, off);
+    }
+    P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
+}
+
+/* ================================================================== batched geometry (public API) */
+/* For P pairs: shape indices sa, sb into the table, positions (P,3), quaternions (P,4) w,x,y,z.
+ * Outputs: volume (P), centroid (P,3), normal (P,3), footprint (P,2), area (P), status (P).
+ * Returns 0, or -1 when memory could not be had. */
+int pc_batch_overlap(int ns, const int *voff, const double *v, const int *toff, const int *t,
+                     int npairs, const int *sa, const double *pa, const double *qa,
+                     const int *sb, const double *pb, const double *qb,
+                     double *vol, double *cen, double *nor, double *fp, double *area, int *status, int nthreads) {
+    table_t T;
+    if (table_init(&T, ns, voff, v, toff, t)) { table_free(&T); return -1; }
+    int err = 0;
+#ifdef _OPENMP
+    if (nthreads < 1) nthreads = omp_get_max_threads();
+#pragma omp parallel num_threads(nthreads)
+#endif
+    {
+        work_t w;
+        double *buf = malloc(sizeof(double) * (8 * (T.max_v + T.max_t) + 16));
+        int ok = (work_init(&w, T.max_t, T.max_v) == 0) && buf;
+        if (!ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            err = -1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (int p = 0; p < npairs; p++) {
+            if (!ok) continue;
+            double RA[9], RB[9], zero[3] = {0, 0, 0}, d[3];
+            quat_to_mat(qa + 4 * p, RA); quat_to_mat(qb + 4 * p, RB);
+            d[0] = pb[3 * p] - pa[3 * p]; d[1] = pb[3 * p + 1] - pa[3 * p + 1]; d[2] = pb[3 * p + 2] - pa[3 * p + 2];
+            double *va = buf, *na = va + 3 * T.max_v, *ha = na + 3 * T.max_t;
+            double *vb = ha + T.max_t, *nb = vb + 3 * T.max_v, *hb = nb + 3 * T.max_t;
+            posed_t A, B;
+            pose_shape(&T, sa[p], RA, zero, va, na, ha, &A);
+            pose_shape(&T, sb[p], RB, d, vb, nb, hb, &B);
+            overlap_t r;
+            overlap_pair(&A, &B, d, &w, &r, NULL);
+            vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
+            for (int c = 0; c < 3; c++) {
+                cen[3 * p + c] = r.volume > 0 ? r.centroid[c] + pa[3 * p + c] : NAN;
+                nor[3 * p + c] = r.normal[c];
+            }
+            fp[2 * p] = r.footprint[0]; fp[2 * p + 1] = r.footprint[1];
+        }
+        if (ok) work_free(&w);
+        free(buf);
+    }
+    table_free(&T);
+    return err;
+}
+
+/* P polyhedra against planes: plane point (P,3), unit normal m (P,3) pointing
+ * to the side where the polyhedron belongs; the overlap is the part of the
+ * polyhedron with (x - point).m < 0. The normal returned is m (from the wall
+ * towards the polyhedron). */
+int pc_batch_wall(int ns, const int *voff, const double *v, const int *toff, const int *t,
+                  int n, const int *s, const double *pos, const double *q, const double *wp, const double *wm,
+                  double *vol, double *cen, double *nor, double *fp, double *area, int *status, int nthreads) {
+    table_t T;
+    if (table_init(&T, ns, voff, v, toff, t)) { table_free(&T); return -1; }
+    int err = 0;
+#ifdef _OPENMP
+    if (nthreads < 1) nthreads = omp_get_max_threads();
+#pragma omp parallel num_threads(nthreads)
+#endif
+    {
+        work_t w;
+        double *buf = malloc(sizeof(double) * (4 * (T.max_v + T.max_t) + 16));
+        int ok = (work_init(&w, T.max_t, T.max_v) == 0) && buf;
+        if (!ok) {
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+            err = -1;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 8)
+#endif
+        for (int p = 0; p < n; p++) {
+            if (!ok) continue;
+            double R[9], zero[3] = {0, 0, 0};
+            quat_to_mat(q + 4 * p, R);
+            double *va = buf, *na = va + 3 * T.max_v, *ha = na + 3 * T.max_t;
+            posed_t A;
+            pose_shape(&T, s[p], R, zero, va, na, ha, &A);
+            /* plane in the body-centred frame: keep m.x >= m.(wp - pos), i.e. clip by (-m).x <= -m.(wp-pos) */
+            const double *m = wm + 3 * p;
+            double rel[3] = {wp[3 * p] - pos[3 * p], wp[3 * p + 1] - pos[3 * p + 1], wp[3 * p + 2] - pos[3 * p + 2]};
+            double nn[3] = {m[0], m[1], m[2]};
+            double h = dot3(m, rel);
+            /* the overlap is where m.x < h: clip with plane n = m, keep n.x <= h */
+            overlap_t r;
+            overlap_halfspace(&A, nn, h, &w, &r);
+            /* overlap_halfspace returns normal -n = -m; from the wall to the body is +m */
+            vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
+            for (int c = 0; c < 3; c++) {
+                cen[3 * p + c] = r.volume > 0 ? r.centroid[c] + pos[3 * p + c] : NAN;
+                nor[3 * p + c] = r.volume > 0 ? m[c] : NAN;
+            }
+            fp[2 * p] = r.footprint[0]; fp[2 * p + 1] = r.footprint[1];
+        }
+        if (ok) work_free(&w);
+        free(buf);
+    }
+    table_free(&T);
+    return err;
+}
+
+/* ================================================================== the engine */
+typedef struct {
+    int i, j;                 /* body rows, i < j */
+    double ft[3];             /* shear force on j by i (history) */
+    double axis[3];           /* cached separating axis (from i to j), 0 if none */
+    /* per-step results */
+    double vol, c[3], n[3], fp[2], area, fn[3];
+    int touching;
+} pair_t;
+
+typedef struct {
+    table_t T;
+    int nb, nw, nthreads;
+    const int *shape;          /* per body: row of the table (owned copy) */
+    int *shape_own;
+    double *size;              /* per body d */
+    double kv, ct, mu, mu_wall, skin;
+    /* walls: axis (0,1,2), inward sign (+1 lo wall, -1 hi wall) */
+    int wall_axis[16];
+    double wall_sign[16];
+    /* per body pose state */
+    double *R, *Rprev, *x, *xprev, *xbuild, *rv, *rn, *rh;
+    int *voffb, *toffb;        /* offsets into rv (vertices) and rn (triangles) per body */
+    int have_prev;
+    /* neighbour list */
+    pair_t *pairs; int npairs, cap_pairs;
+    pair_t *spare; int cap_spare;
+    /* wall contacts: nb x nw */
+    double *wft;               /* shear history per body-wall (nb*nw*3) */
+    double *wres;              /* per body-wall: vol, c(3), fp(2), area, fn(3) : 10 doubles */
+    int *wtouch;
+    /* workspaces */
+    work_t *work;
+    double *cellbuf; int *cellhead, *cellnext; int cellcap;
+    long nbuild;
+    double stat[8];
+} engine_t;
+
+void pc_engine_free(engine_t *E);
+
+engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *toff, const int *t,
+                        int nb, const int *shape, const double *size, int nw, const int *wall_axis,
+                        const double *wall_sign, double kv, double ct, double mu, double mu_wall,
+                        double skin, int nthreads) {
+    engine_t *E = calloc(1, sizeof(engine_t));
+    if (!E) return NULL;
+    /* own copies of the shape table (the caller's arrays may go away) */
+    int nvt = voff[ns], ntt = toff[ns];
+    int *vo = malloc(sizeof(int) * (ns + 1)), *to = malloc(sizeof(int) * (ns + 1));
+    double *vv = malloc(sizeof(double) * 3 * (nvt + 1));
+    int *tt = malloc(sizeof(int) * 3 * (ntt + 1));
+    if (!vo || !to || !vv || !tt) { free(vo); free(to); free(vv); free(tt); free(E); return NULL; }
+    memcpy(vo, voff, sizeof(int) * (ns + 1)); memcpy(to, toff, sizeof(int) * (ns + 1));
+    memcpy(vv, v, sizeof(double) * 3 * nvt); memcpy(tt, t, sizeof(int) * 3 * ntt);
+    if (table_init(&E->T, ns, vo, vv, to, tt)) { pc_engine_free(E); return NULL; }
+    E->nb = nb; E->nw = nw > 16 ? 16 : nw;
+    E->shape_own = malloc(sizeof(int) * (nb + 1)); E->size = malloc(sizeof(double) * (nb + 1));
+    memcpy(E->shape_own, shape, sizeof(int) * nb); memcpy(E->size, size, sizeof(double) * nb);
+    E->shape = E->shape_own;
+    for (int k = 0; k < E->nw; k++) { E->wall_axis[k] = wall_axis[k]; E->wall_sign[k] = wall_sign[k]; }
+    E->kv = kv; E->ct = ct; E->mu = mu; E->mu_wall = mu_wall; E->skin = skin;
+#ifdef _OPENMP
+    if (nthreads < 1) nthreads = omp_get_max_threads();
+#else
+    nthreads = 1;
+#endif
+    E->nthreads = nthreads;
+    E->R = malloc(sizeof(double) * 9 * nb); E->Rprev = malloc(sizeof(double) * 9 * nb);
+    E->x = malloc(sizeof(double) * 3 * nb); E->xprev = malloc(sizeof(double) * 3 * nb);
+    E->xbuild = malloc(sizeof(double) * 3 * nb);
+    E->voffb = malloc(sizeof(int) * (nb + 1)); E->toffb = malloc(sizeof(int) * (nb + 1));
+    E->voffb[0] = 0; E->toffb[0] = 0;
+    for (int b = 0; b < nb; b++) {
+        int s = shape[b];
+        E->voffb[b + 1] = E->voffb[b] + (voff[s + 1] - voff[s]);
+        E->toffb[b + 1] = E->toffb[b] + (toff[s + 1] - toff[s]);
+    }
+    E->rv = malloc(sizeof(double) * 3 * (E->voffb[nb] + 1));
+    E->rn = malloc(sizeof(double) * 3 * (E->toffb[nb] + 1));
+    E->rh = malloc(sizeof(double) * (E->toffb[nb] + 1));
+    E->wft = calloc((size_t)nb * E->nw * 3 + 1, sizeof(double));
+    E->wres = calloc((size_t)nb * E->nw * 10 + 1, sizeof(double));
+    E->wtouch = calloc((size_t)nb * E->nw + 1, sizeof(int));
+    E->work = calloc(nthreads, sizeof(work_t));
+    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->rv || !E->rn || !E->rh || !E->wft ||
+        !E->wres || !E->wtouch || !E->work) { pc_engine_free(E); return NULL; }
+    for (int k = 0; k < nthreads; k++)
+        if (work_init(&E->work[k], E->T.max_t, E->T.max_v)) { pc_engine_free(E); return NULL; }
+    E->have_prev = 0;
+    E->npairs = 0;
+    return E;
+}
+
+void pc_engine_free(engine_t *E) {
+    if (!E) return;
+    if (E->work) for (int k = 0; k < E->nthreads; k++) work_free(&E->work[k]);
+    free(E->work);
+    free((void *)E->T.voff); free((void *)E->T.toff); free((void *)E->T.v); free((void *)E->T.t);
+    table_free(&E->T);
+    free(E->shape_own); free(E->size);
+    free(E->R); free(E->Rprev); free(E->x); free(E->xprev); free(E->xbuild); free(E->voffb); free(E->toffb);
+    free(E->rv); free(E->rn); free(E->rh); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
+    free(E->wtouch); free(E->cellbuf); free(E->cellhead); free(E->cellnext);
+    free(E);
+}
+
+static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shape[b]]; }
+
+/* cell-grid neighbour search on bounding spheres with margin skin; keeps the
+ * history of pairs present in the old list (both lists sorted by (i, j)) */
+static int rebuild(engine_t *E) {
+    int nb = E->nb;
+    double rmax = 0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int b = 0; b < nb; b++) {
+        double r = body_radius(E, b);
+        if (r > rmax) rmax = r;
+        for (int c = 0; c < 3; c++) { double q = E->x[3 * b + c]; if (q < lo[c]) lo[c] = q; if (q > hi[c]) hi[c] = q; }
+    }
+    double cell = 2 * rmax + E->skin;
+    int nc[3];
+    long ncell = 1;
+    for (int c = 0; c < 3; c++) {
+        double span = hi[c] - lo[c];
+        if (!isfinite(span)) return -2;
+        nc[c] = (int)(span / cell);          /* cells at least `cell` wide */
+        if (nc[c] > 256) nc[c] = 256;
+        if (nc[c] < 1) nc[c] = 1;
+        ncell *= nc[c];
+    }
+    if (ncell > E->cellcap) {
+        free(E->cellhead);
+        E->cellhead = malloc(sizeof(int) * ncell);
+        E->cellcap = (int)ncell;
+        if (!E->cellhead) return -1;
+    }
+    free(E->cellnext);
+    E->cellnext = malloc(sizeof(int) * (nb + 1));
+    if (!E->cellnext) return -1;
+    for (long k = 0; k < ncell; k++) E->cellhead[k] = -1;
+    double csz[3];
+    for (int c = 0; c < 3; c++) csz[c] = (hi[c] - lo[c]) / nc[c] * (1 + 1e-12) + 1e-300;   /* >= cell */
+    int *cidx = malloc(sizeof(int) * 3 * (nb + 1));
+    if (!cidx) return -1;
+    for (int b = nb - 1; b >= 0; b--) {
+        int ci[3];
+        for (int c = 0; c < 3; c++) {
+            ci[c] = (int)((E->x[3 * b + c] - lo[c]) / csz[c]);
+            if (ci[c] >= nc[c]) ci[c] = nc[c] - 1;
+            if (ci[c] < 0) ci[c] = 0;
+            cidx[3 * b + c] = ci[c];
+        }
+        long k = ((long)ci[0] * nc[1] + ci[1]) * nc[2] + ci[2];
+        E->cellnext[b] = E->cellhead[k];
+        E->cellhead[k] = b;
+    }
+    /* new list into spare; pairs ordered by i then j (we emit per i, then sort j) */
+    int np = 0;
+    for (int i = 0; i < nb; i++) {
+        int start = np;
+        double ri = body_radius(E, i);
+        for (int dx = -1; dx <= 1; dx++) for (int dy = -1; dy <= 1; dy++) for (int dz = -1; dz <= 1; dz++) {
+            int a = cidx[3 * i] + dx, b2 = cidx[3 * i + 1] + dy, c2 = cidx[3 * i + 2] + dz;
+            if (a < 0 || b2 < 0 || c2 < 0 || a >= nc[0] || b2 >= nc[1] || c2 >= nc[2]) continue;
+            for (int j = E->cellhead[((long)a * nc[1] + b2) * nc[2] + c2]; j >= 0; j = E->cellnext[j]) {
+                if (j <= i) continue;
+                double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+                double reach = ri + body_radius(E, j) + E->skin;
+                if (dot3(d, d) > reach * reach) continue;
+                if (np >= E->cap_spare) {
+                    int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
+                    pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
+                    if (!s) { free(cidx); return -1; }
+                    E->spare = s; E->cap_spare = nc2;
+                }
+                pair_t *p = E->spare + np++;
+                memset(p, 0, sizeof(*p));
+                p->i = i; p->j = j;
+            }
+        }
+        /* sort this i's partners by j (insertion sort: few) */
+        for (int a = start + 1; a < np; a++) {
+            pair_t tmp = E->spare[a];
+            int b3 = a;
+            while (b3 > start && E->spare[b3 - 1].j > tmp.j) { E->spare[b3] = E->spare[b3 - 1]; b3--; }
+            E->spare[b3] = tmp;
+        }
+    }
+    free(cidx);
+    /* carry the history over (merge of two sorted lists) */
+    int a = 0;
+    for (int k = 0; k < np; k++) {
+        pair_t *p = E->spare + k;
+        while (a < E->npairs && (E->pairs[a].i < p->i || (E->pairs[a].i == p->i && E->pairs[a].j < p->j))) a++;
+        if (a < E->npairs && E->pairs[a].i == p->i && E->pairs[a].j == p->j) {
+            memcpy(p->ft, E->pairs[a].ft, sizeof(p->ft));
+            memcpy(p->axis, E->pairs[a].axis, sizeof(p->axis));
+        }
+    }
+    pair_t *tmp = E->pairs; int tcap = E->cap_pairs;
+    E->pairs = E->spare; E->cap_pairs = E->cap_spare; E->npairs = np;
+    E->spare = tmp; E->cap_spare = tcap;
+    memcpy(E->xbuild, E->x, sizeof(double) * 3 * nb);
+    E->nbuild++;
+    return 0;
+}
+
+/* displacement over the last step of the material point of body b now at c */
+static void point_disp(const engine_t *E, int b, const double *c, double *du) {
+    if (!E->have_prev) { du[0] = du[1] = du[2] = 0; return; }
+    const double *x = E->x + 3 * b, *xp = E->xprev + 3 * b, *R = E->R + 9 * b, *Rp = E->Rprev + 9 * b;
+    double r[3] = {c[0] - x[0], c[1] - x[1], c[2] - x[2]}, loc[3], old[3];
+    mattvec(R, r, loc);           /* in the body frame */
+    matvec(Rp, loc, old);         /* where it was */
+    du[0] = c[0] - (xp[0] + old[0]); du[1] = c[1] - (xp[1] + old[1]); du[2] = c[2] - (xp[2] + old[2]);
+}
+
+/* spin of body b about n over the step (rotation angle, small) */
+static double spin_about(const engine_t *E, int b, const double *n) {
+    if (!E->have_prev) return 0;
+    const double *R = E->R + 9 * b, *Rp = E->Rprev + 9 * b;
+    /* W = R Rp^T; its axial vector ~ rotation vector for small rotations */
+    double W[9];
+    for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++)
+        W[3 * r + c] = R[3 * r] * Rp[3 * c] + R[3 * r + 1] * Rp[3 * c + 1] + R[3 * r + 2] * Rp[3 * c + 2];
+    double w[3] = {0.5 * (W[7] - W[5]), 0.5 * (W[2] - W[6]), 0.5 * (W[3] - W[1])};
+    return dot3(w, n);
+}
+
+/* tangential update; ft in/out, returns 1 when sliding */
+static int tangential(double *ft, const double *n, double twist, const double *du, double kt, double mu, double fn) {
+    double f0 = sqrt(dot3(ft, ft));
+    double fdn = dot3(ft, n);
+    double f[3] = {ft[0] - fdn * n[0], ft[1] - fdn * n[1], ft[2] - fdn * n[2]};
+    double f1 = sqrt(dot3(f, f));
+    if (f1 > 0) { f[0] *= f0 / f1; f[1] *= f0 / f1; f[2] *= f0 / f1; }
+    if (twist != 0) {
+        double nf[3];
+        cross3(n, f, nf);
+        f[0] += twist * nf[0]; f[1] += twist * nf[1]; f[2] += twist * nf[2];
+    }
+    double dn = dot3(du, n);
+    f[0] -= kt * (du[0] - dn * n[0]); f[1] -= kt * (du[1] - dn * n[1]); f[2] -= kt * (du[2] - dn * n[2]);
+    double m = sqrt(dot3(f, f)), cap = mu * fn;
+    int slide = 0;
+    if (m > cap) { double s = m > 0 ? cap / m : 0; f[0] *= s; f[1] *= s; f[2] *= s; slide = 1; }
+    ft[0] = f[0]; ft[1] = f[1]; ft[2] = f[2];
+    return slide;
+}
+
+/* One step. pos (nb,3), quat (nb,4) w,x,y,z; wall_pos (nw) coordinate of each
+ * wall plane along its axis. Outputs: force, torque (nb,3) on the bodies,
+ * wall_force (nw,3) on the walls. stat: [0] touching pairs, [1] wall contacts,
+ * [2] neighbour pairs, [3] sliding, [4] sum |F_c|, [5] rebuilds, [6] sum |F_body|,
+ * [7] workspace errors. Returns 0, -1 (memory), -2 (non-finite positions). */
+int pc_engine_step(engine_t *E, const double *pos, const double *quat, const double *wall_pos,
+                   double *force, double *torque, double *wall_force, double *stat) {
+    int nb = E->nb, nw = E->nw;
+    /* poses */
+    if (E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
+    memcpy(E->x, pos, sizeof(double) * 3 * nb);
+    for (int b = 0; b < nb; b++) {
+        for (int c = 0; c < 3; c++) if (!isfinite(pos[3 * b + c])) return -2;
+        quat_to_mat(quat + 4 * b, E->R + 9 * b);
+    }
+    if (!E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
+    /* rotated vertices and normals (body-centred) */
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(E->nthreads) schedule(static)
+#endif
+    for (int b = 0; b < nb; b++) {
+        posed_t P;
+        double zero[3] = {0, 0, 0};
+        pose_shape(&E->T, E->shape[b], E->R + 9 * b, zero, E->rv + 3 * E->voffb[b], E->rn + 3 * E->toffb[b],
+                   E->rh + E->toffb[b], &P);
+    }
+    /* neighbour list: rebuild when a body moved more than skin/2 */
+    int need = E->npairs == 0 && E->nbuild == 0;
+    double lim = 0.25 * E->skin * E->skin;
+    for (int b = 0; b < nb && !need; b++) {
+        double d[3] = {E->x[3 * b] - E->xbuild[3 * b], E->x[3 * b + 1] - E->xbuild[3 * b + 1], E->x[3 * b + 2] - E->xbuild[3 * b + 2]};
+        if (dot3(d, d) > lim) need = 1;
+    }
+    if (need) { int e = rebuild(E); if (e) return e; }
+    int nwork = 0;
+    /* pairs */
+#ifdef _OPENMP
+#pragma omp parallel num_threads(E->nthreads) reduction(+:nwork)
+#endif
+    {
+        int tid = 0;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+#endif
+        work_t *w = &E->work[tid];
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+        for (int k = 0; k < E->npairs; k++) {
+            pair_t *p = E->pairs + k;
+            int i = p->i, j = p->j;
+            p->touching = 0;
+            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+            double reach = body_radius(E, i) + body_radius(E, j);
+            if (dot3(d, d) >= reach * reach) { memset(p->ft, 0, sizeof(p->ft)); continue; }
+            const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
+            int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
+            /* cached separating axis: max over i of u.v < min over j of u.(v + d) */
+            if (p->axis[0] != 0 || p->axis[1] != 0 || p->axis[2] != 0) {
+                double mi = -INFINITY, mj = INFINITY;
+                for (int a = 0; a < nvi; a++) { double s = dot3(vi + 3 * a, p->axis); if (s > mi) mi = s; }
+                double od = dot3(d, p->axis);
+                for (int a = 0; a < nvj && mj > mi; a++) { double s = dot3(vj + 3 * a, p->axis) + od; if (s < mj) mj = s; }
+                if (mi < mj) { memset(p->ft, 0, sizeof(p->ft)); continue; }
+            }
+            /* pose j relative to i: vertices + d, offsets + n.d; workspace scratch in w->dist region is in use
+             * during clipping, so use a per-thread copy area: w->dA (sized max_v*(max_t+1)) */
+            double *vjr = w->dA;                                  /* 3*max_v doubles */
+            double *hj = w->dA + 3 * E->T.max_v;                  /* max_t doubles */
+            for (int a = 0; a < nvj; a++) { vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2]; }
+            int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
+            const double *nj = E->rn + 3 * E->toffb[j];
+            for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+            posed_t A = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i]};
+            posed_t B = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj};
+            overlap_t r;
+            double sep[3];
+            nwork++;
+            overlap_pair(&A, &B, d, w, &r, sep);
+            if (r.status == PC_WORKSPACE) { p->vol = 0; continue; }
+            if (!(r.volume > 0)) {
+                /* apart: cache the separating face normal if there is one
+                 * (none when they are apart across an edge-edge axis) */
+                memcpy(p->axis, sep, sizeof(sep));
+                memset(p->ft, 0, sizeof(p->ft));
+                continue;
+            }
+            p->axis[0] = p->axis[1] = p->axis[2] = 0;
+            p->touching = 1;
+            p->vol = r.volume; p->area = r.area; p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1];
+            for (int c = 0; c < 3; c++) { p->c[c] = r.centroid[c] + E->x[3 * i + c]; p->n[c] = r.normal[c]; }
+            double fn = E->kv * r.volume;
+            p->fn[0] = fn * p->n[0]; p->fn[1] = fn * p->n[1]; p->fn[2] = fn * p->n[2];
+            /* tangential */
+            double dui[3], duj[3], du[3];
+            point_disp(E, i, p->c, dui); point_disp(E, j, p->c, duj);
+            du[0] = duj[0] - dui[0]; du[1] = duj[1] - dui[1]; du[2] = duj[2] - dui[2];
+            double twist = 0.5 * (spin_about(E, i, p->n) + spin_about(E, j, p->n));
+            double di = E->size[i], dj = E->size[j];
+            double dp = (di + dj > 0) ? 2 * di * dj / (di + dj) : 0;
+            double kt = E->ct * dp * dp;
+            tangential(p->ft, p->n, twist, du, kt, E->mu, fn);
+        }
+        /* walls */
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+        for (int b = 0; b < nb; b++) {
+            for (int k = 0; k < nw; k++) {
+                int idx = b * nw + k;
+                E->wtouch[idx] = 0;
+                int ax = E->wall_axis[k];
+                double sg = E->wall_sign[k];
+                /* inward normal m = sg e_ax; body side: sg (x - wall) >= 0 */
+                double gap = sg * (E->x[3 * b + ax] - wall_pos[k]);
+                if (gap >= body_radius(E, b)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+                const double *vb = E->rv + 3 * E->voffb[b];
+                int nvb = E->voffb[b + 1] - E->voffb[b];
+                double mn = INFINITY;
+                for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
+                if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+                posed_t A = {nvb, E->toffb[b + 1] - E->toffb[b], vb, E->T.t + 3 * E->T.toff[E->shape[b]],
+                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b]};
+                double n[3] = {0, 0, 0};
+                n[ax] = sg;                       /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
+                overlap_t r;
+                overlap_halfspace(&A, n, -gap, w, &r);
+                if (!(r.volume > 0)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+                E->wtouch[idx] = 1;
+                double *res = E->wres + 10 * idx;
+                double fn = E->kv * r.volume;
+                res[0] = r.volume;
+                for (int c = 0; c < 3; c++) res[1 + c] = r.centroid[c] + E->x[3 * b + c];
+                res[4] = r.footprint[0]; res[5] = r.footprint[1]; res[6] = r.area;
+                /* force on the body by the wall: along m */
+                for (int c = 0; c < 3; c++) res[7 + c] = fn * n[c];
+                if (E->mu_wall > 0) {
+                    double du[3];
+                    point_disp(E, b, res + 1, du);      /* the wall's own motion is normal to it */
+                    double twist = spin_about(E, b, n) * 0.5;
+                    double kt = E->ct * E->size[b] * E->size[b];
+                    tangential(E->wft + 3 * idx, n, twist, du, kt, E->mu_wall, fn);
+                } else {
+                    memset(E->wft + 3 * idx, 0, 3 * sizeof(double));
+                }
+            }
+        }
+    }
+    /* forces and torques (serial: a sum per body) */
+    memset(force, 0, sizeof(double) * 3 * nb);
+    memset(torque, 0, sizeof(double) * 3 * nb);
+    memset(wall_force, 0, sizeof(double) * 3 * nw);
+    double ntouch = 0, nslide = 0, sumF = 0, nwall = 0;
+    for (int k = 0; k < E->npairs; k++) {
+        pair_t *p = E->pairs + k;
+        if (!p->touching) continue;
+        ntouch++;
+        double F[3] = {p->fn[0] + p->ft[0], p->fn[1] + p->ft[1], p->fn[2] + p->ft[2]};
+        double fnm = sqrt(dot3(p->fn, p->fn));
+        if (sqrt(dot3(p->ft, p->ft)) >= E->mu * fnm * (1 - 1e-12) && fnm > 0) nslide++;
+        sumF += sqrt(dot3(F, F));
+        int i = p->i, j = p->j;
+        double ri[3] = {p->c[0] - E->x[3 * i], p->c[1] - E->x[3 * i + 1], p->c[2] - E->x[3 * i + 2]};
+        double rj[3] = {p->c[0] - E->x[3 * j], p->c[1] - E->x[3 * j + 1], p->c[2] - E->x[3 * j + 2]};
+        double ti[3], tj[3];
+        cross3(rj, F, tj); cross3(ri, F, ti);
+        for (int c = 0; c < 3; c++) {
+            force[3 * j + c] += F[c]; force[3 * i + c] -= F[c];
+            torque[3 * j + c] += tj[c]; torque[3 * i + c] -= ti[c];
+        }
+    }
+    for (int b = 0; b < nb; b++) for (int k = 0; k < nw; k++) {
+        int idx = b * nw + k;
+        if (!E->wtouch[idx]) continue;
+        nwall++;
+        double *res = E->wres + 10 * idx, *ft = E->wft + 3 * idx;
+        double F[3] = {res[7] + ft[0], res[8] + ft[1], res[9] + ft[2]};
+        sumF += sqrt(dot3(F, F));
+        double r[3] = {res[1] - E->x[3 * b], res[2] - E->x[3 * b + 1], res[3] - E->x[3 * b + 2]}, t[3];
+        cross3(r, F, t);
+        for (int c = 0; c < 3; c++) { force[3 * b + c] += F[c]; torque[3 * b + c] += t[c]; wall_force[3 * k + c] -= F[c]; }
+    }
+    double sumB = 0;
+    for (int b = 0; b < nb; b++) sumB += sqrt(dot3(force + 3 * b, force + 3 * b));
+    E->have_prev = 1;
+    E->stat[0] = ntouch; E->stat[1] = nwall; E->stat[2] = E->npairs; E->stat[3] = nslide; E->stat[4] = sumF;
+    E->stat[5] = (double)E->nbuild; E->stat[6] = sumB; E->stat[7] = nwork;
+    if (stat) memcpy(stat, E->stat, sizeof(E->stat));
+    return 0;
+}
+
+/* number of touching contacts (particle pairs, then body-wall) of the last step */
+int pc_engine_count(const engine_t *E) {
+    int n = 0;
+    for (int k = 0; k < E->npairs; k++) n += E->pairs[k].touching;
+    for (int k = 0; k < E->nb * E->nw; k++) n += E->wtouch[k];
+    return n;
+}
+
+/* The contacts of the last step, at most cap: body rows i, j (j = -1 - wall
+ * index for walls; i is then the wall side, j the body ... see below),
+ * point (3), normal (3, from i to j), normal force on j (3), tangential force
+ * on j (3), volume, footprint (2), area. For a wall contact: i1 = -1 - k
+ * (the wall), i2 = the body row; the normal points from the wall into the box.
+ * Returns the number written. */
+int pc_engine_contacts(const engine_t *E, int cap, int *i1, int *i2, double *point, double *normal,
+                       double *fnrm, double *ftan, double *vol, double *fp, double *area) {
+    int m = 0;
+    for (int k = 0; k < E->npairs && m < cap; k++) {
+        const pair_t *p = E->pairs + k;
+        if (!p->touching) continue;
+        i1[m] = p->i; i2[m] = p->j;
+        for (int c = 0; c < 3; c++) { point[3 * m + c] = p->c[c]; normal[3 * m + c] = p->n[c]; fnrm[3 * m + c] = p->fn[c]; ftan[3 * m + c] = p->ft[c]; }
+        vol[m] = p->vol; fp[2 * m] = p->fp[0]; fp[2 * m + 1] = p->fp[1]; area[m] = p->area;
+        m++;
+    }
+    for (int b = 0; b < E->nb; b++) for (int k = 0; k < E->nw && m < cap; k++) {
+        int idx = b * E->nw + k;
+        if (!E->wtouch[idx]) continue;
+        const double *res = E->wres + 10 * idx, *ft = E->wft + 3 * idx;
+        i1[m] = -1 - k; i2[m] = b;
+        double n[3] = {0, 0, 0};
+        n[E->wall_axis[k]] = E->wall_sign[k];
+        for (int c = 0; c < 3; c++) { point[3 * m + c] = res[1 + c]; normal[3 * m + c] = n[c]; fnrm[3 * m + c] = res[7 + c]; ftan[3 * m + c] = ft[c]; }
+        vol[m] = res[0]; fp[2 * m] = res[4]; fp[2 * m + 1] = res[5]; area[m] = res[6];
+        m++;
+    }
+    return m;
+}
+
+/* Memory held by the engine (bytes), for the benchmark. */
+long pc_engine_memory(const engine_t *E) {
+    long b = sizeof(engine_t);
+    b += (long)E->cap_pairs * sizeof(pair_t) + (long)E->cap_spare * sizeof(pair_t);
+    b += (long)E->nb * (9 * 2 + 3 * 3) * sizeof(double);
+    b += (long)(E->voffb[E->nb] * 3 + E->toffb[E->nb] * 4) * sizeof(double);
+    b += (long)E->nb * E->nw * 14 * sizeof(double);
+    for (int k = 0; k < E->nthreads; k++) {
+        const work_t *w = &E->work[k];
+        b += 2L * w->cap_pts * 3 * sizeof(double) + 6L * w->cap_poly * sizeof(int) + w->cap_pts * 3L * sizeof(double);
+    }
+    return b;
+}
+
+/* Set the shear history of the touching pair (i, j) (tests). Returns 0 if found. */
+int pc_engine_set_history(engine_t *E, int i, int j, const double *ft) {
+    for (int k = 0; k < E->npairs; k++)
+        if (E->pairs[k].i == i && E->pairs[k].j == j) { memcpy(E->pairs[k].ft, ft, 3 * sizeof(double)); return 0; }
+    return -1;
+}
