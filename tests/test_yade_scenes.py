@@ -59,15 +59,40 @@ def test_per_contact_tangential_law():
         assert abs(pair["shear_x"]) <= 0.5 * pair["normal"]
 
 
+def test_kernel_tangential_law_and_normal():
+    """The compiled kernel (no InteractionLoop) on the same three cube pairs:
+    the same per-contact law, and the exact volumetric normal law. The pair
+    at rest overlaps by exactly 0.1 mm over (2 cm)^2: V = 4e-8 m^3 and
+    F_n = k_V V = (young / 2) V = 2 N, normal exactly along z (S_A of two
+    aligned cubes). A sliding pair's overlap box loses the slid strip, and
+    A's side face inside it tilts the normal by atan(depth / (2h - slip)):
+    1e-4 / (0.02 - 1.9e-6) = 5.0005e-3 rad."""
+    res = cube_pairs("kernel")
+    kt, dt, steps = res["kt"], res["dt"], res["steps"]
+    for k, (pair, v) in enumerate(zip(res["pairs"], res["speeds"])):
+        expected = -kt * v * dt * (steps - 1)
+        assert pair["shear_x"] == pytest.approx(expected, rel=5e-5, abs=1e-12)
+        slip = abs(v) * dt * (steps - 1)
+        assert pair["volume"] == pytest.approx(1e-4 * 0.02 * (0.02 - slip), rel=1e-9)
+        assert pair["normal"] == pytest.approx(0.5e8 * pair["volume"], rel=1e-9)
+        if v != 0:
+            assert res["normal_tilt"][k] == pytest.approx(np.arctan(1e-4 / (0.02 - slip)), rel=1e-6)
+    assert res["normal_tilt"][2] < 1e-15                            # at rest: exactly along z
+
+
 # ------------------------------------------------------------ tiny triaxial runs
+KINDS = ("polyhedra", "polyhedra-yade", "spheres")
 @pytest.fixture(scope="session")
 def tiny_runs(tmp_path_factory, shape_library):
-    """Both samples on the tiny preset, run side by side (2 cores)."""
+    """Both samples on the tiny preset, run side by side (2 cores); S1 with
+    the compiled kernel (the default) and with YADE's stock contacts."""
     base = tmp_path_factory.mktemp("tiny")
     procs = {}
-    for kind in ("polyhedra", "spheres"):
+    for kind in KINDS:
         out = base / kind
-        generate(str(out), "tiny", kind, library=shape_library)
+        sample, engine = (kind.split("-") + ["kernel"])[:2]
+        generate(str(out), "tiny", sample, overrides={"contact_engine": engine, "kernel_threads": 1},
+                 library=shape_library)
         log = open(out / "yade.log", "w")
         procs[kind] = (subprocess.Popen([YADE, "-n", "-x", "triaxial.py"], cwd=out, stdout=log,
                                         stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL), out, log)
@@ -81,20 +106,30 @@ def tiny_runs(tmp_path_factory, shape_library):
     return runs
 
 
-@pytest.mark.parametrize("kind", ["polyhedra", "spheres"])
+@pytest.mark.parametrize("kind", KINDS)
 def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
     out = tiny_runs[kind]
     info = json.loads((out / "run.info.json").read_text())
     assert 0.3 < info["solid_fraction_isotropic"] < 0.75
     with DumpReader(str(out / "run.h5")) as r:
-        assert r.complete and r.sample_kind == kind
+        assert r.complete and r.sample_kind == kind.split("-")[0]
         # derived quantities are stored with the run parameters
         for key in ("dt", "dt_crit", "young", "rate_shear", "top_wall_speed", "solid_fraction_isotropic"):
             assert np.isfinite(r.parameters[key]) and r.parameters[key] > 0, key
         assert r.parameters["solid_fraction_isotropic"] == pytest.approx(info["solid_fraction_isotropic"])
         stages = [r.read(i).stage for i in range(len(r))]
         assert stages[0] == "isotropic" and stages.count("shear") >= 2
-        if kind == "polyhedra":
+        if kind == "polyhedra":                                     # the kernel's footprint is dumped
+            for i in range(len(r)):
+                s = r.read(i)
+                assert r.parameters["contact_engine"] == "kernel"
+                assert s.footprint.shape == (len(s.id1), 2) and np.all(s.footprint[:, 0] >= s.footprint[:, 1])
+                assert np.all(s.footprint[:, 1] > 0) and np.all(s.footprint_area > 0)
+                # the shadow lies in its m1 x m2 bounding rectangle
+                assert np.all(s.footprint_area <= s.footprint.prod(axis=1) * (1 + 1e-9))
+        if kind == "polyhedra-yade":
+            assert r.read(0).footprint is None and r.parameters["contact_engine"] == "yade"
+        if kind.startswith("polyhedra"):
             v, t, _ = r.shapes()
             snap = r.read(0)
             assert len(v) == len(snap.body_ids)
@@ -114,7 +149,7 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
             assert np.all(ft[walls] <= 1e-9 * fn[walls] + 1e-12)                 # frictionless walls
 
 
-@pytest.mark.parametrize("kind", ["polyhedra", "spheres"])
+@pytest.mark.parametrize("kind", KINDS)
 def test_wall_stresses_follow_the_servo(tiny_runs, kind):
     out = tiny_runs[kind]
     with DumpReader(str(out / "run.h5")) as r:
@@ -130,7 +165,7 @@ def test_wall_stresses_follow_the_servo(tiny_runs, kind):
     assert axial[-1] > SIGMA0                                       # the top wall loads the sample
 
 
-@pytest.mark.parametrize("kind", ["polyhedra", "spheres"])
+@pytest.mark.parametrize("kind", KINDS)
 def test_contact_stress_equals_wall_stress_plus_known_terms(tiny_runs, kind):
     """With the origin at the box centre c, the internal-moment stress obeys
     exactly (diagonal, compression positive)

@@ -41,7 +41,8 @@ class KernelContacts:
     """The kernel's contacts for one YADE scene.
 
     O : YADE's Omega. particles : (N,) body ids of the polyhedra. walls :
-    six wall body ids in the order x-, x+, y-, y+, z-, z+. vertices,
+    six wall body ids in the order x-, x+, y-, y+, z-, z+, or None for a
+    scene without walls. vertices,
     triangles : per particle, local vertices (V, 3) m and outward triangles
     (T, 3) as YADE holds them (``yadedump.polyhedra_shapes``). sizes : (N,)
     m. k_v : N/m^3 volumetric stiffness. kt_coef : N/m^3, k_t = kt_coef *
@@ -54,9 +55,9 @@ class KernelContacts:
                  skin, threads=0):
         self.O = O
         self.particles = np.asarray(particles, np.int64)
-        self.walls = [int(w) for w in walls]
-        if len(self.walls) != 6:
-            raise ValueError("six walls expected (x-, x+, y-, y+, z-, z+)")
+        self.walls = [int(w) for w in walls] if walls is not None else []
+        if len(self.walls) not in (0, 6):
+            raise ValueError("six walls expected (x-, x+, y-, y+, z-, z+), or None")
         self.states = [O.bodies[int(i)].state for i in self.particles]
         self.wall_states = [O.bodies[w].state for w in self.walls]
         n = len(self.particles)
@@ -72,14 +73,14 @@ class KernelContacts:
         self.lib = ckernel.load()
         self.handle = self.lib.pc_engine_new(
             n, ckernel.iptr(self.voff), ckernel.dptr(self.v), ckernel.iptr(self.toff), ckernel.iptr(self.t),
-            n, ckernel.iptr(self.shape), ckernel.dptr(self.size), 6, ckernel.iptr(self.wall_axis),
+            n, ckernel.iptr(self.shape), ckernel.dptr(self.size), len(self.walls), ckernel.iptr(self.wall_axis),
             ckernel.dptr(self.wall_sign), float(k_v), float(kt_coef), float(mu), float(mu_wall), float(skin),
             self.threads)
         if not self.handle:
             raise KernelError("could not create the contact kernel (out of memory?)")
         self.force = np.zeros((n, 3))
         self.torque = np.zeros((n, 3))
-        self.wall_force = np.zeros((6, 3))
+        self.wall_force = np.zeros((max(len(self.walls), 1), 3))
         self.stat = np.zeros(8)
         self.wall_pos = np.zeros(6)
         self.seconds = {"read": 0.0, "kernel": 0.0, "apply": 0.0}
@@ -164,8 +165,9 @@ class KernelContacts:
         m = self.lib.pc_engine_contacts(self.handle, n, ckernel.iptr(i1), ckernel.iptr(i2), ckernel.dptr(point),
                                         ckernel.dptr(normal), ckernel.dptr(fnrm), ckernel.dptr(ftan),
                                         ckernel.dptr(vol), ckernel.dptr(fp), ckernel.dptr(area))
-        walls = np.asarray(self.walls, np.int64)
-        id1 = np.where(i1[:m] >= 0, self.particles[np.maximum(i1[:m], 0)], walls[np.clip(-1 - i1[:m], 0, 5)])
+        walls = np.asarray(self.walls or [-1], np.int64)
+        id1 = np.where(i1[:m] >= 0, self.particles[np.maximum(i1[:m], 0)],
+                       walls[np.clip(-1 - i1[:m], 0, len(walls) - 1)])
         id2 = self.particles[i2[:m]]
         return {"id1": id1.astype(np.int64), "id2": id2.astype(np.int64), "point": point[:m],
                 "normal": normal[:m], "force_normal": fnrm[:m], "force_tangential": ftan[:m],

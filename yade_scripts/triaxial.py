@@ -188,7 +188,7 @@ if KERNEL:
                             friction, wall_friction, verlet_skin * d_mean, kernel_threads)
     O.engines = [
         ForceResetter(),
-        PyRunner(command="kernel_step()", iterPeriod=1, label="kernel_contacts"),
+        PyRunner(command="kernel_step()", iterPeriod=1, initRun=True, label="kernel_contacts"),
         PyRunner(command="control()", iterPeriod=1, label="controller"),
         NewtonIntegrator(damping=compaction_damping, label="newton"),
     ]
