@@ -12,6 +12,8 @@ STUDY ?= runs/study
 PRESET ?= default
 ENSEMBLE ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
+# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
+export OMP_WAIT_POLICY ?= PASSIVE
 
 .PHONY: test study system venv bench clean-venv shapes front kernel
 

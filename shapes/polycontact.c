@@ -42,6 +42,7 @@
 #define PC_OK 0
 #define PC_DEGENERATE_NORMAL 1   /* |S_A| ~ 0: normal from the centres (or z) */
 #define PC_WORKSPACE 2           /* workspace overflow (should not happen)    */
+#define PC_PARALLEL_MIN 400      /* pairs + body-wall tests below which a step runs on one thread */
 
 /* ------------------------------------------------------------------ small vector helpers */
 static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -868,9 +869,13 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         quat_to_mat(quat + 4 * b, E->R + 9 * b);
     }
     if (!E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
+    /* Threads only when a step has enough work: a parallel region costs a
+     * wake-up and a barrier (about 10-50 us with OMP_WAIT_POLICY=PASSIVE),
+     * more than a small scene's whole step. */
+    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
     /* rotated vertices and normals (body-centred) */
 #ifdef _OPENMP
-#pragma omp parallel for num_threads(E->nthreads) schedule(static)
+#pragma omp parallel for num_threads(E->nthreads) schedule(static) if (par)
 #endif
     for (int b = 0; b < nb; b++) {
         posed_t P;
@@ -887,9 +892,10 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
     }
     if (need) { int e = rebuild(E); if (e) return e; }
     int nwork = 0;
+    par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
     /* pairs */
 #ifdef _OPENMP
-#pragma omp parallel num_threads(E->nthreads) reduction(+:nwork)
+#pragma omp parallel num_threads(E->nthreads) reduction(+:nwork) if (par)
 #endif
     {
         int tid = 0;

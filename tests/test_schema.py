@@ -165,3 +165,38 @@ def test_system_python_can_write_a_dump(tmp_path):
     assert out.returncode == 0, out.stderr
     with DumpReader(path) as r:
         assert len(r) == 1 and r.complete
+
+
+def test_footprint_round_trip_and_version_1_still_reads(tmp_path):
+    """Version 2 adds the optional contacts/footprint (C, 2) and
+    footprint_area (C,); a version-1 file (no footprint) still reads, with
+    footprint None, and a footprint of the wrong shape is refused."""
+    from builders import snapshot_dicts
+
+    snap, _, _ = lattice_snapshot()
+    bodies, contacts = snapshot_dicts(snap)
+    n = len(snap.id1)
+    fp = np.column_stack([np.linspace(2e-3, 3e-3, n), np.linspace(1e-3, 2e-3, n)])
+    area = fp.prod(axis=1) * 0.7
+    path = tmp_path / "v2.h5"
+    kw = dict(step=0, time=0.0, stage="isotropic", box_lo=snap.box_lo, box_hi=snap.box_hi,
+              wall_ids=snap.wall_ids, wall_forces=snap.wall_forces, bodies=bodies)
+    with DumpWriter(str(path), "spheres", {}) as w:
+        w.write_snapshot(**kw, contacts={**contacts, "footprint": fp, "footprint_area": area})
+        with pytest.raises(DumpFormatError, match="contacts/footprint"):
+            w.write_snapshot(**kw, contacts={**contacts, "footprint": fp[:, :1]})
+    with DumpReader(str(path)) as r:
+        assert r.version == SCHEMA_VERSION == 2
+        s = r.read(0)
+        np.testing.assert_array_equal(s.footprint, fp)
+        np.testing.assert_array_equal(s.footprint_area, area)
+    old = tmp_path / "v1.h5"
+    with DumpWriter(str(old), "spheres", {}) as w:
+        w.write_snapshot(**kw, contacts=contacts)
+    with h5py.File(old, "r+") as f:                 # what a version-1 writer left
+        f.attrs["schema_version"] = 1
+    with DumpReader(str(old)) as r:
+        assert r.version == 1
+        s = r.read(0)
+        assert s.footprint is None and s.footprint_area is None
+        np.testing.assert_array_equal(s.force, snap.force)

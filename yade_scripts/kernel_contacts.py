@@ -48,7 +48,8 @@ class KernelContacts:
     m. k_v : N/m^3 volumetric stiffness. kt_coef : N/m^3, k_t = kt_coef *
     d_pair^2 with d_pair = 2 d1 d2 / (d1 + d2) (d of the particle for a wall).
     mu, mu_wall : friction coefficients. skin : m, Verlet margin of the
-    neighbour list. threads : OpenMP threads (0: every core).
+    neighbour list. threads : OpenMP threads (0: every core). A step with
+    fewer than 400 pairs and wall tests runs on one thread anyway.
     """
 
     def __init__(self, O, particles, walls, vertices, triangles, sizes, k_v, kt_coef, mu, mu_wall,

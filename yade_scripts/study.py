@@ -22,7 +22,7 @@ import subprocess
 import sys
 import threading
 
-from .batch import clear_attempt
+from .batch import clear_attempt, yade_env
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .presets import ConfigError, resolve
 
@@ -84,7 +84,8 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
         else:
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
         proc = subprocess.Popen([yade, "-n", "-x", "triaxial.py"], cwd=folder, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, bufsize=1)
+                                stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, bufsize=1,
+                                env=yade_env())
         t = threading.Thread(target=_relay, args=(s, proc, os.path.join(folder, "yade.log")), daemon=True)
         t.start()
         procs[s] = (proc, t)

@@ -14,7 +14,8 @@ This file is a template: ``python -m yade_scripts.generate`` copies it into a
 run folder with the parameters below set from a preset, next to lib/ (the
 helper modules) and, for polyhedra, shapes.h5. Run it there with
 
-    yade -x triaxial.py            (or yade -j2 -x triaxial.py)
+    yade -x triaxial.py            (or OMP_WAIT_POLICY=PASSIVE yade -j2 -x triaxial.py:
+                                    the polyhedra kernel then uses 2 threads)
     yade-batch table.txt triaxial.py     (sweeps and seed ensembles)
 
 A yade-batch table overrides any parameter by its name.
@@ -62,7 +63,7 @@ readParamsFromTable(
     report_seconds=10.0,         # seconds between progress lines
     timing=True,                 # record the time of each engine (run_info.json)
     contact_engine="kernel",     # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
-    kernel_threads=0,            # OpenMP threads of the kernel (0: every core)
+    kernel_threads=0,            # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
     verlet_skin=0.1,             # kernel neighbour-list margin, in units of the mean d
     noTableOk=True,
 )
@@ -185,7 +186,10 @@ if KERNEL:
 
     shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
     kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
-                            friction, wall_friction, verlet_skin * d_mean, kernel_threads)
+                            friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
+    if kernel.threads > 1 and os.environ.get("OMP_WAIT_POLICY", "").lower() != "passive":
+        print("triaxial.py: note: OMP_WAIT_POLICY=PASSIVE is not set; with other jobs on the same cores, "
+              "OpenMP's spinning threads can slow the kernel down many times", flush=True)
     O.engines = [
         ForceResetter(),
         PyRunner(command="kernel_step()", iterPeriod=1, initRun=True, label="kernel_contacts"),
