@@ -80,6 +80,9 @@ typedef struct {
     const int *t;       /* nt x 3 */
     const double *n;    /* nt x 3 */
     const double *h;    /* nt     */
+    const double *R;    /* 3 x 3 rotation (local -> frame), or NULL */
+    const double *box;  /* local bounding box lo[3], hi[3], or NULL */
+    double off[3];      /* position of the local origin in the frame */
 } posed_t;
 
 /* ------------------------------------------------------------------ clipping workspace */
@@ -106,8 +109,8 @@ static void work_free(work_t *w) {
 /* workspace for polyhedra with at most max_t triangles and max_v vertices */
 static int work_init(work_t *w, int max_t, int max_v) {
     memset(w, 0, sizeof(*w));
-    int P = 2 * max_t + 4;                      /* polygons: A's triangles + one cap per B plane */
-    long pts = (long)P * (long)(max_t + 4) + 16; /* each convex polygon gains at most one vertex per cut */
+    int P = 2 * max_t + 12;                     /* polygons: A's triangles + a cap per B plane and box plane */
+    long pts = (long)P * (long)(max_t + 12) + 16; /* each convex polygon gains at most one vertex per cut */
     w->cap_poly = P; w->cap_pts = (int)pts;
     for (int k = 0; k < 2; k++) {
         w->start[k] = malloc(sizeof(int) * P); w->count[k] = malloc(sizeof(int) * P);
@@ -115,7 +118,7 @@ static int work_init(work_t *w, int max_t, int max_v) {
     }
     w->capp = malloc(sizeof(double) * 3 * (2 * P + 4));
     w->dist = malloc(sizeof(double) * pts);
-    w->order = malloc(sizeof(int) * (max_t + 4));
+    w->order = malloc(sizeof(int) * (max_t + 12));
     w->proj = malloc(sizeof(double) * 2 * pts);
     w->hull = malloc(sizeof(int) * (pts + 2));
     w->dA = malloc(sizeof(double) * (long)max_v * (max_t + 1) + 8);
@@ -138,15 +141,17 @@ static void overlap_zero(overlap_t *r) {
     r->normal[0] = r->normal[1] = r->normal[2] = NAN;
 }
 
-/* sort cap points counter-clockwise about the plane normal n */
-static int cmp_ang(const void *a, const void *b) {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
+/* pseudo-angle of (x, y) in [0, 4): monotonic in the polar angle, no trig */
+static inline double pseudo_angle(double x, double y) {
+    double r = fabs(x) + fabs(y);
+    if (r == 0) return 0;
+    double p = y / r;                       /* in [-1, 1] */
+    return x >= 0 ? (y >= 0 ? p : 4 + p) : 2 - p;
 }
 
-/* Build the cap polygon from m points on a plane of unit normal n (outward of
- * the kept part): returns the points ordered counter-clockwise seen from n.
- * Sorting key/value pairs: we sort (angle, index) in a scratch array. */
+/* Order the m cap points (on a plane of unit normal n, outward of the kept
+ * part) counter-clockwise seen from n, by their pseudo-angle about their mean
+ * (insertion sort: m is small). scratch: 4 doubles per point. */
 static void order_cap(double *p, int m, const double *n, double *scratch) {
     double c[3] = {0, 0, 0};
     for (int i = 0; i < m; i++) { c[0] += p[3 * i]; c[1] += p[3 * i + 1]; c[2] += p[3 * i + 2]; }
@@ -156,20 +161,14 @@ static void order_cap(double *p, int m, const double *n, double *scratch) {
     cross3(n, a, u);
     double un = sqrt(dot3(u, u)); u[0] /= un; u[1] /= un; u[2] /= un;
     cross3(n, u, v);
-    /* scratch: 4 doubles per point: angle, x, y, z */
     for (int i = 0; i < m; i++) {
         double d[3] = {p[3 * i] - c[0], p[3 * i + 1] - c[1], p[3 * i + 2] - c[2]};
-        scratch[4 * i] = atan2(dot3(d, v), dot3(d, u));
-        scratch[4 * i + 1] = p[3 * i]; scratch[4 * i + 2] = p[3 * i + 1]; scratch[4 * i + 3] = p[3 * i + 2];
+        double key = pseudo_angle(dot3(d, u), dot3(d, v));
+        int j = i;
+        while (j > 0 && scratch[4 * (j - 1)] > key) { memcpy(scratch + 4 * j, scratch + 4 * (j - 1), 4 * sizeof(double)); j--; }
+        scratch[4 * j] = key; scratch[4 * j + 1] = p[3 * i]; scratch[4 * j + 2] = p[3 * i + 1]; scratch[4 * j + 3] = p[3 * i + 2];
     }
-    qsort(scratch, m, 4 * sizeof(double), cmp_ang);
     for (int i = 0; i < m; i++) { p[3 * i] = scratch[4 * i + 1]; p[3 * i + 1] = scratch[4 * i + 2]; p[3 * i + 2] = scratch[4 * i + 3]; }
-}
-
-static int cmp_xy(const void *a, const void *b) {
-    const double *p = a, *q = b;
-    if (p[0] != q[0]) return (p[0] > q[0]) - (p[0] < q[0]);
-    return (p[1] > q[1]) - (p[1] < q[1]);
 }
 
 /* shadow of the point set (npts points, 3D) on the plane normal to n:
@@ -181,8 +180,14 @@ static void shadow(const double *pts, int npts, const double *n, work_t *w, doub
     double un = sqrt(dot3(u, u)); u[0] /= un; u[1] /= un; u[2] /= un;
     cross3(n, u, v);
     double *P = w->proj;
-    for (int i = 0; i < npts; i++) { P[2 * i] = dot3(pts + 3 * i, u); P[2 * i + 1] = dot3(pts + 3 * i, v); }
-    qsort(P, npts, 2 * sizeof(double), cmp_xy);
+    for (int i = 0; i < npts; i++) {              /* project, insertion-sorted by (x, y) */
+        double x = dot3(pts + 3 * i, u), y = dot3(pts + 3 * i, v);
+        int j = i;
+        while (j > 0 && (P[2 * (j - 1)] > x || (P[2 * (j - 1)] == x && P[2 * (j - 1) + 1] > y))) {
+            P[2 * j] = P[2 * (j - 1)]; P[2 * j + 1] = P[2 * (j - 1) + 1]; j--;
+        }
+        P[2 * j] = x; P[2 * j + 1] = y;
+    }
     /* Andrew's monotone chain */
     int *H = w->hull, k = 0;
     for (int i = 0; i < npts; i++) {
@@ -303,10 +308,17 @@ static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, con
 }
 
 /* Clip the current polygon set (buffer buf, np polygons) by the plane
- * n.x <= h (tag = cap tag). Returns the new polygon count in buffer 1-buf. */
+ * n.x <= h (tag = cap tag). Returns the new polygon count in buffer 1-buf,
+ * or -1 when no point lies outside (the set is unchanged, still in buf). */
 static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int captag, int *overflow) {
     int *s0 = w->start[buf], *c0 = w->count[buf], *t0 = w->tag[buf];
     double *p0 = w->pts[buf];
+    {   /* the polygons are contiguous in the buffer: one pass decides */
+        const double *q0 = p0 + 3 * s0[0];
+        int tot = s0[np - 1] + c0[np - 1] - s0[0], any = 0;
+        for (int i = 0; i < tot && !any; i++) any = dot3(q0 + 3 * i, n) - h > 0;
+        if (!any) return -1;
+    }
     int *s1 = w->start[1 - buf], *c1 = w->count[1 - buf], *t1 = w->tag[1 - buf];
     double *p1 = w->pts[1 - buf];
     double *cap = w->capp;
@@ -352,13 +364,44 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
     return out;
 }
 
+/* centre (mean of the points) and radius of a sphere holding the polygons */
+static void bounding_sphere(const work_t *w, int buf, int np, double *c, double *r) {
+    const double *q0 = w->pts[buf] + 3 * w->start[buf][0];
+    int tot = w->start[buf][np - 1] + w->count[buf][np - 1] - w->start[buf][0];
+    c[0] = c[1] = c[2] = 0;
+    for (int i = 0; i < tot; i++) { c[0] += q0[3 * i]; c[1] += q0[3 * i + 1]; c[2] += q0[3 * i + 2]; }
+    c[0] /= tot; c[1] /= tot; c[2] /= tot;
+    double m = 0;
+    for (int i = 0; i < tot; i++) {
+        double d[3] = {q0[3 * i] - c[0], q0[3 * i + 1] - c[1], q0[3 * i + 2] - c[2]};
+        double l = dot3(d, d);
+        if (l > m) m = l;
+    }
+    *r = sqrt(m) * (1 + 1e-12) + 1e-300;
+}
+
 /* Overlap of A and B posed in the same frame. A's triangles are clipped by
  * B's planes (those that cut A, most cutting first). dAB is an optional
  * centre difference for the degenerate-normal fallback. */
 static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
-                         double *sep_axis) {
+                         double *sep_axis, int hot) {
     int ntB = B->nt;
     if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
+    int *ord = w->order, m = 0;
+    if (hot && dAB) {
+        /* A pair that touched at the last step: skip the separation tests
+         * (clipping finds an empty overlap anyway) and clip first by the
+         * planes of B that face A most, which cut the most; the planes that
+         * cut nothing cost one pass over the few points left. */
+        double *key = w->dist;
+        for (int k = 0; k < ntB; k++) {
+            double f = -dot3(B->n + 3 * k, dAB);      /* dAB = x_B - x_A: facing A is n.(x_A - x_B) > 0 */
+            int j = m++;
+            while (j > 0 && key[j - 1] < f) { ord[j] = ord[j - 1]; key[j] = key[j - 1]; j--; }
+            ord[j] = k; key[j] = f;
+        }
+        goto clip;
+    }
     /* distances of A's vertices to B's planes; separation by a face of B */
     int *nout = w->nout;
     for (int k = 0; k < ntB; k++) {
@@ -386,24 +429,33 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
         }
     }
     /* the planes that cut A, most cutting first (insertion sort, small n) */
-    int *ord = w->order, m = 0;
     for (int k = 0; k < ntB; k++) {
         if (nout[k] == 0) continue;
         int j = m++;
         while (j > 0 && nout[ord[j - 1]] < nout[k]) { ord[j] = ord[j - 1]; j--; }
         ord[j] = k;
     }
+clip:;
     /* A's triangles as the starting polygons */
     int np = A->nt, buf = 0, overflow = 0;
     for (int f = 0; f < np; f++) {
         w->start[0][f] = 3 * f; w->count[0][f] = 3; w->tag[0][f] = f;
         for (int c = 0; c < 3; c++) memcpy(w->pts[0] + 3 * (3 * f + c), A->v + 3 * A->t[3 * f + c], 3 * sizeof(double));
     }
+    /* Each plane of B in turn; a plane that cannot reach the bounding sphere
+     * of what is left cannot cut it. The sphere is refreshed after every
+     * plane that cut (what is left only shrinks, so a stale sphere is still
+     * a valid, looser bound). */
+    double sc[3] = {0, 0, 0}, sr = INFINITY;
     for (int i = 0; i < m && np > 0; i++) {
         int k = ord[i];
-        np = clip_plane(w, buf, np, B->n + 3 * k, B->h[k], A->nt + k, &overflow);
-        buf = 1 - buf;
+        if (dot3(B->n + 3 * k, sc) - B->h[k] + sr <= 0) continue;
+        int q = clip_plane(w, buf, np, B->n + 3 * k, B->h[k], A->nt + k, &overflow);
         if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
+        if (q >= 0) {
+            np = q; buf = 1 - buf;
+            if (np > 0) bounding_sphere(w, buf, np, sc, &sr);
+        }
     }
     integrate(w, buf, np, A->nt, A->n, dAB, r);
 }
@@ -420,7 +472,10 @@ static void overlap_halfspace(const posed_t *A, const double *n, double h, work_
         w->start[0][f] = 3 * f; w->count[0][f] = 3; w->tag[0][f] = f;
         for (int k = 0; k < 3; k++) memcpy(w->pts[0] + 3 * (3 * f + k), A->v + 3 * A->t[3 * f + k], 3 * sizeof(double));
     }
-    if (c > 0) { np = clip_plane(w, buf, np, n, h, -1, &overflow); buf = 1; }
+    if (c > 0) {
+        int q = clip_plane(w, buf, np, n, h, -1, &overflow);
+        if (q >= 0) { np = q; buf = 1; }
+    }
     if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
     /* S for the wall side: the cap (tag -1) with the wall's outward normal n;
      * compute V, centroid via integrate (tag -1 is not an A face), then set
@@ -441,6 +496,7 @@ typedef struct {
     const int *t;               /* local triangles (indices local to the shape) */
     double *n, *h;              /* local unit normals and offsets per triangle */
     double *radius;             /* bounding radius about the local origin */
+    double *box;                /* local bounding box per shape: lo[3], hi[3] */
     int max_t, max_v;
 } table_t;
 
@@ -450,15 +506,24 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->n = malloc(sizeof(double) * 3 * (ntot + 1));
     T->h = malloc(sizeof(double) * (ntot + 1));
     T->radius = malloc(sizeof(double) * (ns + 1));
-    if (!T->n || !T->h || !T->radius) return -1;
+    T->box = malloc(sizeof(double) * 6 * (ns + 1));
+    if (!T->n || !T->h || !T->radius || !T->box) return -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
         int nv = voff[s + 1] - voff[s], nt = toff[s + 1] - toff[s];
         if (nt > T->max_t) T->max_t = nt;
         if (nv > T->max_v) T->max_v = nv;
-        double r = 0;
-        for (int i = 0; i < nv; i++) { double q = sqrt(dot3(V + 3 * i, V + 3 * i)); if (q > r) r = q; }
+        double r = 0, *bx = T->box + 6 * s;
+        for (int c = 0; c < 3; c++) { bx[c] = INFINITY; bx[3 + c] = -INFINITY; }
+        for (int i = 0; i < nv; i++) {
+            double q = sqrt(dot3(V + 3 * i, V + 3 * i));
+            if (q > r) r = q;
+            for (int c = 0; c < 3; c++) {
+                if (V[3 * i + c] < bx[c]) bx[c] = V[3 * i + c];
+                if (V[3 * i + c] > bx[3 + c]) bx[3 + c] = V[3 * i + c];
+            }
+        }
         T->radius[s] = r;
         for (int f = 0; f < nt; f++) {
             const int *tri = t + 3 * (toff[s] + f);
@@ -476,7 +541,7 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     }
     return 0;
 }
-static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); }
+static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); free(T->box); }
 
 /* pose shape s: rotated vertices (+ offset), rotated normals, offsets */
 static void pose_shape(const table_t *T, int s, const double *R, const double *off,
@@ -491,6 +556,8 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
         ho[f] = T->h[t0 + f] + dot3(no + 3 * f, off);
     }
     P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
+    P->R = R; P->box = T->box + 6 * s;
+    P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
 }
 
 /* ================================================================== batched geometry (public API) */
@@ -532,7 +599,7 @@ int pc_batch_overlap(int ns, const int *voff, const double *v, const int *toff, 
             pose_shape(&T, sa[p], RA, zero, va, na, ha, &A);
             pose_shape(&T, sb[p], RB, d, vb, nb, hb, &B);
             overlap_t r;
-            overlap_pair(&A, &B, d, &w, &r, NULL);
+            overlap_pair(&A, &B, d, &w, &r, NULL, 0);
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
             for (int c = 0; c < 3; c++) {
                 cen[3 * p + c] = r.volume > 0 ? r.centroid[c] + pa[3 * p + c] : NAN;
@@ -909,6 +976,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         for (int k = 0; k < E->npairs; k++) {
             pair_t *p = E->pairs + k;
             int i = p->i, j = p->j;
+            int hot = p->touching;
             p->touching = 0;
             double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
             double reach = body_radius(E, i) + body_radius(E, j);
@@ -931,12 +999,14 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
             int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
             const double *nj = E->rn + 3 * E->toffb[j];
             for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
-            posed_t A = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i]};
-            posed_t B = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj};
+            posed_t A = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
+                         E->R + 9 * i, E->T.box + 6 * E->shape[i], {0, 0, 0}};
+            posed_t B = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
+                         E->R + 9 * j, E->T.box + 6 * E->shape[j], {d[0], d[1], d[2]}};
             overlap_t r;
             double sep[3];
             nwork++;
-            overlap_pair(&A, &B, d, w, &r, sep);
+            overlap_pair(&A, &B, d, w, &r, sep, hot);
             if (r.status == PC_WORKSPACE) { p->vol = 0; continue; }
             if (!(r.volume > 0)) {
                 /* apart: cache the separating face normal if there is one
@@ -980,7 +1050,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
                 for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
                 if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
                 posed_t A = {nvb, E->toffb[b + 1] - E->toffb[b], vb, E->T.t + 3 * E->T.toff[E->shape[b]],
-                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b]};
+                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, {0, 0, 0}};
                 double n[3] = {0, 0, 0};
                 n[ax] = sg;                       /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
                 overlap_t r;
