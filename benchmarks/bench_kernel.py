@@ -25,27 +25,15 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from postproc.schema import DumpReader  # noqa: E402
-from shapes import ckernel  # noqa: E402
+from shapes.engine import ContactEngine  # noqa: E402
 
 
 def make_engine(v, t, shape_index, sizes, params, threads):
-    lib = ckernel.load()
-    voff = ckernel.i32(np.concatenate([[0], np.cumsum([len(x) for x in v])]))
-    toff = ckernel.i32(np.concatenate([[0], np.cumsum([len(x) for x in t])]))
-    vv = ckernel.f64(np.concatenate(v))
-    tt = ckernel.i32(np.concatenate(t))
-    shape = ckernel.i32(shape_index)
-    size = ckernel.f64(sizes)
-    axis = ckernel.i32([0, 0, 1, 1, 2, 2])
-    sign = ckernel.f64([1, -1, 1, -1, 1, -1])
+    """The engine with the run's parameters (as the YADE scene builds it)."""
     kv = params["kn_volumetric"]
-    ct = params["tangential_ratio"] * kv * params["a_face"]
-    h = lib.pc_engine_new(len(v), ckernel.iptr(voff), ckernel.dptr(vv), ckernel.iptr(toff), ckernel.iptr(tt),
-                          len(shape), ckernel.iptr(shape), ckernel.dptr(size), 6, ckernel.iptr(axis),
-                          ckernel.dptr(sign), kv, ct, params["friction"], params["wall_friction"],
-                          params.get("verlet_skin", 0.1) * params["d_mean"], threads)
-    keep = (voff, toff, vv, tt, shape, size, axis, sign)
-    return lib, h, keep
+    return ContactEngine(v, t, shape_index, sizes, kv, params["tangential_ratio"] * kv * params["a_face"],
+                         params["friction"], params["wall_friction"], params.get("verlet_skin", 0.1) * params["d_mean"],
+                         walls=True, threads=threads)
 
 
 def quat_mul(a, b):
@@ -78,10 +66,9 @@ def main(argv=None):
     drot = rng.normal(scale=0.5e-5, size=(steps, n, 3))
     engines = {th: make_engine(v, [np.asarray(x, np.int32) for x in t], s.shape_index, s.sizes, params, th)
                for th in args.threads}
-    force, torque, wf, stat = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((6, 3)), np.zeros(8)
     stats = {}
     for th in args.threads:                                 # warm-up pass: counts per step
-        lib, h, _ = engines[th]
+        eng = engines[th]
         pos = s.positions.copy()
         q = s.orientations.copy()
         touching = pairs = clipped = 0
@@ -89,18 +76,16 @@ def main(argv=None):
             pos = pos + dpos[k]
             q = quat_mul(np.concatenate([np.ones((n, 1)), drot[k]], axis=1), q)
             q /= np.linalg.norm(q, axis=1)[:, None]
-            lib.pc_engine_step(h, ckernel.dptr(np.ascontiguousarray(pos)), ckernel.dptr(np.ascontiguousarray(q)),
-                               ckernel.dptr(wall_pos), ckernel.dptr(force), ckernel.dptr(torque), ckernel.dptr(wf),
-                               ckernel.dptr(stat))
-            touching += stat[0] + stat[1]
-            pairs += stat[2]
-            clipped += stat[7]
+            eng.step(pos, q, wall_pos)
+            touching += eng.stat[0] + eng.stat[1]
+            pairs += eng.stat[2]
+            clipped += eng.stat[7]
         stats[th] = (touching / steps, pairs / steps, clipped / steps)
     # timed passes: only the kernel calls
     times = {th: [] for th in args.threads}
     for rep in range(args.repeat):
         for th in args.threads:
-            lib, h, _ = engines[th]
+            eng = engines[th]
             pos = s.positions.copy()
             q = s.orientations.copy()
             poses = []
@@ -111,8 +96,7 @@ def main(argv=None):
                 poses.append((np.ascontiguousarray(pos), np.ascontiguousarray(q)))
             t0 = time.perf_counter()
             for pc, qc in poses:
-                lib.pc_engine_step(h, ckernel.dptr(pc), ckernel.dptr(qc), ckernel.dptr(wall_pos),
-                                   ckernel.dptr(force), ckernel.dptr(torque), ckernel.dptr(wf), ckernel.dptr(stat))
+                eng.step(pc, qc, wall_pos)
             times[th].append((time.perf_counter() - t0) / steps)
     out = {"dump": args.dump, "snapshot": args.snapshot, "particles": n, "steps_per_block": steps,
            "blocks": args.repeat, "results": {}}
@@ -120,10 +104,9 @@ def main(argv=None):
     print(f"{'threads':>8} {'ms/step':>9} {'touching':>9} {'pairs':>7} {'clipped':>8} "
           f"{'us/touching':>12} {'us/pair':>8} {'MB':>6}")
     for th in args.threads:
-        lib, h, _ = engines[th]
         med = float(np.median(times[th]))
         touching, pairs, clipped = stats[th]
-        mem = lib.pc_engine_memory(h) / 1e6
+        mem = engines[th].memory_bytes() / 1e6
         out["results"][th] = {"ms_per_step": med * 1e3, "touching": touching, "pairs": pairs, "clipped": clipped,
                               "us_per_touching": med * 1e6 / touching, "us_per_pair": med * 1e6 / pairs,
                               "memory_MB": mem, "blocks_ms": [x * 1e3 for x in times[th]]}
@@ -134,9 +117,8 @@ def main(argv=None):
         ratio = np.median(np.array(times[a]) / np.array(times[b]))
         print(f"speed-up {a} -> {b} threads (median of block ratios): {ratio:.2f}")
         out["speedup"] = float(ratio)
-    for th in args.threads:
-        lib, h, _ = engines[th]
-        lib.pc_engine_free(h)
+    for eng in engines.values():
+        eng.close()
     if args.json:
         with open(args.json, "w") as fh:
             json.dump(out, fh, indent=1)

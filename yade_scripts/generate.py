@@ -38,6 +38,7 @@ LIB_FILES = {  # copied name: source
     "yadedump.py": os.path.join(HERE, "yadedump.py"),
     "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
     "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
+    "engine.py": os.path.join(ROOT, "shapes", "engine.py"),
     "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),
 }
 DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")

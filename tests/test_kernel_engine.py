@@ -1,0 +1,235 @@
+"""The contact engine (shapes/engine.py on the compiled kernel), without YADE.
+
+The engine takes a different path from the one-pair geometry of
+``shapes.overlap``: a Verlet list, cached separating axes, and for pairs that
+touched at the last step no separation tests and another clipping order. So
+its contacts are checked against ``batch_overlap`` / ``batch_wall`` on the
+same poses; the two agree to round-off (tolerances: 1e-9 relative, about
+1e6 x the 1e-15 of the clipping in double precision, since the two paths clip
+in different orders). The laws are checked against exact values, and the
+forces against Newton's third law.
+"""
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from shapes.engine import ContactEngine, EngineError
+from shapes.generate import generate_library
+from shapes.overlap import ShapeTable, batch_overlap, batch_wall
+
+K_V, KT_COEF, MU = 1.0e7, 2.0e5, 0.5
+
+
+@pytest.fixture(scope="module")
+def grains():
+    shapes, _ = generate_library(16, seed=11)
+    return [s.vertices for s in shapes], [s.triangles for s in shapes]
+
+
+def packing(grains, m, seed, spacing=0.55):
+    """m^3 grains of d = 1 (some scaled to 0.7) on a jittered lattice of the
+    given spacing, in random orientations: neighbours overlap by a few
+    percent of their volume or not at all."""
+    rng = np.random.default_rng(seed)
+    n = m ** 3
+    idx = np.stack(np.meshgrid(*[np.arange(m)] * 3, indexing="ij"), -1).reshape(-1, 3)
+    pos = spacing * idx + rng.uniform(-0.04, 0.04, size=(n, 3))
+    quat = np.roll(Rotation.random(n, random_state=rng).as_quat(), 1, axis=1)     # (w, x, y, z)
+    shape = rng.integers(len(grains[0]), size=n)
+    scale = np.where(rng.random(n) < 0.3, 0.7, 1.0)
+    verts = [grains[0][s] * c for s, c in zip(shape, scale)]
+    tris = [grains[1][s] for s in shape]
+    sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
+    return verts, tris, pos, quat, sizes
+
+
+def engine_for(verts, tris, sizes, walls, threads=1, skin=0.05):
+    return ContactEngine(verts, tris, np.arange(len(verts)), sizes, K_V, KT_COEF, MU, 0.0, skin,
+                         walls=walls, threads=threads)
+
+
+def reference_pairs(verts, tris, pos, quat):
+    """Every touching pair i < j by the one-pair geometry."""
+    n = len(verts)
+    i, j = np.triu_indices(n, 1)
+    table = ShapeTable(list(zip(verts, tris)))
+    r = batch_overlap(table, i, pos[i], quat[i], j, pos[j], quat[j], threads=1)
+    keep = r["volume"] > 0
+    return i[keep], j[keep], {k: v[keep] for k, v in r.items()}
+
+
+def check_pairs(c, verts, tris, pos, quat, sizes):
+    pp = c["i"] >= 0
+    i, j, ref = reference_pairs(verts, tris, pos, quat)
+    got = sorted(zip(c["i"][pp].tolist(), c["j"][pp].tolist()))
+    assert got == sorted(zip(i.tolist(), j.tolist()))
+    order = np.lexsort((c["j"][pp], c["i"][pp]))
+    ref_order = np.lexsort((j, i))
+    d = sizes.max()
+    vol = c["volume"][pp][order]
+    np.testing.assert_allclose(vol, ref["volume"][ref_order], rtol=1e-9, atol=0)
+    np.testing.assert_allclose(c["point"][pp][order], ref["centroid"][ref_order], rtol=0, atol=1e-9 * d)
+    np.testing.assert_allclose(c["normal"][pp][order], ref["normal"][ref_order], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(c["footprint"][pp][order], ref["footprint"][ref_order], rtol=0, atol=1e-9 * d)
+    np.testing.assert_allclose(c["area"][pp][order], ref["area"][ref_order], rtol=1e-9, atol=1e-12 * d * d)
+    # the volumetric normal law, exactly: F_n = k_V V n on j
+    np.testing.assert_allclose(c["force_normal"][pp], K_V * c["volume"][pp, None] * c["normal"][pp],
+                               rtol=1e-15, atol=0)
+    return len(i)
+
+
+def test_engine_contacts_match_the_pair_geometry(grains):
+    verts, tris, pos, quat, sizes = packing(grains, 3, seed=1)
+    eng = engine_for(verts, tris, sizes, walls=False)
+    eng.step(pos, quat)
+    n = check_pairs(eng.contacts(), verts, tris, pos, quat, sizes)
+    assert n > 20                      # the packing has contacts to check
+    # a second step with small rigid motions: the pairs that touched take the
+    # engine's other path (no separation tests, planes facing A first)
+    rng = np.random.default_rng(2)
+    pos2 = pos + rng.normal(scale=2e-3, size=pos.shape)
+    rot = Rotation.from_rotvec(rng.normal(scale=5e-3, size=(len(pos), 3)))
+    q2 = np.roll((rot * Rotation.from_quat(np.roll(quat, -1, axis=1))).as_quat(), 1, axis=1)
+    eng.step(pos2, q2)
+    check_pairs(eng.contacts(), verts, tris, pos2, q2, sizes)
+
+
+def test_wall_contacts_match_the_half_space_cut(grains):
+    verts, tris, pos, quat, sizes = packing(grains, 3, seed=3)
+    lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1          # walls cut the outer grains
+    wall_pos = np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
+    eng = engine_for(verts, tris, sizes, walls=True)
+    eng.step(pos, quat, wall_pos)
+    c = eng.contacts()
+    w = c["i"] < 0
+    assert w.sum() > 10
+    table = ShapeTable(list(zip(verts, tris)))
+    n = len(verts)
+    for k in range(6):
+        axis, sign = k // 2, (1.0, -1.0)[k % 2]
+        m = np.zeros(3)
+        m[axis] = sign
+        point = np.zeros(3)
+        point[axis] = wall_pos[k]
+        ref = batch_wall(table, np.arange(n), pos, quat, np.tile(point, (n, 1)), np.tile(m, (n, 1)), threads=1)
+        mine = c["i"] == -1 - k
+        touching = np.flatnonzero(ref["volume"] > 0)
+        assert sorted(c["j"][mine].tolist()) == touching.tolist()
+        rows = np.flatnonzero(mine)[np.argsort(c["j"][mine])]
+        np.testing.assert_allclose(c["volume"][rows], ref["volume"][touching], rtol=1e-12)
+        np.testing.assert_allclose(c["point"][rows], ref["centroid"][touching], atol=1e-12)
+        np.testing.assert_array_equal(c["normal"][rows], np.tile(m, (len(rows), 1)))
+        np.testing.assert_allclose(c["footprint"][rows], ref["footprint"][touching], atol=1e-12)
+        # frictionless walls: no tangential force
+        assert np.all(c["force_tangential"][rows] == 0)
+
+
+def test_forces_obey_newtons_third_law(grains):
+    """Pairs only: total force and total moment (torques + x cross F) vanish;
+    with walls the forces on the walls balance those on the particles."""
+    verts, tris, pos, quat, sizes = packing(grains, 3, seed=4)
+    eng = engine_for(verts, tris, sizes, walls=False)
+    rng = np.random.default_rng(5)
+    for step in range(3):                              # tangential forces build up
+        pos = pos + rng.normal(scale=1e-3, size=pos.shape)
+        F, T, _ = eng.step(pos, quat)
+    scale = np.abs(F).sum()
+    assert scale > 0 and np.linalg.norm(eng.contacts()["force_tangential"]) > 0
+    assert np.linalg.norm(F.sum(axis=0)) < 1e-13 * scale
+    moment = T.sum(axis=0) + np.cross(pos, F).sum(axis=0)
+    assert np.linalg.norm(moment) < 1e-12 * scale * np.abs(pos).max()
+    lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1
+    eng2 = engine_for(verts, tris, sizes, walls=True)
+    F, T, W = eng2.step(pos, quat, np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]]))
+    assert np.abs(W).sum() > 0
+    assert np.linalg.norm(F.sum(axis=0) + W.sum(axis=0)) < 1e-13 * np.abs(F).sum()
+
+
+def cube():
+    v = np.array([[x, y, z] for x in (-.5, .5) for y in (-.5, .5) for z in (-.5, .5)])
+    t = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                  [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    return v, t
+
+
+def test_tangential_law_elastic_then_coulomb():
+    """Two unit cubes face to face, overlap depth h: V = h, F_n = k_V h along
+    z exactly. The top cube slides along x by s per step: |f_t| grows by
+    k_t s' per step (s' the tangential part of the step, the normal tilting
+    as the overlap's x-extent shrinks) until it reaches mu F_n; then it stays
+    there, opposite the sliding. k_t = KT_COEF d^2 with d = sqrt(3)."""
+    v, t = cube()
+    d = np.sqrt(3.0)
+    eng = ContactEngine([v], [t], [0, 0], [d, d], K_V, KT_COEF, MU, 0.0, 0.1, walls=False, threads=1)
+    h, s = 1e-4, 1e-4
+    q = np.tile([1.0, 0, 0, 0], (2, 1))
+    kt = KT_COEF * d * d
+    fn = K_V * h                                       # the face overlap: 1 x 1 x h
+    cap = MU * fn
+    slid = 0.0
+    for k in range(40):
+        eng.step(np.array([[0, 0, 0], [slid, 0, 1 - h]]), q)
+        c = eng.contacts()
+        ft = c["force_tangential"][0]
+        n = c["normal"][0]
+        vol = c["volume"][0]
+        assert vol == pytest.approx(h * (1 - slid), rel=1e-12)
+        # once sliding, the normal tilts by atan(h / (1 - slid)) towards +x:
+        # S_A has A's +x face strip (h x 1) besides the top face
+        # ((1 - slid) x 1); aligned, both x faces lie on A and B and cancel
+        tilt = np.array([h, 0, 1 - slid]) if slid > 0 else np.array([0, 0, 1.0])
+        assert n == pytest.approx(tilt / np.linalg.norm(tilt), abs=1e-12)
+        expected = min(kt * s * k, MU * K_V * vol)        # up to the tilt factor (1e-6 here)
+        assert np.linalg.norm(ft) == pytest.approx(expected, rel=2e-6)
+        assert ft[0] <= 0 and abs(ft @ n) < 1e-12 * (np.linalg.norm(ft) + 1e-30)
+        slid += s
+    assert kt * s * 39 > cap                           # the run did reach the cap
+
+
+def test_threads_give_identical_forces_and_history_survives_rebuilds(grains):
+    verts, tris, pos, quat, sizes = packing(grains, 6, seed=6)      # 216 grains: the parallel path
+    lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1
+    walls = np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
+    engines = [engine_for(verts, tris, sizes, walls=True, threads=th) for th in (1, 2)]
+    rng = np.random.default_rng(7)
+    p = pos
+    for step in range(4):
+        p = p + rng.normal(scale=1e-3, size=p.shape)
+        out = [tuple(a.copy() for a in e.step(p, quat, walls)) for e in engines]
+        for a, b in zip(*out):
+            np.testing.assert_array_equal(a, b)
+    e = engines[0]
+    c = e.contacts()
+    k = int(np.flatnonzero(c["i"] >= 0)[0])
+    i, j = int(c["i"][k]), int(c["j"][k])
+    before = e.n_rebuilds
+    # move a body far from (i, j) by more than the skin: the list is rebuilt;
+    # (i, j) did not move, so its shear force is only turned into the new
+    # tangent plane (which is the old one): unchanged
+    far = int(np.argmax(np.linalg.norm(p - p[i], axis=1)))
+    assert far not in (i, j)
+    p2 = p.copy()
+    p2[far] += [0.2, 0, 0]
+    e.step(p2, quat, walls)
+    assert e.n_rebuilds == before + 1
+    c2 = e.contacts()
+    k2 = int(np.flatnonzero((c2["i"] == i) & (c2["j"] == j))[0])
+    np.testing.assert_allclose(c2["force_tangential"][k2], c["force_tangential"][k], rtol=1e-12, atol=0)
+    e.set_history(i, j, [0.0, 0.0, 0.0])
+    with pytest.raises(KeyError):
+        e.set_history(far, far, [0.0, 0.0, 0.0])
+
+
+def test_bad_input_is_refused_clearly(grains):
+    verts, tris, pos, quat, sizes = packing(grains, 2, seed=8)
+    eng = engine_for(verts, tris, sizes, walls=False)
+    bad = pos.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(EngineError, match="not finite"):
+        eng.step(bad, quat)
+    with pytest.raises(ValueError, match="positions must be"):
+        eng.step(pos[:-1], quat)
+    with pytest.raises(ValueError, match="shape index out of range"):
+        ContactEngine(verts, tris, np.arange(len(verts)) + 1, sizes, K_V, KT_COEF, MU, 0, 0.05)
+    eng.step(pos, quat)                                # a refused step leaves the engine usable
+    assert eng.n_pair_contacts >= 0
