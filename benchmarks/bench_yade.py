@@ -9,6 +9,9 @@ or point it at any run folders. The cost split separates YADE's contact
 detection and laws (InteractionLoop: for polyhedra the CGAL intersection of
 every pair of overlapping bounding boxes) from our per-contact tangential law
 (the "tangential" PyRunner) and the Python controller (servo, dumps, checks).
+With the compiled kernel (``contact_engine = "kernel"``) the contacts are the
+"kernel_contacts" PyRunner, split into reading the poses, the C kernel and
+adding the forces; its contact-steps are counted exactly, every step.
 """
 import glob
 import json
@@ -33,6 +36,12 @@ def summarize(folder):
     for name, sec in sorted(eng.items(), key=lambda kv: -kv[1]):
         lines.append(f"    {name:24s} {sec:9.1f} s  {100 * sec / total:5.1f} %  "
                      f"{sec / steps * 1e3:8.3f} ms/step")
+    k = info.get("kernel")
+    if k:
+        lines.append(f"  kernel ({k['threads']} threads, {k['memory_bytes'] / 1e6:.1f} MB): "
+                     + ", ".join(f"{part} {k[part]:.1f} s" for part in ("read", "kernel", "apply"))
+                     + f"; {k['touch_steps']:.3g} contact-steps exactly, "
+                     f"{info['wall_seconds'] / max(k['touch_steps'], 1) * 1e6:.2f} us per contact-step")
     return "\n".join(lines)
 
 

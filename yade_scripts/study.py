@@ -3,8 +3,11 @@
     python -m yade_scripts.study --preset default --out runs/study [--ensemble N]
 
 One seed (default): each sample gets its run folder (``OUT/polyhedra``,
-``OUT/spheres``) and both run side by side (one core each), YADE's progress
-lines relayed with the sample name in front. ``--ensemble N`` (N >= 2):
+``OUT/spheres``) and both run side by side, YADE's progress lines relayed
+with the sample name in front. S1 with the compiled contact kernel runs as
+``yade -j2`` (the kernel takes YADE's thread count; S2 is over in seconds,
+then S1 has both cores); S2, and S1 on YADE's stock contacts (which crashed
+with several threads), run on one thread. ``--ensemble N`` (N >= 2):
 each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
 1..N, run by yade-batch on ``--jobs`` cores (spheres first, they are
 quick). Complete dumps are never run again, so a rerun only does what is
@@ -66,6 +69,15 @@ def _relay(name, proc, logpath):
                 print(f"[{name}] {line[len('triaxial.py: '):].rstrip()}", flush=True)
 
 
+def _threads(sample, preset, overrides):
+    """YADE threads of a single run: all cores for the polyhedra kernel, one
+    otherwise."""
+    p = resolve(preset, sample, overrides)
+    if sample == "polyhedra" and p["contact_engine"] == "kernel":
+        return os.cpu_count() or 1
+    return 1
+
+
 def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
     """Generate (if needed) and run the samples in parallel; returns
     {sample: return code (0 = done or already done)}."""
@@ -83,7 +95,9 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
             clear_attempt(os.path.join(folder, "run.h5"))   # an unfinished attempt; its log is kept
         else:
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
-        proc = subprocess.Popen([yade, "-n", "-x", "triaxial.py"], cwd=folder, stdout=subprocess.PIPE,
+        threads = _threads(s, preset, overrides)
+        proc = subprocess.Popen([yade, "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder,
+                                stdout=subprocess.PIPE,
                                 stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, bufsize=1,
                                 env=yade_env())
         t = threading.Thread(target=_relay, args=(s, proc, os.path.join(folder, "yade.log")), daemon=True)
