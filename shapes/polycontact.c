@@ -867,6 +867,7 @@ static int rebuild(engine_t *E) {
         if (a < E->npairs && E->pairs[a].i == p->i && E->pairs[a].j == p->j) {
             memcpy(p->ft, E->pairs[a].ft, sizeof(p->ft));
             memcpy(p->axis, E->pairs[a].axis, sizeof(p->axis));
+            p->touching = E->pairs[a].touching;      /* the pair touched at the last step */
         }
     }
     pair_t *tmp = E->pairs; int tcap = E->cap_pairs;
@@ -1029,6 +1030,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
             double di = E->size[i], dj = E->size[j];
             double dp = (di + dj > 0) ? 2 * di * dj / (di + dj) : 0;
             double kt = E->ct * dp * dp;
+            if (!hot) { du[0] = du[1] = du[2] = 0; twist = 0; }   /* a new contact starts unloaded */
             tangential(p->ft, p->n, twist, du, kt, E->mu, fn);
         }
         /* walls */
@@ -1038,6 +1040,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         for (int b = 0; b < nb; b++) {
             for (int k = 0; k < nw; k++) {
                 int idx = b * nw + k;
+                int whot = E->wtouch[idx];
                 E->wtouch[idx] = 0;
                 int ax = E->wall_axis[k];
                 double sg = E->wall_sign[k];
@@ -1067,6 +1070,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
                 if (E->mu_wall > 0) {
                     double du[3];
                     point_disp(E, b, res + 1, du);      /* the wall's own motion is normal to it */
+                    if (!whot) { du[0] = du[1] = du[2] = 0; }
                     double twist = spin_about(E, b, n) * 0.5;
                     double kt = E->ct * E->size[b] * E->size[b];
                     tangential(E->wft + 3 * idx, n, twist, du, kt, E->mu_wall, fn);
