@@ -82,6 +82,7 @@ typedef struct {
     const double *h;    /* nt     */
     const double *R;    /* 3 x 3 rotation (local -> frame), or NULL */
     const double *box;  /* local bounding box lo[3], hi[3], or NULL */
+    const unsigned char *dup;  /* per triangle: 1 if its plane repeats an earlier triangle's, or NULL */
     double off[3];      /* position of the local origin in the frame */
 } posed_t;
 
@@ -308,15 +309,19 @@ static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, con
 }
 
 /* Clip the current polygon set (buffer buf, np polygons) by the plane
- * n.x <= h (tag = cap tag). Returns the new polygon count in buffer 1-buf,
- * or -1 when no point lies outside (the set is unchanged, still in buf). */
-static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int captag, int *overflow) {
+ * n.x <= h (tag = cap tag). A point is outside when n.x - h > eps, a
+ * round-off tolerance: a plane that (nearly) contains a face or an earlier
+ * cap must not cut it into slivers of either sign and a second cap. Returns
+ * the new polygon count in buffer 1-buf, or -1 when no point lies outside
+ * (the set is unchanged, still in buf). */
+static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int captag, double eps,
+                      int *overflow) {
     int *s0 = w->start[buf], *c0 = w->count[buf], *t0 = w->tag[buf];
     double *p0 = w->pts[buf];
     {   /* the polygons are contiguous in the buffer: one pass decides */
         const double *q0 = p0 + 3 * s0[0];
         int tot = s0[np - 1] + c0[np - 1] - s0[0], any = 0;
-        for (int i = 0; i < tot && !any; i++) any = dot3(q0 + 3 * i, n) - h > 0;
+        for (int i = 0; i < tot && !any; i++) any = dot3(q0 + 3 * i, n) - h > eps;
         if (!any) return -1;
     }
     int *s1 = w->start[1 - buf], *c1 = w->count[1 - buf], *t1 = w->tag[1 - buf];
@@ -328,7 +333,7 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
         double *P = p0 + 3 * st;
         double *d = w->dist;
         int nin = 0;
-        for (int i = 0; i < cn; i++) { d[i] = dot3(P + 3 * i, n) - h; nin += d[i] <= 0; }
+        for (int i = 0; i < cn; i++) { d[i] = dot3(P + 3 * i, n) - h; nin += d[i] <= eps; }
         if (nin == 0) continue;                                     /* all outside */
         if (q + cn + 1 > w->cap_pts || out + 2 > w->cap_poly) { *overflow = 1; return 0; }
         s1[out] = q; t1[out] = t0[f];
@@ -342,12 +347,14 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
             int j = (i + 1 == cn) ? 0 : i + 1;
             const double *a = P + 3 * i, *b = P + 3 * j;
             double da = d[i], db = d[j];
-            if (da <= 0) { memcpy(p1 + 3 * (q + m), a, 3 * sizeof(double)); m++; }
-            if ((da <= 0) != (db <= 0)) {
+            int ina = da <= eps, inb = db <= eps;
+            if (ina) { memcpy(p1 + 3 * (q + m), a, 3 * sizeof(double)); m++; }
+            if (ina != inb) {
                 /* canonical: from the inside end to the outside end */
-                const double *pi = da <= 0 ? a : b, *po = da <= 0 ? b : a;
-                double di = da <= 0 ? da : db, dout = da <= 0 ? db : da;
+                const double *pi = ina ? a : b, *po = ina ? b : a;
+                double di = ina ? da : db, dout = ina ? db : da;
                 double t = di / (di - dout);
+                t = t < 0 ? 0 : (t > 1 ? 1 : t);
                 double x[3] = {pi[0] + t * (po[0] - pi[0]), pi[1] + t * (po[1] - pi[1]), pi[2] + t * (po[2] - pi[2])};
                 memcpy(p1 + 3 * (q + m), x, 3 * sizeof(double)); m++;
                 memcpy(cap + 3 * ncap, x, 3 * sizeof(double)); ncap++;
@@ -447,10 +454,18 @@ clip:;
      * plane that cut (what is left only shrinks, so a stale sphere is still
      * a valid, looser bound). */
     double sc[3] = {0, 0, 0}, sr = INFINITY;
+    /* round-off tolerance of a plane test: the coordinates are O(r_A + |x_B - x_A|) */
+    double ra = 0;
+    for (int i = 0; i < A->nv; i++) {
+        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
+        ra = q > ra ? q : ra;
+    }
+    double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
     for (int i = 0; i < m && np > 0; i++) {
         int k = ord[i];
+        if (B->dup && B->dup[k]) continue;                 /* the same plane as an earlier triangle */
         if (dot3(B->n + 3 * k, sc) - B->h[k] + sr <= 0) continue;
-        int q = clip_plane(w, buf, np, B->n + 3 * k, B->h[k], A->nt + k, &overflow);
+        int q = clip_plane(w, buf, np, B->n + 3 * k, B->h[k], A->nt + k, eps, &overflow);
         if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
         if (q >= 0) {
             np = q; buf = 1 - buf;
@@ -473,7 +488,12 @@ static void overlap_halfspace(const posed_t *A, const double *n, double h, work_
         for (int k = 0; k < 3; k++) memcpy(w->pts[0] + 3 * (3 * f + k), A->v + 3 * A->t[3 * f + k], 3 * sizeof(double));
     }
     if (c > 0) {
-        int q = clip_plane(w, buf, np, n, h, -1, &overflow);
+        double ra = 0;
+        for (int i = 0; i < A->nv; i++) {
+            double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
+            ra = q > ra ? q : ra;
+        }
+        int q = clip_plane(w, buf, np, n, h, -1, 1e-13 * (ra + fabs(h)), &overflow);
         if (q >= 0) { np = q; buf = 1; }
     }
     if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
@@ -497,6 +517,7 @@ typedef struct {
     double *n, *h;              /* local unit normals and offsets per triangle */
     double *radius;             /* bounding radius about the local origin */
     double *box;                /* local bounding box per shape: lo[3], hi[3] */
+    unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
     int max_t, max_v;
 } table_t;
 
@@ -507,7 +528,8 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->h = malloc(sizeof(double) * (ntot + 1));
     T->radius = malloc(sizeof(double) * (ns + 1));
     T->box = malloc(sizeof(double) * 6 * (ns + 1));
-    if (!T->n || !T->h || !T->radius || !T->box) return -1;
+    T->dup = calloc(ntot + 1, 1);
+    if (!T->n || !T->h || !T->radius || !T->box || !T->dup) return -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
@@ -537,11 +559,19 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
             N[0] = nn[0]; N[1] = nn[1]; N[2] = nn[2];
             /* offset from the mean of the three vertices (less round-off) */
             T->h[toff[s] + f] = (dot3(a, nn) + dot3(b, nn) + dot3(c, nn)) / 3.0;
+            /* coplanar with an earlier triangle (a face split in triangles)? */
+            for (int g = 0; g < f; g++) {
+                const double *M = T->n + 3 * (toff[s] + g);
+                if (dot3(M, nn) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r) {
+                    T->dup[toff[s] + f] = 1;
+                    break;
+                }
+            }
         }
     }
     return 0;
 }
-static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); free(T->box); }
+static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); }
 
 /* pose shape s: rotated vertices (+ offset), rotated normals, offsets */
 static void pose_shape(const table_t *T, int s, const double *R, const double *off,
@@ -556,7 +586,7 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
         ho[f] = T->h[t0 + f] + dot3(no + 3 * f, off);
     }
     P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
-    P->R = R; P->box = T->box + 6 * s;
+    P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
     P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
 }
 
@@ -1001,9 +1031,9 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
             const double *nj = E->rn + 3 * E->toffb[j];
             for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
             posed_t A = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
-                         E->R + 9 * i, E->T.box + 6 * E->shape[i], {0, 0, 0}};
+                         E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0}};
             posed_t B = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
-                         E->R + 9 * j, E->T.box + 6 * E->shape[j], {d[0], d[1], d[2]}};
+                         E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]}};
             overlap_t r;
             double sep[3];
             nwork++;
@@ -1053,7 +1083,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
                 for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
                 if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
                 posed_t A = {nvb, E->toffb[b + 1] - E->toffb[b], vb, E->T.t + 3 * E->T.toff[E->shape[b]],
-                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, {0, 0, 0}};
+                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, NULL, {0, 0, 0}};
                 double n[3] = {0, 0, 0};
                 n[ax] = sg;                       /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
                 overlap_t r;
