@@ -99,6 +99,12 @@ def load():
     lib.pc_engine_memory.restype = ctypes.c_long
     lib.pc_engine_set_history.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, _D]
     lib.pc_engine_set_history.restype = ctypes.c_int
+    lib.pc_engine_npairs.argtypes = [ctypes.c_void_p]
+    lib.pc_engine_npairs.restype = ctypes.c_int
+    lib.pc_engine_get_state.argtypes = [ctypes.c_void_p, _D, _D, _D, _I, _D, _D, _D, _I, _D]
+    lib.pc_engine_get_state.restype = None
+    lib.pc_engine_set_state.argtypes = [ctypes.c_void_p, _D, _D, _D, ctypes.c_int, _I, _D, _D, _D, _I, _D]
+    lib.pc_engine_set_state.restype = ctypes.c_int
     _LIB = lib
     return lib
 

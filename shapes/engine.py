@@ -150,6 +150,54 @@ class ContactEngine:
         if self.lib.pc_engine_set_history(self.handle, int(i), int(j), ckernel.dptr(f)) != 0:
             raise KeyError(f"pair ({i}, {j}) is not in the neighbour list")
 
+    STATE_KEYS = ("x", "R", "xbuild", "pair_ids", "pair_records", "wall_shear", "wall_results", "wall_touching",
+                  "scalars")
+
+    def state(self):
+        """Everything later steps depend on, as a dict of numpy arrays (for
+        a checkpoint): the last poses, the neighbour list with each pair's
+        shear history, cached separating axis, touched flag and results, the
+        wall contacts' histories, and the counters. An engine built with the
+        same shapes, bodies and walls and given this state by
+        :meth:`set_state` continues bit for bit like this one."""
+        n, nw = self.n, max(self.nw, 1)
+        npairs = int(self.lib.pc_engine_npairs(self.handle))
+        st = {"x": np.zeros((n, 3)), "R": np.zeros((n, 9)), "xbuild": np.zeros((n, 3)),
+              "pair_ids": np.zeros((npairs, 2), np.int32), "pair_records": np.zeros((npairs, 20)),
+              "wall_shear": np.zeros((n * nw, 3)), "wall_results": np.zeros((n * nw, 10)),
+              "wall_touching": np.zeros(n * nw, np.int32), "scalars": np.zeros(2)}
+        self.lib.pc_engine_get_state(self.handle, ckernel.dptr(st["x"]), ckernel.dptr(st["R"]),
+                                     ckernel.dptr(st["xbuild"]), ckernel.iptr(st["pair_ids"]),
+                                     ckernel.dptr(st["pair_records"]), ckernel.dptr(st["wall_shear"]),
+                                     ckernel.dptr(st["wall_results"]), ckernel.iptr(st["wall_touching"]),
+                                     ckernel.dptr(st["scalars"]))
+        return st
+
+    def set_state(self, st):
+        """Restore a :meth:`state` (raises ValueError when it does not fit
+        this engine: other body count, wall count or pair ids)."""
+        n, nw = self.n, max(self.nw, 1)
+        missing = [k for k in self.STATE_KEYS if k not in st]
+        if missing:
+            raise ValueError(f"engine state lacks {missing}")
+        a = {k: (ckernel.i32(st[k]) if k in ("pair_ids", "wall_touching") else ckernel.f64(st[k]))
+             for k in self.STATE_KEYS}
+        npairs = len(a["pair_ids"])
+        shapes = {"x": (n, 3), "R": (n, 9), "xbuild": (n, 3), "pair_ids": (npairs, 2), "pair_records": (npairs, 20),
+                  "wall_shear": (n * nw, 3), "wall_results": (n * nw, 10), "wall_touching": (n * nw,), "scalars": (2,)}
+        for k, shp in shapes.items():
+            if a[k].shape != shp:
+                raise ValueError(f"engine state: {k} has shape {a[k].shape}, this engine needs {shp}")
+        err = self.lib.pc_engine_set_state(self.handle, ckernel.dptr(a["x"]), ckernel.dptr(a["R"]),
+                                           ckernel.dptr(a["xbuild"]), npairs, ckernel.iptr(a["pair_ids"]),
+                                           ckernel.dptr(a["pair_records"]), ckernel.dptr(a["wall_shear"]),
+                                           ckernel.dptr(a["wall_results"]), ckernel.iptr(a["wall_touching"]),
+                                           ckernel.dptr(a["scalars"]))
+        if err == -3:
+            raise ValueError("engine state: pair ids out of range or unsorted (not a state of this engine)")
+        if err:
+            raise EngineError("could not restore the engine state (out of memory)")
+
     def contacts(self):
         """The touching contacts of the last step: a dict of arrays. ``i``,
         ``j`` body rows (``i`` = -1 - k for wall k, with ``j`` the body),

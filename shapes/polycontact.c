@@ -1212,3 +1212,74 @@ int pc_engine_set_history(engine_t *E, int i, int j, const double *ft) {
         if (E->pairs[k].i == i && E->pairs[k].j == j) { memcpy(E->pairs[k].ft, ft, 3 * sizeof(double)); return 0; }
     return -1;
 }
+
+/* ================================================================== engine state (checkpoints) */
+/* Everything a later step depends on, so that an engine restored from it
+ * continues bit for bit like the original: the last poses (x, R), the
+ * neighbour list's reference positions, every listed pair (ids, shear history,
+ * cached separating axis, touched flag, last results), the wall contacts'
+ * histories, flags and results, and the counters. Pair records are 20
+ * doubles: ft(3) axis(3) vol c(3) n(3) fp(2) area fn(3) touching. */
+#define PC_PAIR_DOUBLES 20
+
+int pc_engine_npairs(const engine_t *E) { return E->npairs; }
+
+void pc_engine_get_state(const engine_t *E, double *x, double *R, double *xbuild, int *ij, double *prec,
+                         double *wft, double *wres, int *wtouch, double *scalars) {
+    int nb = E->nb, nw = E->nw;
+    memcpy(x, E->x, sizeof(double) * 3 * nb);
+    memcpy(R, E->R, sizeof(double) * 9 * nb);
+    memcpy(xbuild, E->xbuild, sizeof(double) * 3 * nb);
+    for (int k = 0; k < E->npairs; k++) {
+        const pair_t *p = E->pairs + k;
+        double *r = prec + PC_PAIR_DOUBLES * k;
+        ij[2 * k] = p->i; ij[2 * k + 1] = p->j;
+        memcpy(r, p->ft, 3 * sizeof(double)); memcpy(r + 3, p->axis, 3 * sizeof(double));
+        r[6] = p->vol; memcpy(r + 7, p->c, 3 * sizeof(double)); memcpy(r + 10, p->n, 3 * sizeof(double));
+        memcpy(r + 13, p->fp, 2 * sizeof(double)); r[15] = p->area; memcpy(r + 16, p->fn, 3 * sizeof(double));
+        r[19] = p->touching;
+    }
+    memcpy(wft, E->wft, sizeof(double) * 3 * nb * nw);
+    memcpy(wres, E->wres, sizeof(double) * 10 * nb * nw);
+    memcpy(wtouch, E->wtouch, sizeof(int) * nb * nw);
+    scalars[0] = E->have_prev; scalars[1] = (double)E->nbuild;
+}
+
+/* Restore a state taken by pc_engine_get_state from an engine built with the
+ * same shapes, bodies and walls. Returns 0, -1 (memory) or -3 (a pair id out
+ * of range or not sorted: not a state of this engine). */
+int pc_engine_set_state(engine_t *E, const double *x, const double *R, const double *xbuild, int npairs,
+                        const int *ij, const double *prec, const double *wft, const double *wres, const int *wtouch,
+                        const double *scalars) {
+    int nb = E->nb, nw = E->nw;
+    for (int k = 0; k < npairs; k++) {
+        int i = ij[2 * k], j = ij[2 * k + 1];
+        if (i < 0 || j <= i || j >= nb) return -3;
+        if (k > 0 && (ij[2 * k - 2] > i || (ij[2 * k - 2] == i && ij[2 * k - 1] >= j))) return -3;
+    }
+    if (npairs > E->cap_pairs) {
+        pair_t *p = realloc(E->pairs, sizeof(pair_t) * (npairs + 1));
+        if (!p) return -1;
+        E->pairs = p; E->cap_pairs = npairs + 1;
+    }
+    memcpy(E->x, x, sizeof(double) * 3 * nb);
+    memcpy(E->R, R, sizeof(double) * 9 * nb);
+    memcpy(E->xbuild, xbuild, sizeof(double) * 3 * nb);
+    E->npairs = npairs;
+    for (int k = 0; k < npairs; k++) {
+        pair_t *p = E->pairs + k;
+        const double *r = prec + PC_PAIR_DOUBLES * k;
+        memset(p, 0, sizeof(*p));
+        p->i = ij[2 * k]; p->j = ij[2 * k + 1];
+        memcpy(p->ft, r, 3 * sizeof(double)); memcpy(p->axis, r + 3, 3 * sizeof(double));
+        p->vol = r[6]; memcpy(p->c, r + 7, 3 * sizeof(double)); memcpy(p->n, r + 10, 3 * sizeof(double));
+        memcpy(p->fp, r + 13, 2 * sizeof(double)); p->area = r[15]; memcpy(p->fn, r + 16, 3 * sizeof(double));
+        p->touching = r[19] != 0;
+    }
+    memcpy(E->wft, wft, sizeof(double) * 3 * nb * nw);
+    memcpy(E->wres, wres, sizeof(double) * 10 * nb * nw);
+    memcpy(E->wtouch, wtouch, sizeof(int) * nb * nw);
+    E->have_prev = scalars[0] != 0;
+    E->nbuild = (long)scalars[1];
+    return 0;
+}
