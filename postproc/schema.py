@@ -248,6 +248,51 @@ class DumpWriter:
         self._closed = False
         self._write_master()
 
+    @classmethod
+    def resume(cls, path, n_snapshots):
+        """Reopen the unfinished run ``path`` (not closed: its parts folder is
+        still there) to append after its first ``n_snapshots`` snapshots,
+        the count a checkpoint recorded. Snapshots written after that (by a
+        run that went on past its checkpoint and then died) are removed, so
+        the resumed run has no duplicate and no gap. Raises DumpFormatError
+        (one line) when the run is complete, has fewer snapshots or an
+        unreadable one."""
+        path = os.path.abspath(path)
+        parts = path + ".parts"
+        if not os.path.isdir(parts):
+            raise DumpFormatError(f"{path}: no parts folder to resume (a complete run, or no run)")
+        try:
+            with h5py.File(path, "r") as f:
+                attrs = {k: f.attrs[k] for k in f.attrs if k != "n_snapshots"}
+        except OSError as exc:
+            raise DumpFormatError(f"{path}: master file unreadable ({exc.__class__.__name__})") from None
+        if attrs.get("schema") != SCHEMA_NAME or int(attrs.get("schema_version", -1)) != SCHEMA_VERSION:
+            raise DumpFormatError(f"{path}: not a version-{SCHEMA_VERSION} {SCHEMA_NAME} run")
+        self = cls.__new__(cls)
+        self.path, self.parts = path, parts
+        self.attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in attrs.items()}
+        self.attrs["complete"] = 0
+        self._links, self._closed = {}, False
+        if os.path.exists(os.path.join(parts, "shapes.h5")):
+            self._links["shapes"] = ("shapes.h5", "/shapes")
+        for k in range(int(n_snapshots)):
+            base = f"snapshot_{k:06d}.h5"
+            try:
+                with h5py.File(os.path.join(parts, base), "r") as f:
+                    f["snapshot"].attrs["step"]
+            except (OSError, KeyError):
+                raise DumpFormatError(f"{path}: snapshot {k:06d} is missing or unreadable; "
+                                      f"cannot resume after {n_snapshots} snapshots") from None
+            self._links[f"snapshots/{k:06d}"] = (base, "/snapshot")
+        self._n_snapshots = int(n_snapshots)
+        for name in os.listdir(parts):        # later snapshots and half-written files
+            later = name.startswith("snapshot_") and name.endswith(".h5") and \
+                name[len("snapshot_"):-3].isdigit() and int(name[len("snapshot_"):-3]) >= self._n_snapshots
+            if later or name.endswith(".tmp"):
+                os.remove(os.path.join(parts, name))
+        self._write_master()
+        return self
+
     # -- helpers ---------------------------------------------------------
     def _write_part(self, basename, fill):
         """Write one part file atomically: fill(h5file) into a temporary

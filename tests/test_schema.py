@@ -200,3 +200,28 @@ def test_footprint_round_trip_and_version_1_still_reads(tmp_path):
         s = r.read(0)
         assert s.footprint is None and s.footprint_area is None
         np.testing.assert_array_equal(s.force, snap.force)
+
+
+def test_resume_appends_after_the_checkpoint_count(tmp_path):
+    """A run that wrote 5 snapshots and died, resumed from a checkpoint taken
+    after 3: snapshots 3 and 4 are dropped, the resumed run writes its own,
+    and the closed dump holds 0..4 in order with no duplicate."""
+    snap, _, _ = lattice_snapshot()
+    path = str(tmp_path / "run.h5")
+    w = DumpWriter(path, "spheres", {"seed": 1})
+    for k in range(5):
+        write_snapshot(w, snap, step=10 * k)
+    del w                                              # died: never closed
+    with pytest.raises(DumpFormatError, match="snapshot 000005 is missing"):
+        DumpWriter.resume(path, 8)
+    w = DumpWriter.resume(path, 3)
+    with DumpReader(path) as r:                        # readable right away, 3 snapshots
+        assert len(r) == 3 and not r.complete
+    for k in range(3, 6):
+        write_snapshot(w, snap, step=1000 + k)
+    w.close()
+    with DumpReader(path) as r:
+        assert r.complete and r.parameters == {"seed": 1}
+        assert [s.step for s in r] == [0, 10, 20, 1003, 1004, 1005]
+    with pytest.raises(DumpFormatError, match="no parts folder"):
+        DumpWriter.resume(path, 2)
