@@ -31,7 +31,7 @@ PRESETS = {
     "default": {
         "common": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
                    "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
-        "polyhedra": {"n_particles": 60},
+        "polyhedra": {"n_particles": 3000},
         "spheres": {"n_particles": 1000},
     },
     "paper": {
