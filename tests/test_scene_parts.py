@@ -142,3 +142,20 @@ def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
     assert folder.exists()                              # same parameters: kept
     _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})
     assert not folder.exists() and (tmp_path / "spheres.old-1").exists()
+
+
+def test_presets_choose_the_contact_engine_and_the_study_its_threads():
+    """Polyhedra default to the compiled kernel, which the single-run study
+    starts with every core (yade -jN); spheres and the stock contacts run on
+    one thread (stock polyhedra crashed with several)."""
+    import os
+
+    from yade_scripts.study import _threads
+
+    p = resolve("default", "polyhedra")
+    assert p["contact_engine"] == "kernel" and p["kernel_threads"] == 0 and p["verlet_skin"] == 0.1
+    assert _threads("polyhedra", "default", None) == (os.cpu_count() or 1)
+    assert _threads("polyhedra", "default", {"contact_engine": "yade"}) == 1
+    assert _threads("spheres", "default", None) == 1
+    with pytest.raises(ConfigError, match="contact_engine must be one of"):
+        resolve("default", "polyhedra", {"contact_engine": "cgal"})

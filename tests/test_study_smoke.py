@@ -66,3 +66,20 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
     assert comp.loc[comp["sample"] == "polyhedra", "interval"].isin(["one value", "batch means (one seed)"]).all()
     assert (comp.loc[comp["sample"] == "spheres", "interval"] == "seeds").all()
     assert (out / "report-failed" / "fig_qp.png").exists()
+
+
+def test_single_seed_study_runs_s1_on_the_kernel_with_every_core(tmp_path, shape_library, capsys):
+    """The path of plain `make study`: one seed per sample, side by side, S1
+    on the compiled kernel started as yade -jN (so the kernel gets N threads)."""
+    import os
+
+    from postproc.schema import DumpReader
+    from yade_scripts.study import main
+
+    rc = main(["--preset", "tiny", "--out", str(tmp_path), "--library", shape_library])
+    assert rc == 0
+    info = json.loads((tmp_path / "polyhedra" / "run.info.json").read_text())
+    assert info["kernel"]["threads"] == (os.cpu_count() or 1) and info["kernel"]["touch_steps"] > 0
+    with DumpReader(str(tmp_path / "polyhedra" / "run.h5")) as r:
+        assert r.complete and r.parameters["contact_engine"] == "kernel"
+    assert (tmp_path / "report" / "report.md").exists()

@@ -17,6 +17,7 @@ COMMON = {
     "tangential_ratio": 1.0, "damping": 0.2, "compaction_damping": 0.2, "safety": 0.3, "servo_gain": 10.0, "servo_time": 0.01,
     "initial_fraction": 0.25, "aspect": 2.0, "iso_tolerance": 0.01,
     "unbalanced_tolerance": 0.01, "wall_speed": 0.0, "library": "shapes.h5", "out": "run.h5",
+    "contact_engine": "kernel", "kernel_threads": 0, "verlet_skin": 0.1,
 }
 
 PRESETS = {
