@@ -6,8 +6,8 @@ the lines whose dump is already complete (seed ensembles, sweeps).
 The table is the folder's ``table.txt`` (written by
 :func:`yade_scripts.generate.generate`): a header line, then one line per
 run with a ``description`` column and an ``out`` column naming its dump.
-yade-batch runs every job single-threaded (polyhedra crash with several
-threads per job), ``jobs`` at a time; its progress lines are relayed with
+yade-batch runs every job single-threaded (jobs share the cores; stock
+polyhedra contacts also crashed with several threads per job), ``jobs`` at a time; its progress lines are relayed with
 ``tag`` in front, and each job's own log is ``triaxial.py.<description>.log``.
 """
 from __future__ import annotations
