@@ -120,7 +120,7 @@ def test_random_pairs_against_halfspace_intersection(library):
 
 
 def test_normal_is_minus_the_gradient_of_the_volume(library):
-    table, a, b, Ra, Rb, xb = place_pairs(library, 200, seed=2)
+    table, a, b, Ra, Rb, xb = place_pairs(library, 1000, seed=2)
     n = len(a)
     r = batch_overlap(table, a, np.zeros((n, 3)), wxyz(Ra), b, xb, wxyz(Rb))
     step = 1e-6
