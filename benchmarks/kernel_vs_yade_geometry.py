@@ -1,6 +1,7 @@
 """The same polyhedra pairs through YADE's stock Ig2 and through our kernel:
 how far YADE's overlap volume, contact point and normal are from the exact
-ones, and the cost of both, in one run.
+ones (on a contact's first step, when YADE searches a new inner point, and
+after STEPS more steps), and the cost of both, in one run.
 
     yade -n -x benchmarks/kernel_vs_yade_geometry.py [N_PAIRS [STEPS [OUT.json]]]
 
@@ -107,18 +108,36 @@ def ours(ids, shapes, poses, threads=0):
     return table, i1, i2, pos, q, batch_overlap(table, i1, pos[i1], q[i1], i2, pos[i2], q[i2], threads=threads)
 
 
-def yade_run(steps):
+def yade_geoms(ids):
+    """YADE's (volume, contact point, normal, id1) per pair, or None."""
+    out = []
+    for p1, p2 in ids:
+        i = O.interactions[p1, p2] if O.interactions.has(p1, p2) else None
+        if i is None or not i.isReal or not (i.geom.penetrationVolume > 0):
+            out.append(None)
+            continue
+        g = i.geom
+        out.append((g.penetrationVolume, np.array(tuple(g.contactPoint)), np.array(tuple(g.normal)), i.id1))
+    return out
+
+
+def yade_run(steps, ids=None):
+    """Run the stock loop; returns its seconds per step and, with ids, YADE's
+    geometry after the first step (a new contact) and after the last."""
     O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Polyhedra_Aabb()]),
                  InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom()],
                                  [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
                                  [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()], label="loop")]
     O.dt = 1e-8
     O.step()
+    first = yade_geoms(ids) if ids is not None else None
     O.timingEnabled = True
     loop.execTime = 0
     O.run(steps, True)
     O.timingEnabled = False
-    return loop.execTime * 1e-9 / steps
+    if ids is None:
+        return loop.execTime * 1e-9 / steps
+    return loop.execTime * 1e-9 / steps, first, yade_geoms(ids)
 
 
 def kernel_time(table, i1, i2, pos, q, threads, reps):
@@ -147,25 +166,29 @@ out = {"pairs": N, "steps": STEPS, "d": D}
 a, b, qa, qb, xb = place(N, False)
 ids, shapes, poses = build(a, b, qa, qb, xb)
 table, i1, i2, pos, q, r = ours(ids, shapes, poses)
-t_yade = yade_run(STEPS)
-rel, dist, ang, sign, missing = [], [], [], [], 0
-for k, (p1, p2) in enumerate(ids):
-    inter = O.interactions[p1, p2] if O.interactions.has(p1, p2) else None
-    if inter is None or not inter.isReal or not (inter.geom.penetrationVolume > 0):
-        missing += 1
-        continue
-    g = inter.geom
-    sgn = 1.0 if inter.id1 == p1 else -1.0            # ours: from the pair's first body to its second
-    rel.append(abs(g.penetrationVolume - r["volume"][k]) / r["volume"][k])
-    dist.append(np.linalg.norm(np.array(tuple(g.contactPoint)) - r["centroid"][k]) / D)
-    n = sgn * np.array(tuple(g.normal))
-    c = float(np.clip(n @ r["normal"][k], -1, 1))
-    sign.append(c)
-    ang.append(math.acos(abs(c)))
-out["touching"] = {"yade_missed": missing, "volume_rel_diff": pct(rel), "point_dist_over_d": pct(dist),
-                   "normal_angle_rad": pct(ang), "yade_normal_points_id1_to_id2": float(np.mean(np.array(sign) > 0)),
-                   "share_volume_off_by_1e-3_or_more": float(np.mean(np.array(rel) >= 1e-3)),
-                   "yade_us_per_pair_step": t_yade * 1e6 / N}
+t_yade, geoms_first, geoms_last = yade_run(STEPS, ids)
+
+
+def compare(geoms):
+    rel, dist, ang, sign, missing = [], [], [], [], 0
+    for k, ((p1, p2), gm) in enumerate(zip(ids, geoms)):
+        if gm is None:
+            missing += 1
+            continue
+        vol, cp, nrm, id1 = gm
+        sgn = 1.0 if id1 == p1 else -1.0            # ours: from the pair's first body to its second
+        rel.append(abs(vol - r["volume"][k]) / r["volume"][k])
+        dist.append(np.linalg.norm(cp - r["centroid"][k]) / D)
+        c = float(np.clip(sgn * nrm @ r["normal"][k], -1, 1))
+        sign.append(c)
+        ang.append(math.acos(abs(c)))
+    return {"yade_missed": missing, "volume_rel_diff": pct(rel), "point_dist_over_d": pct(dist),
+            "normal_angle_rad": pct(ang), "yade_normal_points_id1_to_id2": float(np.mean(np.array(sign) > 0)),
+            "share_volume_off_by_1e-3_or_more": float(np.mean(np.array(rel) >= 1e-3))}
+
+
+out["touching"] = {**compare(geoms_last), "yade_us_per_pair_step": t_yade * 1e6 / N,
+                   "first_step": compare(geoms_first)}
 for th in (1, 2):
     out["touching"][f"kernel_us_per_pair_{th}_threads"] = kernel_time(table, i1, i2, pos, q, th, STEPS) * 1e6 / N
 # --- separated pairs
@@ -219,9 +242,12 @@ with open(OUT, "w") as fh:
     json.dump(out, fh, indent=1)
 t, s = out["touching"], out["separated"]
 print(f"\n{N} touching pairs (d = {D} m), YADE against the exact kernel:")
-for key in ("volume_rel_diff", "point_dist_over_d", "normal_angle_rad"):
-    x = t[key]
-    print(f"  {key:20s} median {x['median']:.2e}  p90 {x['p90']:.2e}  p99 {x['p99']:.2e}  max {x['max']:.2e}")
+for when, tt in (("first step (new contact)", t["first_step"]), (f"after {STEPS + 1} steps", t)):
+    print(f" {when}: volume off by 1e-3 or more on {100 * tt['share_volume_off_by_1e-3_or_more']:.1f} % of pairs, "
+          f"YADE missed {tt['yade_missed']}")
+    for key in ("volume_rel_diff", "point_dist_over_d", "normal_angle_rad"):
+        x = tt[key]
+        print(f"  {key:20s} median {x['median']:.2e}  p90 {x['p90']:.2e}  p99 {x['p99']:.2e}  max {x['max']:.2e}")
 print(f"  volume off by 1e-3 or more: {100 * t['share_volume_off_by_1e-3_or_more']:.1f} % of pairs; YADE missed {t['yade_missed']}; "
       f"YADE's normal points id1 -> id2 on {100 * t['yade_normal_points_id1_to_id2']:.0f} %")
 print(f"  cost per pair-step: YADE InteractionLoop {t['yade_us_per_pair_step']:.1f} us; kernel "
