@@ -20,17 +20,18 @@ from .schema import DumpFormatError, DumpReader
 BAD_INPUT = (InputError, DumpFormatError)
 
 
-def _open_source(path, volume, box):
+def _open_source(path, volume, box, cell=None):
     """(count, iterator of Snapshot or exception, close, shapes) for a dump
     or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
     ext = os.path.splitext(path)[1].lower()
     if ext in (".csv", ".parquet", ".pq"):
         from .tables import read_contact_table
 
-        snaps = read_contact_table(path, volume=volume, box=box)
+        snaps = read_contact_table(path, volume=volume, box=box, cell=cell)
         return len(snaps), iter(snaps), lambda: None, None
-    if volume is not None or box is not None:
-        raise InputError("--volume and --box are for flat contact tables; a dump has its box")
+    if volume is not None or box is not None or cell is not None:
+        raise InputError("--volume, --box and --cell are for flat contact tables; "
+                         "a dump has its box")
     reader = DumpReader(path)
     if len(reader) == 0:
         reader.close()
@@ -94,7 +95,8 @@ def reference_index(stages):
 
 
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
-                 errors=True, progress=None, theta_deg=None):
+                 errors=True, progress=None, theta_deg=None,
+                 cell=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
     the figures. For a dump of polyhedra also the contact types (tolerance
     ``theta_deg``, default :data:`postproc.contacttypes.DEFAULT_THETA_DEG`),
@@ -119,7 +121,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         e = axis_vector(axis)
     except ValueError as exc:
         raise InputError(f"--axis: {exc}") from None
-    count, snaps, close, shapes = _open_source(path, volume, box)
+    count, snaps, close, shapes = _open_source(path, volume, box, cell)
     try:
         tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
     except InputError as exc:
@@ -202,6 +204,9 @@ def main(argv=None):
     an.add_argument("--volume", type=float, help="packing volume in m^3 (flat tables)")
     an.add_argument("--box", type=float, nargs=3, metavar=("LX", "LY", "LZ"),
                     help="box lengths in m (flat tables; gives volume and wall areas)")
+    an.add_argument("--cell", type=float, nargs=3, metavar=("LX", "LY", "LZ"),
+                    help="periodic cell lengths in m (flat tables): minimum-image branch "
+                         "vectors, volume LX*LY*LZ unless --volume")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
     an.add_argument("--theta", type=float, default=None,
                     help="contact-type angular tolerance in degrees (polyhedra; default 5)")
@@ -268,7 +273,8 @@ def main(argv=None):
             raise InputError("--bins must be at least 2")
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
                                    box=args.box, nbins=args.bins, errors=not args.no_errors,
-                                   progress=args.progress, theta_deg=args.theta)
+                                   progress=args.progress, theta_deg=args.theta,
+                                   cell=args.cell)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)
         return 2

@@ -99,6 +99,10 @@ def lookup(ids, table_ids):
 def resolve(snap: Snapshot) -> ContactSet:
     """Validate a snapshot and build its :class:`ContactSet`.
 
+    Branch vectors: ``snap.branch`` when given, else x2 - x1, taken by
+    minimum image when ``snap.cell`` is a periodic cell
+    (:mod:`postproc.periodic`).
+
     Raises InputError for: non-positive or non-finite volume, no contacts,
     NaN/inf in positions, contact points or forces, duplicate body ids,
     contacts naming unknown ids, self-contacts, wall-wall contacts, and
@@ -147,6 +151,16 @@ def resolve(snap: Snapshot) -> ContactSet:
     y2 = np.where((i2 >= 0)[:, None], pos[np.maximum(i2, 0)], point)
     arm = y2 - y1
     pp = (i1 >= 0) & (i2 >= 0)
+    if snap.cell is not None:       # periodic: branch vectors by minimum image
+        from .periodic import minimum_image
+
+        arm = minimum_image(arm, snap.cell)
+    if snap.branch is not None:     # branch vectors given by the source
+        br = np.asarray(snap.branch, float)
+        if br.shape != (nc, 3):
+            raise InputError(f"{where}: branch vectors have shape {br.shape}, expected {(nc, 3)}")
+        _check_finite("branch vectors are", np.where(pp[:, None], br, 0.0), where, "contact")
+        arm = np.where(pp[:, None], br, arm)
     length = np.sqrt(np.einsum("ij,ij->i", arm, arm))
     zero = pp & (length == 0)
     if zero.any():

@@ -39,6 +39,14 @@ time order). Group attributes ``step`` (int), ``time`` (s), ``stage``
 ``walls/force``               (6, 3) N. Total force exerted **on** each wall
                               by the particles. Under compression the x+ wall
                               is pushed towards +x.
+``cell``                      (3, 3) m, optional: a periodic cell whose
+                              columns are the cell vectors (YADE's
+                              ``O.cell.hSize``). Then the volume is
+                              det(cell), branch vectors follow the
+                              minimum-image convention, and ``walls/id``,
+                              ``walls/force`` may be empty (0 walls);
+                              ``box/lo``, ``box/hi`` bound the cell (their
+                              difference gives the strains).
 ``bodies/id``                 (B,) int64 particle ids (walls are not bodies
                               here; they are listed in ``walls/id``).
 ``bodies/kind``               (B,) int8: 0 sphere, 1 polyhedron.
@@ -171,6 +179,8 @@ class Snapshot:
     sizes: Optional[np.ndarray] = None          # (B,)
     footprint: Optional[np.ndarray] = None      # (C, 2) m, overlap shadow extents (kernel runs)
     footprint_area: Optional[np.ndarray] = None  # (C,) m^2
+    cell: Optional[np.ndarray] = None           # (3, 3) m, periodic cell, columns = cell vectors
+    branch: Optional[np.ndarray] = None         # (C, 3) m, explicit x2 - x1 (NaN for walls)
     extra: dict = field(default_factory=dict)
 
     @property
@@ -364,15 +374,22 @@ class DumpWriter:
         self.attrs["parameters"] = json.dumps(params, sort_keys=True, default=float)
 
     def write_snapshot(self, *, step, time, stage, box_lo, box_hi, wall_ids,
-                       wall_forces, bodies, contacts):
+                       wall_forces, bodies, contacts, cell=None):
         """Append one snapshot atomically.
 
         bodies : dict of arrays with the ``bodies/*`` fields of the schema.
         contacts : dict of arrays with the ``contacts/*`` fields.
+        cell : (3, 3) m, optional periodic cell (columns are the cell
+        vectors, YADE's ``O.cell.hSize``); a periodic snapshot may have no
+        walls (``wall_ids`` and ``wall_forces`` empty).
         Shapes and units as in the module docstring; forces on id2 by id1.
         """
         if self._closed:
             raise DumpFormatError("writer is closed")
+        if cell is not None:
+            cell = np.asarray(cell, np.float64)
+            if cell.shape != (3, 3) or not np.all(np.isfinite(cell)) or np.linalg.det(cell) <= 0:
+                raise DumpFormatError("cell must be a finite (3, 3) matrix with det > 0")
         nb = len(np.atleast_1d(bodies["id"]))
         nc = len(np.atleast_1d(contacts["id1"]))
         b = {k: _as_field("bodies/" + k, bodies[k], s, nb)
@@ -381,8 +398,12 @@ class DumpWriter:
              for k, s in _CONTACT_FIELDS.items() if s[2] or k in contacts}
         lo = _as_field("box/lo", box_lo, (np.float64, (), True), 3)
         hi = _as_field("box/hi", box_hi, (np.float64, (), True), 3)
-        wid = _as_field("walls/id", wall_ids, (np.int64, (), True), len(WALL_ORDER))
-        wf = _as_field("walls/force", wall_forces, (np.float64, (3,), True), len(WALL_ORDER))
+        nw = len(WALL_ORDER)
+        if cell is not None:
+            nw = 0 if len(np.atleast_1d(wall_ids)) == 0 else nw
+        wid = _as_field("walls/id", wall_ids, (np.int64, (), True), nw)
+        wf = _as_field("walls/force", np.reshape(wall_forces, (nw, 3)) if nw == 0 else wall_forces,
+                       (np.float64, (3,), True), nw)
         name = f"{self._n_snapshots:06d}"
 
         def fill(f):
@@ -394,6 +415,8 @@ class DumpWriter:
             g["box/hi"] = hi
             g["walls/id"] = wid
             g["walls/force"] = wf
+            if cell is not None:
+                g["cell"] = cell
             for k, arr in b.items():
                 g["bodies/" + k] = arr
             for k, arr in c.items():
@@ -515,10 +538,12 @@ class DumpReader:
             b = {k: g["bodies/" + k][()] for k in _BODY_FIELDS if "bodies/" + k in g}
             c = {k: g["contacts/" + k][()] for k, s in _CONTACT_FIELDS.items()
                  if s[2] or "contacts/" + k in g}
+            cell = g["cell"][()] if "cell" in g else None
             snap = Snapshot(
                 name=name, step=int(g.attrs["step"]), time=float(g.attrs["time"]),
                 stage=str(g.attrs["stage"]),
-                volume=float(np.prod(hi - lo)), box_lo=lo, box_hi=hi,
+                volume=float(np.prod(hi - lo)) if cell is None else float(abs(np.linalg.det(cell))),
+                box_lo=lo, box_hi=hi, cell=cell,
                 wall_ids=g["walls/id"][()], wall_forces=g["walls/force"][()],
                 body_ids=b["id"], positions=b["position"],
                 id1=c["id1"], id2=c["id2"], point=c["point"],

@@ -15,6 +15,18 @@ stress can be computed when the box is given); other negative ids are walls
 of unknown position. The volume comes from ``volume=`` (m^3) or ``box=``
 (three lengths, m, which also gives the wall areas). A body that appears
 with two different centres in one snapshot is an error.
+
+Periodic cells: with ``cell=`` (three lengths LX, LY, LZ, m) the positions
+lie in an orthorhombic periodic cell: branch vectors follow the
+minimum-image convention (:mod:`postproc.periodic`), the volume defaults to
+LX*LY*LZ, and a body may appear at any of its images (its centres must
+agree modulo the cell).
+
+``lx,ly,lz`` (optional) the branch vector x2 - x1 of each particle-particle
+                      contact, m, used as given (sheared cells, or any code
+                      that knows its branch vectors); empty for walls. With
+                      them, body centres are not cross-checked (a body's
+                      first row gives its position).
 """
 from __future__ import annotations
 
@@ -27,6 +39,7 @@ from .schema import WALL_ORDER, Snapshot
 
 REQUIRED = ("id1", "id2", "x1", "y1", "z1", "x2", "y2", "z2",
             "cx", "cy", "cz", "fx", "fy", "fz")
+BRANCH = ("lx", "ly", "lz")
 
 
 def _read_frame(path):
@@ -48,14 +61,16 @@ def _read_frame(path):
         raise InputError(f"{path}: cannot read the contact table: {first}") from None
 
 
-def read_contact_table(path, volume=None, box=None):
+def read_contact_table(path, volume=None, box=None, cell=None):
     """Read a flat contact table into a list of :class:`Snapshot`.
 
     Parameters
     ----------
     path : str, ``.csv`` or ``.parquet``.
-    volume : float, m^3, the packing volume (or give ``box``).
+    volume : float, m^3, the packing volume (or give ``box`` or ``cell``).
     box : (3,) m, box lengths; sets the volume and the wall areas.
+    cell : (3,) m, lengths of an orthorhombic periodic cell (see above);
+        the volume defaults to their product.
 
     Returns
     -------
@@ -71,12 +86,26 @@ def read_contact_table(path, volume=None, box=None):
         if volume is not None and not np.isclose(vol, volume, rtol=1e-9):
             raise InputError(f"--volume {volume} disagrees with --box (volume {vol})")
         volume = vol
+    if cell is not None:
+        if box is not None:
+            raise InputError("--box (walls) and --cell (periodic) exclude each other")
+        from .periodic import cell_matrix
+
+        cell = np.asarray(cell, float).reshape(3)
+        if not np.all(np.isfinite(cell)) or np.any(cell <= 0):
+            raise InputError(f"cell lengths {cell.tolist()} must be finite and > 0")
+        cell = cell_matrix(cell)
+        volume = float(np.linalg.det(cell)) if volume is None else volume
     if volume is None:
-        raise InputError(f"{path}: a flat contact table needs the volume (--volume or --box)")
+        raise InputError(f"{path}: a flat contact table needs the volume (--volume, --box or --cell)")
     df = _read_frame(path)
     missing = [c for c in REQUIRED if c not in df.columns]
     if missing:
         raise InputError(f"{path}: missing columns {', '.join(missing)}")
+    given = [c for c in BRANCH if c in df.columns]
+    if given and len(given) < 3:
+        raise InputError(f"{path}: branch columns {', '.join(given)} given without "
+                         f"{', '.join(c for c in BRANCH if c not in given)}")
     if len(df) == 0:
         raise InputError(f"{path}: the table has no rows (no contacts)")
     for col in ("id1", "id2"):
@@ -89,10 +118,11 @@ def read_contact_table(path, volume=None, box=None):
         groups = [(int(s), df[df["step"].to_numpy() == s]) for s in steps]
     else:
         groups = [(0, df)]
-    return [_snapshot(path, k, step, g, float(volume), box) for k, (step, g) in enumerate(groups)]
+    return [_snapshot(path, k, step, g, float(volume), box, cell)
+            for k, (step, g) in enumerate(groups)]
 
 
-def _snapshot(path, k, step, df, volume, box):
+def _snapshot(path, k, step, df, volume, box, cell=None):
     name = f"{k:06d}"
     where = f"{path}: snapshot {name} (step {step})"
     id1 = df["id1"].to_numpy(np.int64)
@@ -113,21 +143,42 @@ def _snapshot(path, k, step, df, volume, box):
     pos = np.concatenate([x1, x2[~wall]])
     uid, first, inv = np.unique(ids, return_index=True, return_inverse=True)
     centres = pos[first]
-    with np.errstate(invalid="ignore"):
-        dev = np.abs(pos - centres[inv]).max(axis=1)
-    scale = np.nanmax(np.abs(pos)) if len(pos) else 1.0
-    clash = dev > 1e-9 * max(scale, 1e-300)
-    if clash.any():
-        j = int(np.flatnonzero(clash)[0])
-        raise InputError(f"{where}: body {int(ids[j])} appears with two different centres")
+    branch = None
+    if "lx" in df.columns:
+        branch = df[list(BRANCH)].to_numpy(float)
+        bad = ~np.isfinite(branch[~wall]).all(axis=1)
+        if bad.any():
+            r = int(np.flatnonzero(~wall)[np.flatnonzero(bad)[0]])
+            raise InputError(f"{where}: row {r}: lx,ly,lz of a particle-particle contact "
+                             "missing or NaN")
+    elif cell is not None:
+        from .periodic import same_point_modulo
+
+        clash = ~same_point_modulo(pos, centres[inv], cell)
+        if clash.any():
+            j = int(np.flatnonzero(clash)[0])
+            raise InputError(f"{where}: body {int(ids[j])} appears at two centres that are "
+                             "not images of each other in the periodic cell")
+    else:
+        with np.errstate(invalid="ignore"):
+            dev = np.abs(pos - centres[inv]).max(axis=1)
+        scale = np.nanmax(np.abs(pos)) if len(pos) else 1.0
+        clash = dev > 1e-9 * max(scale, 1e-300)
+        if clash.any():
+            j = int(np.flatnonzero(clash)[0])
+            raise InputError(f"{where}: body {int(ids[j])} appears with two different centres"
+                             " (a periodic cell? give --cell LX LY LZ)")
     wall_ids = np.unique(id2[wall])
     standard = np.arange(-1, -len(WALL_ORDER) - 1, -1)
     if box is not None and np.isin(wall_ids, standard).all():
         wall_ids = standard.astype(np.int64)
         lo, hi = np.zeros(3), np.asarray(box, float)
+    elif cell is not None:
+        lo, hi = np.zeros(3), np.diag(cell).copy()
     else:
         lo, hi = np.full(3, np.nan), np.full(3, np.nan)
     return Snapshot(
         name=name, step=int(step), time=float("nan"), stage="table",
         volume=volume, box_lo=lo, box_hi=hi, wall_ids=wall_ids, wall_forces=None,
-        body_ids=uid, positions=centres, id1=id1, id2=id2, point=c, force=f)
+        body_ids=uid, positions=centres, id1=id1, id2=id2, point=c, force=f,
+        cell=cell, branch=branch)
