@@ -20,9 +20,17 @@ from .schema import DumpFormatError, DumpReader
 BAD_INPUT = (InputError, DumpFormatError)
 
 
-def _open_source(path, volume, box, cell=None):
+def _open_source(path, volume, box, cell=None, fmt=None, atoms=None):
     """(count, iterator of Snapshot or exception, close, shapes) for a dump
     or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
+    from .lammpsdump import read_text_dump, sniff
+
+    if fmt is not None or atoms is not None or sniff(path) is not None:
+        if volume is not None or box is not None or cell is not None:
+            raise InputError("--volume, --box and --cell are for flat contact tables; "
+                             "a LAMMPS/LIGGGHTS dump has its box")
+        snaps = read_text_dump(path, fmt, atoms)
+        return len(snaps), iter(snaps), lambda: None, None
     ext = os.path.splitext(path)[1].lower()
     if ext in (".csv", ".parquet", ".pq"):
         from .tables import read_contact_table
@@ -96,7 +104,7 @@ def reference_index(stages):
 
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
                  errors=True, progress=None, theta_deg=None,
-                 cell=None):
+                 cell=None, fmt=None, atoms=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
     the figures. For a dump of polyhedra also the contact types (tolerance
     ``theta_deg``, default :data:`postproc.contacttypes.DEFAULT_THETA_DEG`),
@@ -121,7 +129,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         e = axis_vector(axis)
     except ValueError as exc:
         raise InputError(f"--axis: {exc}") from None
-    count, snaps, close, shapes = _open_source(path, volume, box, cell)
+    count, snaps, close, shapes = _open_source(path, volume, box, cell, fmt, atoms)
     try:
         tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
     except InputError as exc:
@@ -207,6 +215,11 @@ def main(argv=None):
     an.add_argument("--cell", type=float, nargs=3, metavar=("LX", "LY", "LZ"),
                     help="periodic cell lengths in m (flat tables): minimum-image branch "
                          "vectors, volume LX*LY*LZ unless --volume")
+    an.add_argument("--format", choices=("liggghts-local", "lammps-local"), default=None,
+                    help="text dump of LIGGGHTS pair/gran/local or LAMMPS pair/local "
+                         "(default: detected from the header)")
+    an.add_argument("--atoms", help="LAMMPS dump custom (id x y z) with the positions, "
+                                    "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
     an.add_argument("--theta", type=float, default=None,
                     help="contact-type angular tolerance in degrees (polyhedra; default 5)")
@@ -274,7 +287,7 @@ def main(argv=None):
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
                                    box=args.box, nbins=args.bins, errors=not args.no_errors,
                                    progress=args.progress, theta_deg=args.theta,
-                                   cell=args.cell)
+                                   cell=args.cell, fmt=args.format, atoms=args.atoms)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)
         return 2
