@@ -11,7 +11,8 @@ import numpy as np
 from .angular import AngularFunctions, angular_functions, fit_harmonics
 from .axes import axis_vector
 from .contactset import ContactSet, resolve
-from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, classify_snapshot
+from .classify import AngularTables
+from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, ShapeTables
 from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
 from .fabric import anisotropies, stress_force_fabric
@@ -35,6 +36,8 @@ class SnapshotResult:
     fits: dict                 # harmonic fits
     normal_force: np.ndarray = None   # (C',) N, force-bearing particle-particle contacts
     labels: np.ndarray = None         # (C',) their classes ("VV".."FF", "sphere")
+    extents: np.ndarray = None        # (P, 2) footprint L1 >= L2 over d of the force-bearing
+                                      # polyhedra pairs (footprint criterion; NaN: no overlap)
 
 
 def wall_forces_from_contacts(cs: ContactSet):
@@ -64,25 +67,29 @@ def _stress_columns(prefix, sigma, axis):
     return row, inv
 
 
-def contact_type_columns(snap, cs, sel, tables, p, total, axis, theta_deg=DEFAULT_THETA_DEG):
+def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     """summary.csv columns of the contact types of a polyhedra snapshot
-    (issue 5; seed fig. 10-12 and claim 6), and the class of each contact.
+    (issue 13; seed figs. 10-12 and claim 6), and the class of each contact.
 
-    ``sel`` (C,) bool marks the force-bearing particle-particle contacts,
-    over which proportions, force ratios, force shares and the signed
-    branch fabric of each class are taken (:func:`postproc.pertype.class_statistics`).
-    Partial stresses are over all contacts (walls as their own class) and
-    sum to the total; ``ct_qp_<k>`` is class k's share of q_axial/p.
-    ``ct_frac_<k>_lo`` / ``_hi`` are the proportions with the tolerance
-    halved and doubled. ``z_points`` counts a contact as 1, 2 or 3 points
-    (simple, double, triple), as a multi-point contact code would, beside
-    ``z`` which counts every pair once (the paper's convention).
-    ``total`` is the (3, 3) stress over all contacts the partials must sum to.
-    Returns (row, labels (C,)).
+    ``classifier`` a :class:`postproc.classify.Classifier` (footprint groups
+    by default, or the angular criterion). ``sel`` (C,) bool marks the
+    force-bearing particle-particle contacts, over which proportions, force
+    ratios, force shares and the signed branch fabric of each class are
+    taken (:func:`postproc.pertype.class_statistics`). Partial stresses are
+    over all contacts (walls as their own class) and sum to the total;
+    ``ct_qp_<k>`` is class k's share of q_axial/p. ``ct_frac_<k>_lo`` /
+    ``_hi`` are the proportions with the criterion's parameter (footprint
+    threshold or angular tolerance) halved and doubled. ``z_points`` counts
+    a contact as 1, 2 or 3 points (simple, double, triple), as a multi-point
+    contact code would, beside ``z`` which counts every pair once (the
+    paper's convention). ``total`` is the (3, 3) stress over all contacts
+    the partials must sum to. Returns (row, labels (C,), extents (P, 2) of
+    the force-bearing polyhedra pairs or None).
     """
-    labels = classify_snapshot(snap, tables, theta_deg)
+    res = classifier.classify(snap, variants=True)
+    labels = res.labels
     group_labels = group_labels_of(labels)
-    row = {"ct_theta_deg": float(theta_deg)}
+    row = dict(res.columns)
     fn, L = cs.normal_force[sel], cs.arm[sel]
     for lab, classes in ((labels[sel], PAIR_TYPES), (group_labels[sel], GROUPS)):
         st = class_statistics(lab, fn, L, axis)
@@ -100,16 +107,23 @@ def contact_type_columns(snap, cs, sel, tables, p, total, axis, theta_deg=DEFAUL
             row[f"ct_qp_{k}"] = qk
         if lab is labels:
             row["ct_partial_sum_reldiff"] = relative_difference(sum(parts.values()), total)
-    for tag, th in (("lo", theta_deg / 2), ("hi", theta_deg * 2)):
-        other = classify_snapshot(snap, tables, th)[sel]
+    for tag, other in res.variants.items():
+        other = other[sel]
         og = group_labels_of(other)
         for k in PAIR_TYPES:
             row[f"ct_frac_{k}_{tag}"] = float(np.mean(other == k))
         for k in GROUPS:
             row[f"ct_frac_{k}_{tag}"] = float(np.mean(og == k))
+    rel = None
+    if res.rel is not None and len(res.rel):
+        # the footprint extents of the force-bearing polyhedra pairs, over d
+        rel = res.rel[sel[res.poly]]
+        for j, name in ((0, "l1"), (1, "l2")):
+            x = rel[:, j][np.isfinite(rel[:, j])]
+            row[f"ct_{name}_median"] = float(np.median(x)) if len(x) else np.nan
     points = np.select([group_labels[sel] == g for g in GROUPS], [1, 2, 3], 1)
     row["ct_points_per_contact"] = float(points.mean())
-    return row, labels
+    return row, labels, rel
 
 
 def group_labels_of(labels):
@@ -140,6 +154,11 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     (eq. 8) and ``sff_residual`` = q_axial/p - sff, where q_axial =
     (sigma_axis - mean lateral)/3 is the signed deviator along the
     compression axis (it equals q once sigma_1 lies along the axis).
+
+    ``tables``: the contact-type criterion of polyhedra snapshots, a
+    :class:`postproc.classify.Classifier` (footprint groups by default), or
+    the angular :class:`postproc.contacttypes.ShapeTables` (angular criterion
+    at ``theta_deg``); None for no contact types.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
     cs = resolve(snap)
@@ -200,11 +219,15 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     row.update(co)
     row["frac_below_mean"] = fraction_below_mean(cs.normal_force[sel])
     labels = np.where(cs.pp, "sphere", "wall").astype("<U6")
+    extents = None
     if tables is not None and snap.body_kind is not None and np.any(snap.body_kind == 1):
-        cols, labels = contact_type_columns(snap, cs, sel, tables, p, s_m, e, theta_deg)
+        classifier = tables
+        if isinstance(tables, ShapeTables):
+            classifier = AngularTables(tables, theta_deg)
+        cols, labels, extents = contact_type_columns(snap, cs, sel, classifier, p, s_m, e)
         row.update(cols)
         row["z_points"] = row["z"] * row["ct_points_per_contact"]
-    typed = "ct_theta_deg" in row
+    typed = "ct_method" in row
     fn = cs.normal_force[sel]
     nets = network_statistics(fn, branch, force, e,
                               labels=labels[sel] if typed else None, classes=PAIR_TYPES)
@@ -227,7 +250,7 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     row["n_contacts"] = int(len(cs.force))
     row["n_contacts_pp"] = int(cs.pp.sum())
     row["n_contacts_wall"] = int((~cs.pp).sum())
-    return SnapshotResult(row, af, fits, cs.normal_force[sel], labels[sel])
+    return SnapshotResult(row, af, fits, cs.normal_force[sel], labels[sel], extents)
 
 
 def add_strains(rows, lengths, reference, axis=2):

@@ -103,18 +103,17 @@ def reference_index(stages):
 
 
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
-                 errors=True, progress=None, theta_deg=None,
+                 errors=True, progress=None, theta_deg=None, types="footprint", threshold=None,
                  cell=None, fmt=None, atoms=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
-    the figures. For a dump of polyhedra also the contact types (tolerance
-    ``theta_deg``, default :data:`postproc.contacttypes.DEFAULT_THETA_DEG`),
-    ``force_pdf.csv`` and their figures. Returns (n_good, list of error
-    lines)."""
-    from .contacttypes import DEFAULT_THETA_DEG, shape_tables
+    the figures. For a dump of polyhedra also the contact types
+    (:class:`postproc.classify.Classifier`: ``types`` "footprint", the
+    default, with ``threshold`` in units of the pair size, or "angular" with
+    tolerance ``theta_deg``), ``force_pdf.csv`` and their figures. Returns
+    (n_good, list of error lines)."""
+    from .classify import classifier_for, check_options
 
-    theta_deg = DEFAULT_THETA_DEG if theta_deg is None else float(theta_deg)
-    if not (np.isfinite(theta_deg) and 0 < theta_deg < 45):
-        raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
+    check_options(types, threshold, theta_deg)
     import pandas as pd
 
     from . import plots
@@ -131,11 +130,12 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         raise InputError(f"--axis: {exc}") from None
     count, snaps, close, shapes = _open_source(path, volume, box, cell, fmt, atoms)
     try:
-        tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
+        tables = classifier_for(shapes, types, threshold, theta_deg)
     except InputError as exc:
         close()
         raise InputError(f"{path}: /shapes: {exc}") from None
     rows, lengths, stages, last, problems, forces = [], [], [], None, [], []
+    fps = []                   # footprint extents over d of each snapshot (footprint criterion)
     try:
         from tqdm import tqdm
 
@@ -147,7 +147,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
                 continue
             try:
                 res = analyze_snapshot(snap, axis=e, nbins=nbins, errors=errors,
-                                       tables=tables, theta_deg=theta_deg)
+                                       tables=tables)
             except BAD_INPUT as exc:
                 problems.append(str(exc) if str(exc).startswith(("snapshot", path))
                                 else f"snapshot {snap.name}: {exc}")
@@ -157,6 +157,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
             stages.append(snap.stage)
             last = (snap, res)
             forces.append((res.normal_force, res.labels))
+            fps.append(res.extents)
     finally:
         close()
     if not rows:
@@ -186,8 +187,12 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
                 f" pooled ({len(pool)})")
         plots.plot_force_pdf(pdf, os.path.join(tmp, "force_pdf.png"), what)
         plots.plot_networks(df, os.path.join(tmp, "networks.png"), label)
-        if "ct_theta_deg" in df:
+        if "ct_method" in df:
             plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
+            ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
+            if ext and df["ct_method"].iloc[0] == "footprint":
+                plots.plot_footprint(np.concatenate(ext), float(df["ct_threshold"].iloc[0]),
+                                     os.path.join(tmp, "footprint.png"), what)
         if problems:
             with open(os.path.join(tmp, "errors.txt"), "w") as fh:
                 fh.write("\n".join(problems) + "\n")
@@ -221,8 +226,14 @@ def main(argv=None):
     an.add_argument("--atoms", help="LAMMPS dump custom (id x y z) with the positions, "
                                     "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
+    an.add_argument("--types", choices=("footprint", "angular"), default="footprint",
+                    help="contact-type criterion (polyhedra): the overlap's footprint (default) or "
+                         "the angular one")
+    an.add_argument("--threshold", type=float, default=None,
+                    help="footprint threshold in units of the pair size d (default 0.1)")
     an.add_argument("--theta", type=float, default=None,
-                    help="contact-type angular tolerance in degrees (polyhedra; default 5)")
+                    help="angular tolerance in degrees: the criterion with --types angular, the "
+                         "vertex/edge/face labels otherwise (default 5)")
     an.add_argument("--no-errors", action="store_true", help="skip standard errors (faster)")
     an.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                     help="progress bar (default: on for 5 snapshots or more)")
@@ -239,7 +250,10 @@ def main(argv=None):
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
-    vt.add_argument("--theta", type=float, default=None, help="contact-type tolerance, degrees")
+    vt.add_argument("--types", choices=("footprint", "angular"), default="footprint",
+                    help="contact-type criterion (default footprint)")
+    vt.add_argument("--threshold", type=float, default=None, help="footprint threshold, units of d")
+    vt.add_argument("--theta", type=float, default=None, help="angular tolerance, degrees")
     vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")
     args = ap.parse_args(argv)
     if args.cmd == "report":
@@ -263,7 +277,8 @@ def main(argv=None):
                 if bad:
                     raise InputError(f"--snapshots: index {bad[0]} out of range (the dump has {n})")
                 snaps = [k % n for k in args.snapshots]
-            files = export_vtk(args.path, args.outdir, args.theta, snaps, progress=True)
+            files = export_vtk(args.path, args.outdir, args.theta, snaps, progress=True, types=args.types,
+                               threshold=args.threshold)
         except BAD_INPUT as exc:
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
@@ -286,8 +301,9 @@ def main(argv=None):
             raise InputError("--bins must be at least 2")
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
                                    box=args.box, nbins=args.bins, errors=not args.no_errors,
-                                   progress=args.progress, theta_deg=args.theta,
-                                   cell=args.cell, fmt=args.format, atoms=args.atoms)
+                                   progress=args.progress, theta_deg=args.theta, types=args.types,
+                                   threshold=args.threshold, cell=args.cell,
+                                   fmt=args.format, atoms=args.atoms)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)
         return 2

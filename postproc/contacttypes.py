@@ -214,13 +214,15 @@ def classify_contacts(tables, shape1, shape2, q1, q2, normal, theta_deg=DEFAULT_
     return f1, f2, pair_types(f1, f2)
 
 
-def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
+def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG, features=False):
     """Contact classes of a :class:`~postproc.schema.Snapshot`.
 
     Returns (C,) array of strings: a pair type of PAIR_TYPES for contacts
     between two polyhedra, ``"sphere"`` for contacts involving a sphere,
     ``"wall"`` for contacts with a wall. Raises InputError for a polyhedron
     without a shape, a shape index out of range or a degenerate normal.
+    With ``features``, returns (labels, poly (C,) bool the polyhedra pairs,
+    feature1 (P,), feature2 (P,), pair (P,)) for those P pairs.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
     from .contactset import lookup
@@ -236,7 +238,8 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
     out[sphere] = "sphere"
     poly = pp & (kind1 == 1) & (kind2 == 1)
     if not poly.any():
-        return out
+        empty = np.zeros(0, np.int8)
+        return (out, poly, empty, empty, empty) if features else out
     S = tables.vertices.shape[0]
     for side, rows in (("id1", i1), ("id2", i2)):
         sidx = snap.shape_index[rows[poly]]
@@ -252,11 +255,11 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG):
     if k >= 0:
         c = int(np.flatnonzero(poly)[k])
         raise InputError(f"{where}: contact {c} has a degenerate normal {snap.normal[c].tolist()}")
-    _, _, pair = classify_contacts(
+    f1, f2, pair = classify_contacts(
         tables, snap.shape_index[i1[poly]], snap.shape_index[i2[poly]],
         snap.orientations[i1[poly]], snap.orientations[i2[poly]], snap.normal[poly], theta_deg)
     out[poly] = np.array(PAIR_TYPES)[pair]
-    return out
+    return (out, poly, f1, f2, pair) if features else out
 
 
 def contact_classes(snap, tables, theta_deg=DEFAULT_THETA_DEG):

@@ -152,10 +152,21 @@ def plot_networks(df, path, label=""):
     plt.close(fig)
 
 
+def _criterion(df):
+    """(name of the criterion, its band) of a summary's contact types."""
+    method = df["ct_method"].iloc[0] if "ct_method" in df else "angular"
+    if method == "footprint":
+        t = df["ct_threshold"].iloc[0]
+        return f"footprint threshold {t:g} d", f"{t / 2:g} d to {2 * t:g} d"
+    theta = df["ct_theta_deg"].iloc[0]
+    return f"angular tolerance {theta:g} deg", f"{theta / 2:g} to {2 * theta:g} deg"
+
+
 def plot_contact_types(df, path, label=""):
     """Contact types of polyhedra against eps_q (seed figs. 10-12, claim 6):
-    proportions of simple/double/triple contacts (bands: tolerance halved
-    and doubled), their mean normal force over the overall mean, the signed
+    proportions of simple/double/triple contacts (bands: the criterion's
+    parameter, footprint threshold or angular tolerance, halved and
+    doubled), their mean normal force over the overall mean, the signed
     branch anisotropy of each pair type and each type's share of q/p."""
     plt = _plt()
     x, xl = _xaxis(df)
@@ -166,8 +177,8 @@ def plot_contact_types(df, path, label=""):
         lo, hi = df[f"ct_frac_{g}_lo"], df[f"ct_frac_{g}_hi"]
         axes[0].fill_between(x, np.minimum(lo, hi), np.maximum(lo, hi), color=c, alpha=0.15, lw=0)
         axes[1].plot(x, df[f"ct_fratio_{g}"], "-o", ms=3, color=c, label=g)
-    theta = df["ct_theta_deg"].iloc[0]
-    axes[0].set_ylabel(f"proportion (bands: {theta / 2:g} to {2 * theta:g} deg)")
+    what = _criterion(df)
+    axes[0].set_ylabel(f"proportion (bands: {what[1]})")
     axes[1].axhline(1, color="0.7", lw=0.5)
     axes[1].set_ylabel(r"$\langle f_n\rangle_{type}/\langle f_n\rangle$")
     for t in ("VF", "EE", "EF", "FF"):
@@ -181,7 +192,7 @@ def plot_contact_types(df, path, label=""):
     for ax in axes:
         ax.set_xlabel(xl)
         ax.legend(fontsize=7)
-    fig.suptitle(f"{label}: contact types at {theta:g} deg", fontsize=10)
+    fig.suptitle(f"{label}: contact types, {what[0]}", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
@@ -397,6 +408,54 @@ def plot_analysis_front(table, path):
     axes[1].set_ylabel("RMS error")
     for ax in axes:
         ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_group_polar(data, caption, path):
+    """Polar densities P_Omega(theta) of the branch vectors of simple and
+    triple contacts (the paper's claim-6 figure), theta from the compression
+    axis (up), mirrored to the full circle. data {group: AngularFunctions}."""
+    plt = _plt()
+    fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(4.6, 4.6))
+    ax.set_theta_zero_location("N")
+    for g, af in data.items():
+        th = af.centers
+        full = np.concatenate([th, np.pi - th[::-1], np.pi + th, 2 * np.pi - th[::-1]])
+        m = np.concatenate([af.P, af.P[::-1], af.P, af.P[::-1]])
+        ax.plot(np.append(full, full[0]), np.append(m, m[0]), "-o", ms=3,
+                color=_CLASS_COLOURS.get(g, None), label=g)
+    tt = np.linspace(0, 2 * np.pi, 181)
+    ax.plot(tt, np.full_like(tt, 1 / (4 * np.pi)), "k:", lw=0.8, label="isotropic")
+    ax.set_title(f"branch directions $P_\\Omega(\\theta)$\n{caption}", fontsize=8)
+    ax.tick_params(labelsize=6)
+    ax.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.15, -0.1))
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_footprint(extents, threshold, path, label=""):
+    """Distributions of the footprint extents L1/d and L2/d (log bins) of
+    the force-bearing polyhedra pairs, with the threshold t and t/2, 2t:
+    simple L1 < t, double L1 >= t > L2, triple L2 >= t. extents (P, 2)
+    L1 >= L2 over the pair size (NaN rows: no overlap, left out)."""
+    plt = _plt()
+    x = np.asarray(extents, float)
+    x = x[np.isfinite(x).all(axis=1) & (x[:, 1] > 0)]
+    fig, ax = plt.subplots(figsize=(6.4, 4))
+    bins = np.geomspace(max(x.min(), 1e-5), x.max() * 1.0001, 41)
+    for j, name, c in ((0, "$L_1/d$ (simple below t)", "C0"), (1, "$L_2/d$ (triple above t)", "C3")):
+        h, _ = np.histogram(x[:, j], bins)
+        ax.stairs(h / (len(x) * np.diff(np.log(bins))), bins, color=c, label=name)
+    for f, ls in ((0.5, ":"), (1.0, "-"), (2.0, ":")):
+        ax.axvline(threshold * f, color="k", ls=ls, lw=0.8)
+    ax.set_xscale("log")
+    ax.set_xlabel(f"footprint extent / pair size d (lines: t = {threshold:g}, t/2, 2t)")
+    ax.set_ylabel("density per unit ln(L/d)")
+    ax.set_title(f"{label}: {len(x)} contacts", fontsize=9)
+    ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)

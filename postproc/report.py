@@ -139,16 +139,56 @@ def _polar_data(run, target=0.3):
     return res.angular, res.fits, f"snapshot {snap.name}, eps_q = {eq[k]:.3f}"
 
 
+def group_branch_polar(run, target=0.3, nbins=9):
+    """({group: AngularFunctions}, caption): the branch-vector densities
+    P_Omega(theta) of the simple and triple contacts (force-bearing
+    polyhedra pairs, default contact types) at the snapshot nearest
+    eps_q = ``target`` (or the last one) of a run's dump: the paper's
+    claim-6 figure. theta from the compression axis (z)."""
+    import pandas as pd
+
+    from .analysis import group_labels_of
+    from .angular import angular_functions
+    from .classify import classifier_for
+    from .contactset import resolve
+    from .coordination import force_bearing
+    from .schema import DumpReader
+
+    df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
+    eq = df["eps_q"].to_numpy(float)
+    k = len(df) - 1
+    if np.isfinite(eq).any() and np.nanmax(eq) >= target:
+        k = int(np.nanargmin(np.abs(eq - target)))
+    name = str(df["snapshot"].iloc[k]).zfill(6)
+    with DumpReader(run["dump"]) as reader:
+        shapes = reader.shapes()
+        snap = reader.read(reader.names.index(name) if name in reader.names else len(reader) - 1)
+    classifier = classifier_for(shapes)
+    if classifier is None:
+        raise ValueError("the dump has no polyhedra shapes")
+    groups = group_labels_of(classifier.classify(snap, variants=False).labels)
+    cs = resolve(snap)
+    sel = cs.pp & force_bearing(cs.force)
+    out = {}
+    for g in ("simple", "triple"):
+        m = sel & (groups == g)
+        if m.sum() >= 2:
+            out[g] = angular_functions(cs.arm[m], cs.force[m], 2, nbins)
+    if not out:
+        raise ValueError("no simple or triple contacts")
+    counts = ", ".join(f"{g} {int(a.count.sum())}" for g, a in out.items())
+    return out, f"snapshot {snap.name}, eps_q = {eq[k]:.3f} ({counts} contacts)"
+
+
 def _packing_picture(run, title, path):
     from . import plots
-    from .contacttypes import contact_classes, shape_tables
+    from .classify import classifier_for, snapshot_classes
     from .schema import DumpReader
 
     with DumpReader(run["dump"]) as reader:
         shapes = reader.shapes()
         snap = reader.read(len(reader) - 1)
-    tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
-    labels = contact_classes(snap, tables)
+    labels = snapshot_classes(snap, classifier_for(shapes))
     plots.plot_packing(snap, shapes, labels, path, f"{title}, snapshot {snap.name}")
 
 
@@ -203,9 +243,17 @@ def build_report(study, out=None, reference=REFERENCE):
                        "snapshot), first seed, seed figs. 5 and 7")
     s1 = [r for r in runs.get("polyhedra", []) if r.get("status") == "ok"]
     if s1:
+        try:
+            gp = group_branch_polar(s1[0])
+            figure("fig_types_polar.png", plots.plot_group_polar, *gp,
+                   caption="branch-vector directions P_Ω(θ) of simple and triple contacts of S1 "
+                           "(footprint criterion) at εq ≈ 0.3 or the last snapshot, first seed: "
+                           "the paper's claim-6 figure")
+        except Exception as exc:
+            problems.append(f"figure fig_types_polar.png not drawn: {exc.__class__.__name__}: {exc}")
         for name, cap in (("contact_types.png", "contact types of S1 against εq: proportions "
-                           "(bands: tolerance halved and doubled), force ratios, signed fabric, "
-                           "q/p shares (first seed)"),
+                           "(bands: the criterion's threshold halved and doubled), force ratios, "
+                           "signed fabric, q/p shares (first seed)"),
                           ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
                           ("networks.png", "strong and weak networks of S1")):
             src = os.path.join(s1[0]["analysis"], name)

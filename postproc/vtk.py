@@ -106,22 +106,25 @@ def _write_pvd(path, entries):
         fh.write("</Collection>\n</VTKFile>\n")
 
 
-def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False):
+def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False, types="footprint",
+               threshold=None):
     """Write the VTK files of the dump ``path`` into ``outdir``; returns the
-    list of files written. ``snapshots``: indices to export (default all)."""
+    list of files written. ``snapshots``: indices to export (default all).
+    Contact types by ``types`` ("footprint", threshold in units of d, or
+    "angular", tolerance ``theta_deg``): :class:`postproc.classify.Classifier`."""
     import meshio
 
-    from .contacttypes import DEFAULT_THETA_DEG, contact_classes, shape_tables
+    from .classify import check_options, classifier_for, snapshot_classes
     from .schema import DumpReader
 
-    theta_deg = DEFAULT_THETA_DEG if theta_deg is None else theta_deg
+    check_options(types, threshold, theta_deg)
     os.makedirs(outdir, exist_ok=True)
     written, pvd_p, pvd_c = [], [], []
     with DumpReader(path) as reader:
         if len(reader) == 0:
             raise InputError(f"{path}: the dump holds no snapshots")
         shapes = reader.shapes()
-        tables = shape_tables(*shapes) if shapes is not None and len(shapes[0]) else None
+        tables = classifier_for(shapes, types, threshold, theta_deg)
         idx = range(len(reader)) if snapshots is None else snapshots
         for i in idx:
             snap = reader.read(i)
@@ -129,7 +132,7 @@ def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False):
             fp = f"particles_{snap.name}.vtu"
             meshio.write(os.path.join(outdir, fp), meshio.Mesh(pts, cells, point_data=pdata,
                                                                cell_data=cdata), binary=True)
-            pts, cells, cdata = contact_mesh(snap, contact_classes(snap, tables, theta_deg))
+            pts, cells, cdata = contact_mesh(snap, snapshot_classes(snap, tables))
             fc = f"contacts_{snap.name}.vtu"
             meshio.write(os.path.join(outdir, fc), meshio.Mesh(pts, cells, cell_data=cdata), binary=True)
             pvd_p.append((snap.time, fp))

@@ -1,0 +1,233 @@
+"""Contact classes of a snapshot under one chosen criterion.
+
+Two criteria, one interface (:class:`Classifier`):
+
+* ``"footprint"`` (the default): the group (simple, double, triple) from the
+  overlap's footprint (:mod:`postproc.footprint`, threshold t in units of
+  the pair size), dumped by kernel runs or recomputed from the shapes and
+  poses for older or stock-YADE dumps. The vertex/edge/face features of the
+  two sides come from the support features along the normal
+  (:mod:`postproc.contacttypes` at its default 5 deg) and are made to agree
+  with the group, which the footprint decides: triple -> FF (two convex
+  bodies touch over an area only face to face), double -> EF (a line: an
+  edge on a face; the rare parallel edges are counted here too), simple ->
+  VF when either side is a face (a tilted edge or face dips in by one
+  corner), else VV, VE or EE from the two sides.
+* ``"angular"`` (``--types angular``): the angular criterion alone, with
+  tolerance theta (:mod:`postproc.contacttypes`).
+
+:meth:`Classifier.classify` returns the class of every contact of a
+snapshot ("VV".."FF", "sphere", "wall") at the chosen parameter and, for
+the stability columns, at half and twice it.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import footprint as fpm
+from .contactset import lookup
+from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
+from .errors import InputError
+
+METHODS = ("footprint", "angular")
+DEFAULT_METHOD = "footprint"
+_TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
+_FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
+
+
+def reconcile(pair, f1, f2, group):
+    """(C,) int index into PAIR_TYPES: the angular pair types ``pair`` made
+    to agree with the footprint groups ``group`` (SIMPLE, DOUBLE, TRIPLE):
+    triple -> FF, double -> EF, simple -> VF when a side is a FACE, else
+    the angular type (VV, VE or EE). f1, f2 (C,) the sides' features."""
+    out = np.asarray(pair, np.int8).copy()
+    g = np.asarray(group)
+    face = (np.asarray(f1) == FACE) | (np.asarray(f2) == FACE)
+    out[g == fpm.TRIPLE] = _FF
+    out[g == fpm.DOUBLE] = _EF
+    out[(g == fpm.SIMPLE) & face] = _VF
+    return out
+
+
+@dataclass
+class Classes:
+    """The classes of one snapshot's contacts.
+
+    labels (C,) str: "VV".."FF" for polyhedra pairs, "sphere", "wall";
+    variants {"lo": labels, "hi": labels} at half and twice the parameter;
+    poly (C,) bool the polyhedra pairs; rel (P, 2) their footprint extents
+    over the pair size (footprint method; NaN where the footprint is
+    missing); columns: scalars for summary.csv (criterion, parameter,
+    footprint source, fallbacks)."""
+
+    labels: np.ndarray
+    variants: dict
+    poly: np.ndarray
+    rel: np.ndarray = None
+    columns: dict = field(default_factory=dict)
+
+
+class Classifier:
+    """Contact classes of polyhedra snapshots under one criterion.
+
+    shapes : (vertices, triangles, triangle_faces) lists as returned by
+    :meth:`postproc.schema.DumpReader.shapes`. method : "footprint" or
+    "angular". threshold : t in units of the pair size (footprint; default
+    :data:`postproc.footprint.DEFAULT_THRESHOLD`). theta_deg : the angular
+    tolerance (the criterion itself for "angular"; the feature labels for
+    "footprint"; default 5). recompute : "auto" (use the dumped footprint,
+    else recompute), "always" (ignore a dumped one) or "never".
+    """
+
+    def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
+                 recompute="auto"):
+        if method not in METHODS:
+            raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
+        if recompute not in ("auto", "always", "never"):
+            raise InputError(f"recompute must be auto, always or never, got {recompute!r}")
+        self.method = method
+        self.theta_deg = DEFAULT_THETA_DEG if theta_deg is None else float(theta_deg)
+        if not (np.isfinite(self.theta_deg) and 0 < self.theta_deg < 45):
+            raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
+        self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
+        self.recompute = recompute
+        vertices, triangles, faces = shapes
+        self.tables = shape_tables(vertices, triangles, faces)
+        self._shapes = (vertices, triangles)
+        self._geometry = None
+
+    @property
+    def parameter(self):
+        """The criterion's parameter: t (units of d) or theta (deg)."""
+        return self.threshold if self.method == "footprint" else self.theta_deg
+
+    @property
+    def geometry(self):
+        if self._geometry is None:
+            self._geometry = fpm.Geometry(*self._shapes)
+        return self._geometry
+
+    def classify(self, snap, variants=True):
+        """:class:`Classes` of every contact of the snapshot ``snap``.
+        Raises InputError (one line, naming the snapshot) for a polyhedron
+        without a shape, a bad normal, a bad footprint or size."""
+        if self.method == "angular":
+            lab = classify_snapshot(snap, self.tables, self.theta_deg)
+            var = {}
+            if variants:
+                var = {"lo": classify_snapshot(snap, self.tables, self.theta_deg / 2),
+                       "hi": classify_snapshot(snap, self.tables, self.theta_deg * 2)}
+            poly = np.isin(lab, PAIR_TYPES)
+            return Classes(lab, var, poly, None, {"ct_method": "angular", "ct_theta_deg": self.theta_deg,
+                                                  "ct_threshold": self.theta_deg})
+        return self._footprint(snap, variants)
+
+    def _footprint(self, snap, variants):
+        where = f"snapshot {snap.name} (step {snap.step})"
+        # checks, sphere/wall labels and the angular features at theta
+        if snap.orientations is not None and snap.body_kind is not None:
+            q = np.asarray(snap.orientations, float)
+            qn = np.linalg.norm(q, axis=1)
+            bad = (snap.body_kind == 1) & ~(np.isfinite(qn) & (qn > 0))
+            if bad.any():
+                raise InputError(f"{where}: polyhedron {int(snap.body_ids[np.flatnonzero(bad)[0]])} "
+                                 "has a zero or non-finite orientation")
+        base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
+        cols = {"ct_method": "footprint", "ct_threshold": self.threshold, "ct_theta_deg": self.theta_deg}
+        if not poly.any():
+            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly,
+                           np.zeros((0, 2)), {**cols, "ct_fp_recomputed": 0, "ct_fp_missing": 0})
+        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+        if snap.sizes is None:
+            raise InputError(f"{where}: footprint contact types need the particle sizes (bodies/size)")
+        d = fpm.pair_size(snap.sizes[i1], snap.sizes[i2])
+        use_dump = snap.footprint is not None and self.recompute != "always"
+        if not use_dump and self.recompute == "never":
+            raise InputError(f"{where}: the dump has no contact footprint (contacts/footprint) and "
+                             "recomputing it is switched off")
+        if use_dump:
+            ext = np.asarray(snap.footprint, float)
+            if ext.shape != (len(snap.id1), 2):
+                raise InputError(f"{where}: contacts/footprint has shape {ext.shape}, expected "
+                                 f"({len(snap.id1)}, 2)")
+            ext = ext[poly]
+        else:
+            ext, _, _ = fpm.recompute(self.geometry, snap.shape_index[i1], snap.positions[i1],
+                                      snap.orientations[i1], snap.shape_index[i2], snap.positions[i2],
+                                      snap.orientations[i2])
+        bad = ~np.isfinite(ext).all(axis=1) | (ext < 0).any(axis=1)
+        if bad.any():
+            c = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
+            raise InputError(f"{where}: contact {c}: footprint {np.asarray(ext)[bad][0].tolist()} "
+                             "is not finite and >= 0")
+        bad = ~(np.isfinite(d) & (d > 0))
+        if bad.any():
+            c = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
+            raise InputError(f"{where}: contact {c}: a particle size is not finite and > 0")
+        rel = fpm.relative_extents(ext, d)
+        # a contact with no overlap (exactly touching, or a stock-YADE contact
+        # whose exact overlap is empty) has no footprint: its angular class stays
+        missing = rel[:, 0] == 0
+        cols.update({"ct_fp_recomputed": int(not use_dump), "ct_fp_missing": int(missing.sum())})
+        rel = np.where(missing[:, None], np.nan, rel)
+
+        def labels_at(t):
+            g = fpm.footprint_groups(np.nan_to_num(rel), t)
+            out = base.copy()
+            types = np.where(missing, pair, reconcile(pair, f1, f2, g))
+            out[poly] = np.array(PAIR_TYPES)[types]
+            return out
+
+        lab = labels_at(self.threshold)
+        var = {"lo": labels_at(self.threshold / 2), "hi": labels_at(self.threshold * 2)} if variants else {}
+        relabel = np.mean(lab[poly] != np.array(PAIR_TYPES)[pair])
+        cols["ct_relabelled"] = float(relabel)
+        return Classes(lab, var, poly, rel, cols)
+
+
+def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None):
+    """Check the contact-type options before any file is opened; raises
+    InputError (one line) for an unknown criterion or a bad parameter."""
+    if method not in METHODS:
+        raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
+    if threshold is not None:
+        fpm.check_threshold(threshold)
+    if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):
+        raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
+
+
+def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None):
+    """A :class:`Classifier` for a dump's shapes, or None when there are
+    none (spheres, flat tables). Bad shapes raise InputError."""
+    if shapes is None or not len(shapes[0]):
+        return None
+    return Classifier(shapes, method, threshold, theta_deg)
+
+
+
+class AngularTables(Classifier):
+    """The angular criterion at ``theta_deg`` from prebuilt
+    :class:`postproc.contacttypes.ShapeTables` (no triangles needed)."""
+
+    def __init__(self, tables, theta_deg=None):
+        self.method = "angular"
+        self.theta_deg = DEFAULT_THETA_DEG if theta_deg is None else float(theta_deg)
+        if not (np.isfinite(self.theta_deg) and 0 < self.theta_deg < 45):
+            raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
+        self.threshold = fpm.DEFAULT_THRESHOLD
+        self.recompute = "never"
+        self.tables = tables
+        self._shapes = None
+        self._geometry = None
+
+
+def snapshot_classes(snap, classifier):
+    """(C,) str class of every contact of ``snap``: the classifier's labels
+    when there is one (a dump with shapes), else "sphere" for particle pairs
+    and "wall" for wall contacts."""
+    if classifier is not None and snap.body_kind is not None and np.any(snap.body_kind == 1):
+        return classifier.classify(snap, variants=False).labels
+    both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
+    return np.where(both, "sphere", "wall")
