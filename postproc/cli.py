@@ -211,7 +211,12 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog="postproc", description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="cmd", required=True)
     an = sub.add_parser("analyze", help="stress, fabric and force anisotropies of a dump or contact table")
-    an.add_argument("path", help="RUN.h5 dump, or a flat contact table (.csv / .parquet)")
+    an.add_argument("path", nargs="+",
+                    help="RUN.h5 dump, flat contact table (.csv / .parquet) or LAMMPS/LIGGGHTS "
+                         "local dump; several paths or a folder: one output folder each and "
+                         "a combined summary.csv with a source column")
+    an.add_argument("--jobs", type=int, default=1,
+                    help="inputs analysed in parallel processes (default 1)")
     an.add_argument("--out", required=True, help="output folder")
     an.add_argument("--axis", default="z", help="compression axis: x, y or z (default z)")
     an.add_argument("--volume", type=float, help="packing volume in m^3 (flat tables)")
@@ -297,6 +302,11 @@ def main(argv=None):
         print(f"postproc: wrote synthetic dump {args.path}", file=sys.stderr)
         return 0
     try:
+        if len(args.path) > 1 or os.path.isdir(args.path[0]) or args.jobs != 1:
+            from .many import run_from_args
+
+            return run_from_args(args)
+        args.path = args.path[0]
         if args.bins < 2:
             raise InputError("--bins must be at least 2")
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,

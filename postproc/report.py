@@ -254,6 +254,9 @@ def build_report(study, out=None, reference=REFERENCE):
         for name, cap in (("contact_types.png", "contact types of S1 against εq: proportions "
                            "(bands: the criterion's threshold halved and doubled), force ratios, "
                            "signed fabric, q/p shares (first seed)"),
+                          ("footprint.png", "footprint extents L1/d and L2/d of S1's polyhedra contacts "
+                           "(steady shear, first seed) with the threshold t, t/2 and 2t: where the "
+                           "simple, double and triple groups overlap"),
                           ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
                           ("networks.png", "strong and weak networks of S1")):
             src = os.path.join(s1[0]["analysis"], name)
