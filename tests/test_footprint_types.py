@@ -314,3 +314,49 @@ def test_a_contact_without_overlap_keeps_its_angular_class(classifier):
     snap.footprint = None
     res = classifier.classify(snap)
     assert res.labels.tolist() == ["FF", "EF"] and res.columns["ct_fp_missing"] == 2
+
+
+def test_cli_default_is_the_footprint_and_recomputes_without_one(tmp_path, capsys):
+    """postproc analyze on a dump with and without contacts/footprint (a
+    kernel run, a stock or version-1 dump): the same contact-type columns,
+    footprint.png, the stability columns at t/2 and 2t; --types angular; bad
+    options get one line and exit code 2."""
+    import pandas as pd
+
+    from builders import snapshot_dicts, write_snapshot
+    from postproc.cli import main
+    from postproc.schema import DumpWriter
+
+    snap = _snapshot(_pairs(list(CASES.values()), 1e-3))
+    snap.volumes = np.ones(len(snap.body_ids))
+    snap.masses = np.ones(len(snap.body_ids))
+    snap.wall_forces = np.zeros((6, 3))
+    faces = [geometric_faces(v, t) for v, t in SHAPES]
+    out = {}
+    for name, fp in (("kernel", True), ("stock", False)):
+        path = str(tmp_path / f"{name}.h5")
+        with DumpWriter(path, "polyhedra", {}) as w:
+            w.write_shapes([v for v, _ in SHAPES], [t for _, t in SHAPES], faces)
+            for step, stage in ((0, "isotropic"), (1, "shear")):
+                contacts = snapshot_dicts(snap)[1]
+                if fp:
+                    contacts.update(footprint=snap.footprint, footprint_area=snap.footprint_area)
+                write_snapshot(w, snap, step=step, stage=stage, contacts=contacts)
+        assert main(["analyze", path, "--out", str(tmp_path / name)]) == 0
+        out[name] = pd.read_csv(tmp_path / name / "summary.csv")
+        assert (tmp_path / name / "footprint.png").stat().st_size > 0
+    k, s = out["kernel"], out["stock"]
+    assert (k["ct_fp_recomputed"] == 0).all() and (s["ct_fp_recomputed"] == 1).all()
+    assert (k["ct_method"] == "footprint").all() and (k["ct_threshold"] == T).all()
+    cols = [c for c in k.columns if c.startswith("ct_frac_")]
+    assert len(cols) == 3 * 9
+    np.testing.assert_allclose(k[cols].to_numpy(float), s[cols].to_numpy(float), atol=1e-12)
+    n = len(CASES)
+    assert k["ct_frac_triple"].iloc[-1] == pytest.approx(2 / n) and k["ct_frac_double"].iloc[-1] == pytest.approx(2 / n)
+    assert main(["analyze", str(tmp_path / "kernel.h5"), "--out", str(tmp_path / "a"), "--types", "angular"]) == 0
+    assert (pd.read_csv(tmp_path / "a" / "summary.csv")["ct_method"] == "angular").all()
+    capsys.readouterr()
+    assert main(["analyze", str(tmp_path / "kernel.h5"), "--out", str(tmp_path / "b"), "--threshold", "2"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--threshold must be in (0, 1)" in err[0]
+    assert not (tmp_path / "b").exists()
