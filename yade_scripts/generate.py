@@ -12,7 +12,9 @@ The folder holds everything the run needs, so it can be moved or rerun:
     table.txt     a yade-batch table (one line per seed, or the one run)
 
 Run it with ``cd FOLDER && yade -x triaxial.py`` or
-``yade-batch -j 2 table.txt triaxial.py``.
+``yade-batch -j 2 table.txt triaxial.py``. With ``--slurm`` also
+``slurm.sh``, a SLURM job array with one task per table line
+(:mod:`yade_scripts.slurm`): ``cd FOLDER && sbatch slurm.sh``.
 """
 from __future__ import annotations
 
@@ -114,9 +116,25 @@ def main(argv=None):
     ap.add_argument("--set", action="append", metavar="NAME=VALUE", help="override a parameter")
     ap.add_argument("--seeds", type=int, nargs="+", help="seeds for the yade-batch table")
     ap.add_argument("--library", help="shape library (default runs/shapes/library.h5)")
+    ap.add_argument("--slurm", action="store_true",
+                    help="also write slurm.sh: a SLURM job array, one task per table line")
+    ap.add_argument("--slurm-cpus", type=int, default=2, help="cores per array task (default 2)")
+    ap.add_argument("--slurm-time", default="24:00:00", help="time limit per task (default 24:00:00)")
+    ap.add_argument("--slurm-partition", help="SLURM partition (default: the cluster's)")
     args = ap.parse_args(argv)
     try:
+        if args.slurm_cpus < 1 or not re.fullmatch(r"(\d+-)?\d+(:\d\d){0,2}", args.slurm_time):
+            raise ConfigError("--slurm-cpus must be >= 1 and --slurm-time like 24:00:00 or 7-00:00:00")
         p = generate(args.out, args.preset, args.sample, parse_overrides(args.set), args.seeds, args.library)
+        if args.slurm:
+            from .batch import read_table
+            from .slurm import estimate, write_slurm
+
+            script = write_slurm(args.out, p, read_table(args.out), args.slurm_cpus,
+                                 args.slurm_time, args.slurm_partition)
+            print(f"generate: {script}: {len(read_table(args.out))} array task(s), about "
+                  f"{estimate(p)['core_hours']:.3g} core-hours each; submit with: "
+                  f"cd {args.out} && sbatch slurm.sh", file=sys.stderr)
     except ConfigError as exc:
         print(f"generate: error: {exc}", file=sys.stderr)
         return 2

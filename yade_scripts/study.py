@@ -170,15 +170,75 @@ def analyse_and_report(out, runs):
     return failed
 
 
+def collect(folder):
+    """Analyse and report whatever has finished in the generated run folders
+    at or below ``folder`` (each with a yade-batch ``table.txt``; dumps in
+    the line's own folder, as the SLURM array of ``generate --slurm``
+    writes them, or next to the table, as yade-batch does). Writes
+    FOLDER/manifest.json and FOLDER/report/. Returns (runs analysed as
+    {sample: [(label, dump, 0)]}, lines not finished, failures)."""
+    import json
+
+    from .batch import complete, dump_of, read_table
+
+    if not os.path.isdir(folder):
+        raise ConfigError(f"{folder}: no such folder")
+    tables = [folder] if os.path.exists(os.path.join(folder, "table.txt")) else sorted(
+        os.path.join(folder, d) for d in os.listdir(folder)
+        if os.path.exists(os.path.join(folder, d, "table.txt")))
+    if not tables:
+        raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
+    runs, pending = {}, []
+    for t in tables:
+        try:
+            with open(os.path.join(t, "params.json")) as fh:
+                sample = json.load(fh)["sample"]
+        except (OSError, ValueError, KeyError):
+            raise ConfigError(f"{t}: params.json missing or without 'sample'") from None
+        for _, r in read_table(t):
+            d = r["description"]
+            own = os.path.join(t, d, os.path.basename(dump_of(t, r)))
+            dump = own if os.path.exists(own) or not os.path.exists(dump_of(t, r)) else dump_of(t, r)
+            label = f"seed {r['seed']}" if "seed" in r else d
+            if len(tables) > 1:
+                label = f"{os.path.basename(t)} {label}"
+            if complete(dump):
+                runs.setdefault(sample, []).append((label, dump, 0))
+            else:
+                pending.append(f"{os.path.relpath(os.path.join(t, d), folder)} "
+                               f"({'unfinished' if os.path.exists(dump) else 'not started'})")
+    for p in pending:
+        print(f"study: not finished: {p}", file=sys.stderr)
+    if not runs:
+        raise ConfigError(f"{folder}: no run has finished yet ({len(pending)} pending)")
+    failed = analyse_and_report(folder, runs)
+    return runs, pending, failed
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.study", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
-    ap.add_argument("--out", required=True)
+    ap.add_argument("--out", help="study folder (required unless --collect)")
+    ap.add_argument("--collect", metavar="DIR",
+                    help="analyse and report whatever has finished in the run folders of DIR "
+                         "(e.g. a SLURM array from generate --slurm), run nothing")
     ap.add_argument("--set", action="append", metavar="NAME=VALUE")
     ap.add_argument("--library")
     ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: via yade-batch)")
     ap.add_argument("--jobs", type=int, default=2, help="yade-batch jobs at a time (ensembles)")
     args = ap.parse_args(argv)
+    if args.collect:
+        try:
+            runs, pending, failed = collect(args.collect)
+        except ConfigError as exc:
+            print(f"study: error: {exc}", file=sys.stderr)
+            return 2
+        n = sum(len(v) for v in runs.values())
+        print(f"study: collected {n} finished run(s), {len(pending)} not finished; report in "
+              f"{args.collect}/report/report.md", file=sys.stderr)
+        return 1 if failed else 0
+    if not args.out:
+        ap.error("--out is required (unless --collect)")
     try:
         if args.ensemble < 1:
             raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")

@@ -1,0 +1,96 @@
+"""SLURM job arrays (issue 12): generate --slurm writes a script bash accepts,
+one array task per table line; two tiny lines run locally with
+SLURM_ARRAY_TASK_ID set, then study --collect analyses what has finished."""
+import json
+import math
+import os
+import shutil
+import subprocess
+
+import h5py
+import pytest
+
+from yade_scripts.generate import main as generate_main
+from yade_scripts.presets import resolve
+from yade_scripts.slurm import REFERENCE_STEPS, estimate
+from yade_scripts.study import main as study_main
+
+YADE = shutil.which("yade")
+
+
+def make(tmp_path, seeds=(1, 2, 3), *extra):
+    out = tmp_path / "arr"
+    assert generate_main(["--preset", "tiny", "--sample", "spheres", "--out", str(out),
+                          "--seeds", *map(str, seeds), "--slurm", *extra]) == 0
+    return out
+
+
+def task(out, k, cwd):
+    env = {k_: v for k_, v in os.environ.items() if not k_.startswith("SLURM_")}
+    if k is not None:
+        env["SLURM_ARRAY_TASK_ID"] = str(k)
+    return subprocess.run(["bash", str(out / "slurm.sh")], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=600)
+
+
+def test_script_is_valid_bash_with_one_task_per_line(tmp_path):
+    out = make(tmp_path, (1, 2, 3), "--slurm-cpus", "4", "--slurm-time", "2-00:00:00")
+    script = (out / "slurm.sh").read_text()
+    assert subprocess.run(["bash", "-n", str(out / "slurm.sh")]).returncode == 0
+    assert "#SBATCH --array=1-3" in script and "#SBATCH --cpus-per-task=4" in script
+    assert "#SBATCH --time=2-00:00:00" in script
+    assert "LINES=(2 3 4)" in script and "DESCS=(spheres-seed1 spheres-seed2 spheres-seed3)" in script
+    assert "yade -j" in script and "-x triaxial.py" in script
+    # out-of-range and missing task ids are refused without running anything
+    for k in (0, 4, "x"):
+        r = task(out, k, tmp_path)
+        assert r.returncode == 2 and "no such line" in r.stderr
+    r = task(out, None, tmp_path)
+    assert r.returncode != 0 and "SLURM_ARRAY_TASK_ID is not set" in r.stderr
+    assert not any((out / f"spheres-seed{k}").exists() for k in (1, 2, 3))
+
+
+def test_bad_options_and_empty_collect(tmp_path, capsys):
+    assert generate_main(["--preset", "tiny", "--sample", "spheres", "--out",
+                          str(tmp_path / "x"), "--slurm", "--slurm-time", "soon"]) == 2
+    assert "--slurm-time" in capsys.readouterr().err
+    assert study_main(["--collect", str(tmp_path)]) == 2
+    assert "no generated run folder" in capsys.readouterr().err
+    out = make(tmp_path, (1,))
+    assert study_main(["--collect", str(out)]) == 2
+    assert "no run has finished yet (1 pending)" in capsys.readouterr().err
+
+
+def test_cost_model_scaling():
+    p = resolve("paper", "polyhedra")
+    e = estimate(p)
+    steps = REFERENCE_STEPS["polyhedra"] * math.sqrt(1e4 / 300) * 2e-2 / 1e-3
+    assert e["steps"] == pytest.approx(steps, rel=1e-12)
+    assert e["contacts"] == pytest.approx(36933 * 3.0)
+    assert e["core_hours"] == pytest.approx(steps * 36933 * 3.0 * 6.0 * 2 / 3.6e9, rel=1e-12)
+    q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2x sqrt(kappa), 1/2 I: same steps
+    assert estimate(q)["steps"] == pytest.approx(e["steps"], rel=1e-12)
+
+
+@pytest.mark.yade
+@pytest.mark.skipif(YADE is None, reason="needs Debian's yade")
+def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
+    out = make(tmp_path, (1, 2, 3))
+    for k in (1, 2):
+        r = task(out, k, tmp_path)            # from another folder: the script finds its own
+        assert r.returncode == 0, r.stdout + r.stderr
+        d = out / f"spheres-seed{k}"
+        assert (d / "triaxial.log").exists() and "done in" in (d / "triaxial.log").read_text()
+        with h5py.File(d / f"spheres-seed{k}.h5", "r") as f:
+            assert f.attrs["complete"] == 1
+            assert json.loads(f.attrs["parameters"])["seed"] == k     # the line's parameters
+    again = task(out, 1, tmp_path)
+    assert again.returncode == 0 and "is complete, nothing to do" in again.stdout
+    # line 3 never ran: collected as pending, the two finished ones analysed
+    assert study_main(["--collect", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "not finished: spheres-seed3 (not started)" in err
+    manifest = json.loads((out / "manifest.json").read_text())
+    assert [m["label"] for m in manifest["spheres"]] == ["seed 1", "seed 2"]
+    assert all(m["status"] == "ok" for m in manifest["spheres"])
+    assert (out / "report" / "report.md").exists()
