@@ -13,7 +13,8 @@ pytestmark = [pytest.mark.skipif(YADE is None or shutil.which("yade-batch") is N
                                  reason="Debian yade is not installed")]
 
 FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
-           "s1_contact_types.png", "s1_force_pdf.png", "s1_networks.png",
+           "s1_contact_types.png", "s1_force_pdf.png", "s1_networks.png", "s1_footprint.png",
+           "fig_types_polar.png",
            "packing_polyhedra.png", "packing_spheres.png")
 
 
