@@ -9,8 +9,8 @@ Task k makes the folder ``<description of line k>/`` (links to the scene,
 that line's parameters (``YADE_BATCH=table.txt:LINE``, as yade-batch does),
 and keeps its log (``triaxial.log``) and dump in that folder. A task whose
 dump is already complete exits at once, so the array can be resubmitted
-after failures or time-outs (an unfinished run resumes from its checkpoint
-when the scene has one). ``python -m yade_scripts.study --collect FOLDER``
+after failures or time-outs (an unfinished line starts afresh, or resumes
+once the scene writes checkpoints, issue 15). ``python -m yade_scripts.study --collect FOLDER``
 then analyses whatever has finished.
 
 Run a task by hand (no SLURM): ``SLURM_ARRAY_TASK_ID=2 bash slurm.sh``.
