@@ -19,13 +19,21 @@ force on id2 by id1, branch vector x2 - x1; both codes give the opposite):
   remapped into the box (lines 448-453), hence minimum image across
   periodic boundaries; the third ``id`` column is 1 for a pair across a
   periodic boundary (lines 462-472).
-* LAMMPS (github.com/lammps/lammps): ``src/compute_pair_local.cpp``
-  (compute_pairs) writes fx = delx*fpair with delx = x_I - x_J, and for
-  ``pair_style granular`` ``src/GRANULAR/pair_granular.cpp`` (single())
-  sets fpair = Fntot/r, svector[0..2] = the tangential force on I
-  (``p1 p2 p3``) and svector[9..11] = delx, dely, delz = x_I - x_J
-  (``p10 p11 p12``, the branch vector through the periodic image). So
-  fx..fz + p1..p3 is the total force on I = patom1 by J = patom2.
+* LAMMPS (github.com/lammps/lammps; the repository is too large to fetch
+  whole, so these files were read one by one and are cited by function and
+  expression): ``src/compute_pair_local.cpp`` (commit 65d2a8ca,
+  ComputePairLocal::compute_pairs) sets ``delx = xtmp - x[j][0]`` (x_I -
+  x_J) and writes ``case FX: ptr[n] = delx*fpair``; for ``pair_style
+  granular``, ``src/GRANULAR/pair_granular.cpp`` PairGranular::single()
+  sets ``fforce = Fntot*rinv`` (current master) and ``svector[0..2] =
+  fs1..fs3`` (the tangential force on I, ``p1 p2 p3``), ``svector[9..11] =
+  delx, dely, delz`` (x_I - x_J through the periodic image, ``p10 p11
+  p12``; the same in commit 28607f15 and in master). So fx..fz + p1..p3 is
+  the total force on I = patom1 by J = patom2. ``compute property/local
+  patom1 patom2 cutoff radius`` (src/compute_property_local.cpp,
+  count_pairs) runs the same pair loop with the same newton/ghost skips and
+  the same ``rsq >= radsum*radsum`` test as ``compute pair/local ... cutoff
+  radius``, so their rows match one to one.
 
 Both are therefore negated here. Box bounds (``pp`` = periodic) come from
 each block's header; the volume is the box volume (``%g`` in the header: 6
