@@ -145,6 +145,10 @@ def _parse_block(path, lines, k0, k1):
         raise InputError(f"{path}: line {hk + 2 + n}: block of step {step} has more than the "
                          f"{n} rows it announces")
     K = len(columns)
+    data = _fast_rows(rows, n, K)
+    if data is not None:
+        return Block(step, lo, hi, periodic, columns, data, hk + 2)
+    # something is wrong (or unusual): the slow path finds the line and column
     counts = np.fromiter((len(r.split()) for r in rows), int, len(rows))
     bad = np.flatnonzero(counts != K)
     if bad.size:
@@ -168,6 +172,27 @@ def _parse_block(path, lines, k0, k1):
         raise InputError(f"{path}: line {hk + 2 + j}, column {c + 1} ({columns[c]}): "
                          f"{data[j, c]} (NaN or infinite)")
     return Block(step, lo, hi, periodic, columns, data, hk + 2)
+
+
+def _fast_rows(rows, n, K):
+    """(n, K) float array of the rows through pandas' C parser, or None when
+    anything is off (ragged rows, text, NaN, blank lines): the caller then
+    walks the rows to name the first bad line and column."""
+    import io
+
+    import pandas as pd
+
+    if n == 0:
+        return None
+    try:
+        df = pd.read_csv(io.StringIO("\n".join(rows)), sep=r"\s+", header=None,
+                         engine="c", dtype=np.float64, skip_blank_lines=False)
+    except (ValueError, pd.errors.ParserError):
+        return None
+    data = df.to_numpy()
+    if data.shape != (n, K) or not np.isfinite(data).all():
+        return None
+    return data
 
 
 def _ids(path, blk, col, label):
