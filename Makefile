@@ -10,7 +10,7 @@ STAMP := $(VENV)/.installed
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 STUDY ?= runs/study
 PRESET ?= default
-ENSEMBLE ?= 1
+ENSEMBLE ?= 3
 SHAPES_LIB ?= runs/shapes/library.h5
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE

@@ -99,6 +99,10 @@ def load():
     lib.pc_engine_memory.restype = ctypes.c_long
     lib.pc_engine_set_history.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, _D]
     lib.pc_engine_set_history.restype = ctypes.c_int
+    lib.pc_engine_set_friction.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double]
+    lib.pc_engine_set_friction.restype = ctypes.c_int
+    lib.pc_engine_get_friction.argtypes = [ctypes.c_void_p, _D]
+    lib.pc_engine_get_friction.restype = None
     lib.pc_engine_npairs.argtypes = [ctypes.c_void_p]
     lib.pc_engine_npairs.restype = ctypes.c_int
     lib.pc_engine_get_state.argtypes = [ctypes.c_void_p, _D, _D, _D, _I, _D, _D, _D, _I, _D]

@@ -150,6 +150,21 @@ class ContactEngine:
         if self.lib.pc_engine_set_history(self.handle, int(i), int(j), ckernel.dptr(f)) != 0:
             raise KeyError(f"pair ({i}, {j}) is not in the neighbour list")
 
+    def set_friction(self, mu, mu_wall):
+        """Set the particle-particle and particle-wall friction coefficients
+        from the next step on (e.g. frictionless compaction, then mu before
+        shear). Shear histories above the new cap mu |F_n| are cut to it at
+        that step."""
+        if self.lib.pc_engine_set_friction(self.handle, float(mu), float(mu_wall)) != 0:
+            raise ValueError(f"friction coefficients must be finite and >= 0, got {mu!r}, {mu_wall!r}")
+
+    @property
+    def friction(self):
+        """(mu, mu_wall) now."""
+        out = np.zeros(2)
+        self.lib.pc_engine_get_friction(self.handle, ckernel.dptr(out))
+        return float(out[0]), float(out[1])
+
     STATE_KEYS = ("x", "R", "xbuild", "pair_ids", "pair_records", "wall_shear", "wall_results", "wall_touching",
                   "scalars")
 
@@ -171,6 +186,7 @@ class ContactEngine:
                                      ckernel.dptr(st["pair_records"]), ckernel.dptr(st["wall_shear"]),
                                      ckernel.dptr(st["wall_results"]), ckernel.iptr(st["wall_touching"]),
                                      ckernel.dptr(st["scalars"]))
+        st["friction"] = np.array(self.friction)
         return st
 
     def set_state(self, st):
@@ -197,6 +213,8 @@ class ContactEngine:
             raise ValueError("engine state: pair ids out of range or unsorted (not a state of this engine)")
         if err:
             raise EngineError("could not restore the engine state (out of memory)")
+        if "friction" in st:          # states taken before friction was part of them keep the engine's own
+            self.set_friction(*np.asarray(st["friction"], float).reshape(2))
 
     def contacts(self):
         """The touching contacts of the last step: a dict of arrays. ``i``,

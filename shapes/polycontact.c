@@ -1213,6 +1213,17 @@ int pc_engine_set_history(engine_t *E, int i, int j, const double *ft) {
     return -1;
 }
 
+/* Change the friction coefficients between steps (e.g. frictionless
+ * compaction, then mu before shear). Histories above the new cap are cut to
+ * it at the next step. Returns 0, or -1 for a negative or non-finite value. */
+int pc_engine_set_friction(engine_t *E, double mu, double mu_wall) {
+    if (!(mu >= 0 && mu_wall >= 0 && isfinite(mu) && isfinite(mu_wall))) return -1;
+    E->mu = mu; E->mu_wall = mu_wall;
+    return 0;
+}
+
+void pc_engine_get_friction(const engine_t *E, double *mu) { mu[0] = E->mu; mu[1] = E->mu_wall; }
+
 /* ================================================================== engine state (checkpoints) */
 /* Everything a later step depends on, so that an engine restored from it
  * continues bit for bit like the original: the last poses (x, R), the

@@ -147,6 +147,13 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
             walls = np.isin(s.id1, s.wall_ids) | np.isin(s.id2, s.wall_ids)
             assert np.all(ft[~walls] <= 0.5 * fn[~walls] * (1 + 1e-9) + 1e-12)   # Coulomb, mu = 0.5
             assert np.all(ft[walls] <= 1e-9 * fn[walls] + 1e-12)                 # frictionless walls
+            # dense preparation: frictionless compaction (compaction_friction 0),
+            # mu = 0.5 from the start of shear, reached by sliding contacts
+            ratio = ft[~walls] / fn[~walls]
+            if s.stage == "isotropic":
+                assert r.parameters["compaction_friction"] == 0.0 and np.all(ratio <= 1e-12)
+            elif i == len(r) - 1:
+                assert ratio.max() == pytest.approx(0.5, rel=1e-9)
 
 
 @pytest.mark.parametrize("kind", KINDS)

@@ -3,7 +3,10 @@
 ``tiny``     the test suite: a few dozen particles, a few percent of strain,
              well under 3 minutes per sample on this machine.
 ``default``  the main job of ``make study`` (see the README for its cost and
-             how it was chosen).
+             how it was chosen): dense preparation, i.e. frictionless
+             isotropic compaction (``compaction_friction`` 0), friction
+             0.5 from the start of shear, as for the paper's dense samples.
+``loose``    the default compacted with friction 0.5 (a looser start).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
              cluster through yade-batch; not run here.
 
@@ -13,7 +16,7 @@ block holds the full list with units).
 from __future__ import annotations
 
 COMMON = {
-    "sigma0": 1.0e4, "friction": 0.5, "wall_friction": 0.0, "density": 2700.0,
+    "sigma0": 1.0e4, "friction": 0.5, "compaction_friction": 0.0, "wall_friction": 0.0, "density": 2700.0,
     "tangential_ratio": 1.0, "damping": 0.2, "compaction_damping": 0.2, "safety": 0.3, "servo_gain": 10.0, "servo_time": 0.01,
     "initial_fraction": 0.25, "aspect": 2.0, "iso_tolerance": 0.01,
     "unbalanced_tolerance": 0.01, "wall_speed": 0.0, "library": "shapes.h5", "out": "run.h5",
@@ -32,7 +35,7 @@ PRESETS = {
     "default": {
         "common": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
                    "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
-        "polyhedra": {"n_particles": 3000},
+        "polyhedra": {"n_particles": 1000},
         "spheres": {"n_particles": 1000},
     },
     "paper": {
@@ -43,6 +46,12 @@ PRESETS = {
     },
 }
 
+# The default's loose twin: the same samples compacted with the shear
+# friction (0.5) instead of frictionless, i.e. a looser initial state.
+PRESETS["loose"] = {"common": {**PRESETS["default"]["common"], "compaction_friction": 0.5},
+                    "polyhedra": dict(PRESETS["default"]["polyhedra"]),
+                    "spheres": dict(PRESETS["default"]["spheres"])}
+
 # type and allowed range of every parameter a user may set
 SCHEMA = {
     "sample": (str, ("polyhedra", "spheres")),
@@ -50,6 +59,7 @@ SCHEMA = {
     "seed": (int, (0, 2**63 - 1)),
     "sigma0": (float, (1e-3, 1e12)),
     "friction": (float, (0.0, 10.0)),
+    "compaction_friction": (float, (0.0, 10.0)),
     "wall_friction": (float, (0.0, 10.0)),
     "density": (float, (1e-3, 1e6)),
     "kappa": (float, (1.0, 1e9)),

@@ -36,7 +36,8 @@ readParamsFromTable(
     n_particles=60,              # number of particles
     seed=1,                      # sample seed (sizes, shapes, orientations, positions)
     sigma0=1.0e4,                # Pa, confining stress
-    friction=0.5,                # particle-particle friction coefficient
+    friction=0.5,                # particle-particle friction coefficient (shear)
+    compaction_friction=0.0,     # ... during the isotropic compression (0: the dense state; = friction: loose)
     wall_friction=0.0,           # particle-wall friction coefficient
     density=2700.0,              # kg/m^3 (granite ballast)
     kappa=1.0e3,                 # stiffness level: typical contact stiffness / (sigma0 d)
@@ -116,11 +117,13 @@ if POLY:
     # Ip2 takes kn = E1 E2 / (E1 + E2): E = 2 k_v gives kn = k_v; poisson ~ 0
     # gives YADE's own (shared-history) shear stiffness ~ 0: see tangential.py
     POISSON_OFF = 1e-20
-    grain = PolyhedraMat(young=2 * k_v, poisson=POISSON_OFF, frictionAngle=math.atan(friction), density=density)
+    grain = PolyhedraMat(young=2 * k_v, poisson=POISSON_OFF, frictionAngle=math.atan(compaction_friction),
+                         density=density)
     wallmat = PolyhedraMat(young=2 * k_v, poisson=POISSON_OFF, frictionAngle=math.atan(wall_friction), density=density)
 else:
     young = 2 * kappa * sigma0                               # kn = E R for equal spheres = kappa sigma0 d
-    grain = FrictMat(young=young, poisson=tangential_ratio, frictionAngle=math.atan(friction), density=density)
+    grain = FrictMat(young=young, poisson=tangential_ratio, frictionAngle=math.atan(compaction_friction),
+                     density=density)
     wallmat = FrictMat(young=young, poisson=tangential_ratio, frictionAngle=math.atan(wall_friction), density=density)
 O.materials.append(grain)
 O.materials.append(wallmat)
@@ -186,7 +189,7 @@ if KERNEL:
 
     shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
     kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
-                            friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
+                            compaction_friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
     if kernel.threads > 1 and os.environ.get("OMP_WAIT_POLICY", "").lower() != "passive":
         print("triaxial.py: note: OMP_WAIT_POLICY=PASSIVE is not set; with other jobs on the same cores, "
               "OpenMP's spinning threads can slow the kernel down many times", flush=True)
@@ -258,6 +261,20 @@ def wall_forces():
 def set_wall_velocities(vel):
     for w, v in zip(walls, vel):
         O.bodies[w].state.vel = tuple(v)
+
+
+def set_friction(mu):
+    """Particle-particle friction from now on (the walls keep wall_friction):
+    the grain material for new contacts, and every touching particle pair
+    (the kernel's coefficient, or the YADE interactions' Coulomb cap)."""
+    grain.frictionAngle = math.atan(mu)
+    if KERNEL:
+        kernel.engine.set_friction(mu, wall_friction)
+        return
+    wall_set = set(walls)
+    for i in O.interactions:
+        if i.isReal and i.id1 not in wall_set and i.id2 not in wall_set:
+            i.phys.tangensOfFrictionAngle = mu
 
 
 def kernel_step():
@@ -338,6 +355,9 @@ def control():
             snapshot("isotropic")
             state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3))
             newton.damping = damping
+            if compaction_friction != friction:
+                set_friction(friction)
+                print(f"triaxial.py: friction {compaction_friction:g} -> {friction:g} for shear", flush=True)
             state["v_top"] = wall_speed if wall_speed > 0 else rate_shear * L[2]
             writer.update_parameters(top_wall_speed=state["v_top"], solid_fraction_isotropic=state["phi_iso"],
                                      box_isotropic=L.tolist())
