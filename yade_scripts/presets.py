@@ -3,10 +3,12 @@
 ``tiny``     the test suite: a few dozen particles, a few percent of strain,
              well under 3 minutes per sample on this machine.
 ``default``  the main job of ``make study`` (see the README for its cost and
-             how it was chosen): dense preparation, i.e. frictionless
-             isotropic compaction (``compaction_friction`` 0), friction
-             0.5 from the start of shear, as for the paper's dense samples.
-``loose``    the default compacted with friction 0.5 (a looser start).
+             how it was chosen), prepared as published: solid fraction about
+             0.6 after isotropic compaction for both samples, reached with the
+             interparticle friction of the compaction (``compaction_friction``:
+             0.5 for polyhedra, 0 for spheres); friction 0.5 for both in shear.
+``loose``    the default with both samples compacted at friction 0.5.
+``dense``    the default with both samples compacted frictionless.
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
              cluster through yade-batch; not run here.
 
@@ -35,8 +37,11 @@ PRESETS = {
     "default": {
         "common": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
                    "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
-        "polyhedra": {"n_particles": 1000},
-        "spheres": {"n_particles": 1000},
+        # solid fraction after compaction about 0.6 for both, as published:
+        # polyhedra compacted with mu = 0.5 (0.587 at 1000 grains, 0.602 at
+        # 3000; frictionless gives 0.71), spheres frictionless (0.61)
+        "polyhedra": {"n_particles": 1000, "compaction_friction": 0.5},
+        "spheres": {"n_particles": 1000, "compaction_friction": 0.0},
     },
     "paper": {
         "common": {"kappa": 1.0e4, "inertial_number": 1e-3, "compaction_inertial_number": 1e-2,
@@ -46,11 +51,11 @@ PRESETS = {
     },
 }
 
-# The default's loose twin: the same samples compacted with the shear
-# friction (0.5) instead of frictionless, i.e. a looser initial state.
-PRESETS["loose"] = {"common": {**PRESETS["default"]["common"], "compaction_friction": 0.5},
-                    "polyhedra": dict(PRESETS["default"]["polyhedra"]),
-                    "spheres": dict(PRESETS["default"]["spheres"])}
+# The default's loose and dense twins: both samples compacted with the
+# shear friction 0.5 (loose start) or frictionless (densest start).
+for _name, _mu in (("loose", 0.5), ("dense", 0.0)):
+    PRESETS[_name] = {"common": dict(PRESETS["default"]["common"]),
+                      **{s: {**PRESETS["default"][s], "compaction_friction": _mu} for s in ("polyhedra", "spheres")}}
 
 # type and allowed range of every parameter a user may set
 SCHEMA = {
