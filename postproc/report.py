@@ -26,6 +26,8 @@ import shutil
 import numpy as np
 
 from .claims import evaluate, plateau
+from .dilatancy import peak_summary
+from .statistics import plateau_estimate
 
 SAMPLES = ("polyhedra", "spheres")
 LABEL = {"polyhedra": "S1 polyhedra", "spheres": "S2 spheres"}
@@ -84,8 +86,15 @@ def comparison_table(summaries, reference):
             frames = [df.assign(**{col: combine(df)}) for df in frames]
         rows.append((name, sample, plateau(frames, col) if frames else None, pub))
 
+    def add_peak(name, sample, item, pub):
+        """A per-run value at the peak of q/p, one value per seed."""
+        vals = [peak_summary(df)[item] for df in summaries.get(sample, [])]
+        rows.append((name, sample, plateau_estimate([[v] for v in vals]) if vals else None, pub))
+
     for s in SAMPLES:
         add("q/p plateau", s, "q_over_p", res["q_over_p_plateau"].get(s))
+        add_peak("q/p peak", s, 0, None)
+        add_peak("dilatancy angle at the peak (deg)", s, 2, res.get("dilatancy_angle_at_peak_deg", {}).get(s))
         add("a + a_l", s, "a_al", res["a_plus_a_l"].get(s), lambda d: d["a"] + d["a_l"])
         add("a_n + a_t", s, "an_at", res["a_n_plus_a_t"].get(s), lambda d: d["a_n"] + d["a_t"])
         for k in ("a", "a_l", "a_n", "a_t"):
