@@ -39,6 +39,7 @@ LIB_FILES = {  # copied name: source
     "tangential.py": os.path.join(HERE, "tangential.py"),
     "yadedump.py": os.path.join(HERE, "yadedump.py"),
     "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
+    "checkpoint.py": os.path.join(HERE, "checkpoint.py"),
     "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
     "engine.py": os.path.join(ROOT, "shapes", "engine.py"),
     "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),

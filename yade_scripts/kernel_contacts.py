@@ -69,6 +69,20 @@ class KernelContacts:
         self.calls = 0
         self.touch_steps = 0          # sum over steps of touching contacts (pairs + walls)
 
+    def rebind(self):
+        """Take the body states from the scene now in ``O`` (after ``O.load``
+        of a checkpoint the old State objects belong to the discarded scene)."""
+        self.states = [self.O.bodies[int(i)].state for i in self.particles]
+        self.wall_states = [self.O.bodies[w].state for w in self.walls]
+
+    def counters(self):
+        """The counters a checkpoint carries (timing, calls, touch steps)."""
+        return {"seconds": dict(self.seconds), "calls": self.calls, "touch_steps": self.touch_steps}
+
+    def set_counters(self, c):
+        self.seconds = {k: float(v) for k, v in c["seconds"].items()}
+        self.calls, self.touch_steps = int(c["calls"]), int(c["touch_steps"])
+
     def _read(self):
         rows = [s.pos.__getinitargs__() + s.ori.__getinitargs__() for s in self.states]
         a = np.array(rows, float).reshape(-1, 7)

@@ -93,6 +93,8 @@ SCHEMA = {
     "contact_engine": (str, ("kernel", "yade")),
     "kernel_threads": (int, (0, 1024)),
     "verlet_skin": (float, (1e-4, 10.0)),
+    "checkpoint_seconds": (float, (0.0, 1e7)),
+    "resume": (bool, None),
 }
 
 

@@ -19,10 +19,24 @@ helper modules) and, for polyhedra, shapes.h5. Run it there with
     yade-batch table.txt triaxial.py     (sweeps and seed ensembles)
 
 A yade-batch table overrides any parameter by its name.
+
+Checkpoints and resume: every ``checkpoint_seconds`` of wall time, and when
+the process receives SIGTERM (what SLURM and most schedulers send before a
+kill), the run writes OUT.ckpt (lib/checkpoint.py: the YADE scene by O.save,
+the controller's state, the kernel's state or the tangential histories, the
+dump position), atomically, keeping the previous one as OUT.ckpt.prev. Run
+the same command again in the folder and it resumes from the newest usable
+checkpoint, appending to the same dump (``resume=False`` starts afresh).
+Exit codes: 0 done (or already complete), 3 stopped on a blow-up or
+max_steps (message printed, snapshots kept), 75 checkpoint written after
+SIGTERM (run again to resume), anything else a crash (run again to resume
+from the last periodic checkpoint).
 """
 import json
 import math
 import os
+import shutil
+import signal
 import sys
 import time
 
@@ -66,6 +80,8 @@ readParamsFromTable(
     contact_engine="kernel",     # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
     kernel_threads=0,            # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
     verlet_skin=0.1,             # kernel neighbour-list margin, in units of the mean d
+    checkpoint_seconds=300.0,    # s of wall time between checkpoints (0: only on SIGTERM)
+    resume=True,                 # continue from OUT.ckpt when there is one (False: start afresh)
     noTableOk=True,
 )
 # --- end of parameters ---
@@ -73,6 +89,7 @@ from yade.params.table import *  # noqa: E402,F401,F403
 
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
 sys.path.insert(0, os.path.join(HERE, "lib"))
+import checkpoint  # noqa: E402
 import dumpschema  # noqa: E402
 import sample as sampling  # noqa: E402
 import servo  # noqa: E402
@@ -90,6 +107,47 @@ KERNEL = POLY and contact_engine == "kernel"
 # warnings; keep its errors, drop its warnings.
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 os.chdir(HERE)
+
+# ------------------------------------------------------------ resume from a checkpoint, or start afresh
+# SIGTERM only raises a flag here: the run loop below then stops at the end
+# of a step, writes a checkpoint and exits with EXIT_TERM.
+EXIT_FAILED, EXIT_TERM = 3, 75
+term_signal = []
+signal.signal(signal.SIGTERM, lambda signum, frame: term_signal.append(signum))
+params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
+stem = out[:-3] if out.endswith(".h5") else out                # run.h5 -> run.log.csv, run.info.json, run.ckpt
+DUMP, CKPT = os.path.join(HERE, out), os.path.join(HERE, stem + ".ckpt")
+
+
+def resume_writer(meta):
+    """The dump reopened after the checkpoint's snapshot count (raises a
+    one-line DumpFormatError when a snapshot it counts is missing)."""
+    return dumpschema.DumpWriter.resume(DUMP, meta["n_snapshots"])
+
+
+resumed = None                  # (path, meta, arrays, blobs, writer) of the checkpoint we continue from
+if resume:
+    resumed = checkpoint.choose(CKPT, checkpoint.fingerprint(params), resume_writer,
+                                say=lambda m: print(f"triaxial.py: {m}", flush=True))
+if resumed is None:
+    if os.path.exists(DUMP):
+        try:
+            with dumpschema.DumpReader(DUMP) as r:
+                done_already = r.complete
+        except dumpschema.DumpFormatError:
+            done_already = False
+        if done_already:
+            print(f"triaxial.py: {out} is complete already; nothing to do (delete it to run again)", flush=True)
+            sys.exit(0)
+    left = [p for p in (DUMP, DUMP + ".parts", CKPT, CKPT + ".prev", stem + ".log.csv", stem + ".info.json")
+            if os.path.exists(p)]
+    if left:
+        print(f"triaxial.py: starting afresh: removing the unfinished attempt ({', '.join(map(os.path.basename, left))})",
+              flush=True)
+        shutil.rmtree(DUMP + ".parts", ignore_errors=True)
+        for p in left:
+            if os.path.isfile(p):
+                os.remove(p)
 
 # ------------------------------------------------------------ sample
 rng = np.random.default_rng(seed)
@@ -187,7 +245,11 @@ if KERNEL:
     # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
     from kernel_contacts import KernelContacts, KernelError  # noqa: E402
 
-    shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
+    if resumed:     # the run's own shapes: YADE's Polyhedra come out of each build slightly different
+        shape_v = checkpoint.unragged(resumed[2]["shape_vertices"], resumed[2]["shape_vertex_offsets"])
+        shape_t = checkpoint.unragged(resumed[2]["shape_triangles"], resumed[2]["shape_triangle_offsets"])
+    else:
+        shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
     kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
                             compaction_friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
     if kernel.threads > 1 and os.environ.get("OMP_WAIT_POLICY", "").lower() != "passive":
@@ -234,18 +296,24 @@ derived = {
     "d_mean": d_mean, "kn_volumetric": k_v if POLY else None, "young": 2 * k_v if POLY else young,
     "a_face": a_face if POLY else None, "contact_engine": contact_engine if POLY else "yade",
 }
-params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
-writer = dumpschema.DumpWriter(os.path.join(HERE, out), sample, {**params, **derived},
-                               overlap_kind="volume" if POLY else "depth")
-if POLY:
-    writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
 shape_index = np.arange(n_particles) if POLY else np.full(n_particles, -1)
-stem = out[:-3] if out.endswith(".h5") else out                # run.h5 -> run.log.csv, run.info.json
-log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
-log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
-               "n_contacts,steps_per_s\n")
-volume_particles = sum(O.bodies[int(i)].shape.GetVolume() if POLY else 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3
-                       for i in particles)
+if resumed:         # the dump reopened after the checkpoint's snapshots, the log cut at its row
+    writer = resumed[4]
+    writer.attrs["parameters"] = resumed[1]["dump_parameters"]
+    log_file = open(os.path.join(HERE, stem + ".log.csv"), "a+")
+    log_file.truncate(min(resumed[1]["log_bytes"], log_file.seek(0, os.SEEK_END)))
+    log_file.seek(0, os.SEEK_END)
+    particle_volumes = resumed[2]["particle_volumes"]
+else:
+    writer = dumpschema.DumpWriter(DUMP, sample, {**params, **derived}, overlap_kind="volume" if POLY else "depth")
+    if POLY:
+        writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
+    log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
+    log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
+                   "n_contacts,steps_per_s\n")
+    particle_volumes = np.array([O.bodies[int(i)].shape.GetVolume() if POLY else
+                                 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3 for i in particles])
+volume_particles = float(sum(particle_volumes))
 
 
 def box():
@@ -303,7 +371,7 @@ def snapshot(stage):
     writer.write_snapshot(
         step=O.iter, time=O.time, stage=stage, box_lo=lo, box_hi=hi, wall_ids=walls,
         wall_forces=wall_forces(),
-        bodies=yadedump.gather_bodies(O, particles, 1 if POLY else 0, shape_index, d),
+        bodies=yadedump.gather_bodies(O, particles, 1 if POLY else 0, shape_index, d, particle_volumes),
         contacts=kernel.contacts() if KERNEL else yadedump.gather_contacts(O, POLY))
 
 
@@ -339,6 +407,9 @@ def check_blowup(lo, hi, F):
 
 
 def control():
+    if pause_request:            # the run loop wants a checkpoint: stop at the end of this step
+        pause_request.clear()
+        O.stopAtIter = O.iter + 1
     lo, hi = box()
     L = hi - lo
     F = wall_forces()
@@ -415,22 +486,148 @@ def control():
               f"{sps:.0f} steps/s, {eta}", flush=True)
 
 
+# ------------------------------------------------------------ checkpoints
+# Taken between two steps (the run loop pauses YADE first), so that every
+# part of the state belongs to the same instant. The YADE scene goes through
+# O.save (bodies with their masses, inertias, poses and velocities, the
+# interactions with their histories, materials, engines, iteration and
+# time); YADE re-initialises Polyhedra shapes on O.load (vertex order and
+# round-off change), so the kernel keeps the run's own shapes from the
+# checkpoint, and the dump's /shapes stay those of the first attempt.
+STATE_KEYS = ("stage", "H0", "L0", "eps_1", "next_dump", "phi_iso", "integral", "v_top", "contact_steps",
+              "interaction_steps")
+previous = {"wall_seconds": 0.0, "engine_seconds": {}, "resumes": []}   # earlier attempts of this run
+
+
+def engine_times():
+    return {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in O.engines} if timing else {}
+
+
+def save_checkpoint(why):
+    t_save = time.time()
+    scene_file = CKPT + ".scene.yade"
+    O.save(scene_file)
+    with open(scene_file, "rb") as fh:
+        scene = fh.read()
+    os.remove(scene_file)
+    log_file.flush()
+    ctrl = {k: (v.tolist() if isinstance(v, np.ndarray) else (float(v) if isinstance(v, np.floating) else v))
+            for k, v in state.items() if k in STATE_KEYS}
+    meta = {"fingerprint": checkpoint.fingerprint(params), "step": O.iter, "time": O.time, "stage": state["stage"],
+            "eps_1": float(state["eps_1"]), "state": ctrl, "n_snapshots": writer._n_snapshots,
+            "dump_parameters": writer.attrs["parameters"], "log_bytes": log_file.tell(),
+            "friction": math.tan(O.materials[0].frictionAngle),
+            "wall_seconds": previous["wall_seconds"] + time.time() - t0, "resumes": previous["resumes"],
+            "engine_seconds": {k: previous["engine_seconds"].get(k, 0.0) + v for k, v in engine_times().items()},
+            "why": why}
+    arrays = {"particle_volumes": particle_volumes}
+    if KERNEL:
+        arrays.update(checkpoint.pack_arrays("kernel", kernel.engine.state()))
+        arrays["shape_vertices"], arrays["shape_vertex_offsets"] = checkpoint.ragged(shape_v, float)
+        arrays["shape_triangles"], arrays["shape_triangle_offsets"] = checkpoint.ragged(shape_t, np.int64)
+        meta["kernel_counters"] = kernel.counters()
+    elif POLY:
+        keys = list(tangential_law.history)
+        arrays["tangential_ids"] = np.array(keys, np.int64).reshape(-1, 2)
+        arrays["tangential_force"] = np.array([tangential_law.history[k] for k in keys], float).reshape(-1, 3)
+    size = checkpoint.save(CKPT, meta, arrays, {"scene": scene})
+    print(f"triaxial.py: checkpoint ({why}) at step {O.iter} ({state['stage']}, eps_1 = {state['eps_1']:.4f}): "
+          f"{os.path.basename(CKPT)}, {size / 1e6:.1f} MB in {time.time() - t_save:.2f} s", flush=True)
+
+
+def restore_checkpoint(path, meta, arrays, blobs):
+    """Put the run back in the state of the checkpoint: the YADE scene, then
+    everything this script keeps beside it."""
+    global grain, wallmat, newton, masses
+    scene_file = CKPT + ".scene.yade"
+    with open(scene_file, "wb") as fh:
+        fh.write(blobs["scene"])
+    O.load(scene_file)
+    os.remove(scene_file)
+    grain, wallmat = O.materials[0], O.materials[1]      # the loaded scene's own objects
+    newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)][0]
+    masses = np.array([O.bodies[int(i)].state.mass for i in particles])
+    for k in STATE_KEYS:
+        if k in meta["state"]:
+            v = meta["state"][k]
+            state[k] = np.array(v, float) if k in ("L0", "integral") else v
+    state["last_iter"] = O.iter
+    if KERNEL:
+        kernel.rebind()
+        kernel.engine.set_state(checkpoint.unpack_arrays("kernel", arrays))
+        kernel.set_counters(meta["kernel_counters"])
+    elif POLY:
+        tangential_law.history = {(int(a), int(b)): tuple(f) for (a, b), f in
+                                  zip(arrays["tangential_ids"].tolist(), arrays["tangential_force"].tolist())}
+    for k in derived:                                     # as the first attempt computed them
+        derived[k] = json.loads(meta["dump_parameters"]).get(k, derived[k])
+    previous.update(wall_seconds=meta["wall_seconds"], engine_seconds=meta["engine_seconds"],
+                    resumes=meta["resumes"] + [{"step": O.iter, "stage": state["stage"], "eps_1": state["eps_1"],
+                                                "checkpoint": os.path.basename(path), "written_because": meta["why"],
+                                                "at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}])
+    print(f"triaxial.py: resumed from {os.path.basename(path)} at step {O.iter} ({state['stage']}, "
+          f"eps_1 = {state['eps_1']:.4f}, {writer._n_snapshots} snapshots kept, friction {meta['friction']:g})",
+          flush=True)
+
+
+def run_until_stop():
+    """Run until the controller stops the run (done or failed), or until a
+    checkpoint is due (SIGTERM, or checkpoint_seconds elapsed): then stop at
+    the end of a step and return True.
+
+    The stop goes through O.stopAtIter, set by the controller inside the
+    step: YADE then ends its loop after that step is complete. (O.pause()
+    from this thread would clear O.running while a step is still under way,
+    so O.wait() returns early and a checkpoint could catch half a step.)"""
+    O.run()
+    due = False
+    while O.running:             # poll (not O.wait()) so that the SIGTERM handler gets to run
+        time.sleep(0.05)
+        if not due and (term_signal or (checkpoint_seconds > 0 and
+                                        time.time() - last_checkpoint[0] >= checkpoint_seconds)):
+            pause_request.append(True)
+            due = True
+    O.wait()
+    pause_request.clear()
+    O.stopAtIter = 0
+    return due
+
+
 # ------------------------------------------------------------ run
 print(f"triaxial.py: {n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
       f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m", flush=True)
 t0 = time.time()
+if resumed:
+    restore_checkpoint(*resumed[:4])
 O.timingEnabled = bool(timing)
-O.run()
-O.wait()
+last_checkpoint = [time.time()]
+pause_request = []
+while True:
+    due = bool(term_signal) or run_until_stop()
+    if state["failed"] or state["stage"] == "done":
+        break
+    if not due:
+        fail("the simulation stopped without a reason (an exception in a PyRunner?)")
+        break
+    save_checkpoint("SIGTERM" if term_signal else "periodic")
+    last_checkpoint[0] = time.time()
+    if term_signal:
+        log_file.close()
+        print(f"triaxial.py: stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer._n_snapshots} "
+              f"snapshot(s) are kept: run again in this folder to resume (exit {EXIT_TERM})", flush=True)
+        sys.exit(EXIT_TERM)
 log_file.close()
 if state["failed"]:
     writer.close(pack=True, complete=False)
-    sys.exit(3)
+    checkpoint.remove(CKPT)      # a blow-up replays identically from a checkpoint: nothing to resume
+    sys.exit(EXIT_FAILED)
 writer.close(pack=True)
-engine_seconds = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in O.engines} if timing else {}
-info = {"steps": O.iter, "time": O.time, "wall_seconds": time.time() - t0, "solid_fraction_isotropic": state["phi_iso"],
-        "snapshots": writer._n_snapshots, "contact_steps": state["contact_steps"],
-        "interaction_steps": state["interaction_steps"], "engine_seconds": engine_seconds, **derived}
+checkpoint.remove(CKPT)
+engine_seconds = {k: previous["engine_seconds"].get(k, 0.0) + v for k, v in engine_times().items()}
+info = {"steps": O.iter, "time": O.time, "wall_seconds": previous["wall_seconds"] + time.time() - t0,
+        "solid_fraction_isotropic": state["phi_iso"], "snapshots": writer._n_snapshots,
+        "contact_steps": state["contact_steps"], "interaction_steps": state["interaction_steps"],
+        "engine_seconds": engine_seconds, "resumes": previous["resumes"], **derived}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
                       "memory_bytes": kernel.memory_bytes()}

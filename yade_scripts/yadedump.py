@@ -69,8 +69,11 @@ def polyhedra_shapes(O, ids):
     return verts, tris, faces
 
 
-def gather_bodies(O, ids, kind, shape_index, sizes):
-    """bodies dict of the schema for particle ``ids``."""
+def gather_bodies(O, ids, kind, shape_index, sizes, volumes=None):
+    """bodies dict of the schema for particle ``ids``; ``volumes`` (m^3, one
+    per id) when known (a resumed run keeps its first attempt's: YADE
+    re-initialises Polyhedra after O.load, which changes GetVolume() in the
+    last bit), else from the shapes."""
     pos, ori, vel, vol, mass = [], [], [], [], []
     for i in ids:
         b = O.bodies[int(i)]
@@ -79,7 +82,10 @@ def gather_bodies(O, ids, kind, shape_index, sizes):
         ori.append(wxyz(st.ori))
         vel.append(tuple(st.vel))
         mass.append(st.mass)
-        vol.append(b.shape.GetVolume() if kind == 1 else 4.0 / 3.0 * np.pi * b.shape.radius ** 3)
+        if volumes is None:
+            vol.append(b.shape.GetVolume() if kind == 1 else 4.0 / 3.0 * np.pi * b.shape.radius ** 3)
+    if volumes is not None:
+        vol = np.asarray(volumes, float)
     n = len(ids)
     return {"id": np.asarray(ids, np.int64), "kind": np.full(n, kind, np.int8),
             "position": np.array(pos, float).reshape(n, 3),
