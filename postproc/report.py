@@ -14,7 +14,10 @@ manifest, ``STUDY_DIR/<sample>/run.h5`` and its ``analysis/``. Writes
   ``claims.csv`` (the six claims, their numbers and verdicts).
 
 A failed or missing run is listed in the report and left out of the
-numbers; the rest of the report still builds.
+numbers; the rest of the report still builds. A partial run (status
+"partial": failed after the start of the steady state, see
+``yade_scripts.study.partial_progress``) is marked PARTIAL with the strain it
+reached, and its steady snapshots are used.
 """
 from __future__ import annotations
 
@@ -61,16 +64,33 @@ def discover(study):
     return runs
 
 
+def _usable(runs, sample):
+    """The runs of ``sample`` whose numbers are used: complete ("ok") first,
+    then partial ones (failed after the start of the steady state)."""
+    rs = [r for r in runs.get(sample, []) if r.get("status") in ("ok", "partial")]
+    return sorted(rs, key=lambda r: r.get("status") != "ok")
+
+
 def _summaries(runs):
+    """{sample: [summary DataFrame per usable run]}. The shear snapshots of a
+    partial run before the start of the steady state of a complete run
+    (eps_1 < partial["steady_from_eps_1"]) are relabelled stage "transient",
+    so that its steady window is the complete runs' one, not half of the
+    strain it happened to reach."""
     import pandas as pd
 
     out = {}
-    for s, rs in runs.items():
+    for s in runs:
         frames = []
-        for r in rs:
+        for r in _usable(runs, s):
             p = os.path.join(r["analysis"], "summary.csv") if r.get("analysis") else None
-            if r.get("status") == "ok" and p and os.path.exists(p):
-                frames.append(pd.read_csv(p, dtype={"snapshot": str}).copy())
+            if p and os.path.exists(p):
+                df = pd.read_csv(p, dtype={"snapshot": str}).copy()
+                part = r.get("partial")
+                if r.get("status") == "partial" and part and "eps_1" in df and "stage" in df:
+                    early = (df["stage"] == "shear") & (df["eps_1"] < part["steady_from_eps_1"] - 1e-9)
+                    df.loc[early, "stage"] = "transient"
+                frames.append(df)
         out[s] = frames
     return out
 
@@ -217,7 +237,9 @@ def build_report(study, out=None, reference=REFERENCE):
     problems = []
     for s in SAMPLES:
         for r in runs.get(s, []):
-            if r.get("status") != "ok":
+            if r.get("status") == "partial":
+                problems.append(f"{LABEL[s]} {r['label']}: PARTIAL run, used: {r.get('note', '')}")
+            elif r.get("status") != "ok":
                 problems.append(f"{LABEL[s]} {r['label']}: {r['status']}")
         if not summaries.get(s):
             problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
@@ -240,7 +262,7 @@ def build_report(study, out=None, reference=REFERENCE):
            caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
     polar = {}
     for s in SAMPLES:
-        ok = [r for r in runs.get(s, []) if r.get("status") == "ok"]
+        ok = _usable(runs, s)
         if ok:
             try:
                 polar[s] = _polar_data(ok[0])
@@ -250,7 +272,7 @@ def build_report(study, out=None, reference=REFERENCE):
         figure("fig_polar.png", plots.plot_report_polar, polar,
                caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
                        "snapshot), first seed, seed figs. 5 and 7")
-    s1 = [r for r in runs.get("polyhedra", []) if r.get("status") == "ok"]
+    s1 = _usable(runs, "polyhedra")
     if s1:
         try:
             gp = group_branch_polar(s1[0])
@@ -273,7 +295,7 @@ def build_report(study, out=None, reference=REFERENCE):
                 shutil.copyfile(src, os.path.join(out, "s1_" + name))
                 figures.append(("s1_" + name, cap))
     for s in SAMPLES:
-        ok = [r for r in runs.get(s, []) if r.get("status") == "ok"]
+        ok = _usable(runs, s)
         if ok:
             figure(f"packing_{s}.png", _packing_picture, ok[0], LABEL[s],
                    caption=f"{LABEL[s]}, last snapshot: contacts between centres, coloured and "
@@ -315,7 +337,10 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
                     p = json.load(fh)
                 params = (f"{p.get('preset')}: N = {p.get('n_particles')}, κ = {p.get('kappa')}, "
                           f"I = {p.get('inertial_number')}, ε1 final = {p.get('final_strain')}")
-            lines.append(f"| {LABEL[s]} | {r['label']} | {r['status']} | {params} |")
+            status = r["status"].upper() if r["status"] == "partial" else r["status"]
+            if r.get("note"):
+                status += f" ({r['note']})"
+            lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
     cost = _cost_rows(runs)
     if cost:
         lines += ["", "| sample | run | steps | wall time (s) | µs per contact-step | solid fraction "

@@ -187,3 +187,59 @@ def test_sigterm_checkpoints_and_exits_75_then_a_damaged_checkpoint_falls_back(t
     with open(os.path.join(d, "run.log.csv")) as fh:        # the log has no repeated step either
         log_steps = [int(line.split(",")[0]) for line in fh.readlines()[1:]]
     assert log_steps == sorted(set(log_steps))
+
+
+# ------------------------------------------------------------ the study: partial runs
+@needs_yade
+def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path, shape_library):
+    """S1 'failed' (exit -6) at eps_1 = 0.04 of a run meant to reach 0.06
+    (the dump's final_strain is raised after the fact): it is past the start
+    of the steady state (0.5 x 0.06 = 0.03) with two steady snapshots, so it
+    is analysed, marked PARTIAL with the strain it reached, and its steady
+    snapshots (eps_1 >= 0.03 only) give the S1 numbers. S2 failed before
+    shearing: no usable run, the one case that makes the study fail."""
+    import json
+
+    import h5py
+    import pandas as pd
+
+    from postproc.report import build_report
+    from yade_scripts.study import analyse_and_report, unusable_samples
+
+    out = tmp_path / "study"
+    folders = {}
+    for s in ("polyhedra", "spheres"):
+        folders[s] = out / s
+        generate(str(folders[s]), "tiny", s, {"final_strain": 0.04, "kernel_threads": 1} if s == "polyhedra"
+                 else {"final_strain": 0.04}, library=shape_library)
+    procs = [_start(str(f)) for f in folders.values()]
+    assert [p.wait(timeout=600) for p in procs] == [0, 0]
+    dump = str(folders["polyhedra"] / "run.h5")
+    with h5py.File(dump, "r+") as f:
+        params = json.loads(f.attrs["parameters"])
+        f.attrs["parameters"] = json.dumps({**params, "final_strain": 0.06})
+    sph = str(folders["spheres"] / "run.h5")           # spheres: only the isotropic snapshot survives
+    with h5py.File(sph, "r+") as f:
+        for name in list(f["snapshots"])[1:]:
+            del f["snapshots/" + name]
+    runs = {"polyhedra": [("seed 1", dump, -6)], "spheres": [("seed 1", sph, -6)]}
+    failed = analyse_and_report(str(out), runs, attempts={("polyhedra", "seed 1"): [-9, -6, -6]})
+    assert failed == ["polyhedra seed 1", "spheres seed 1"]
+    manifest = json.loads((out / "manifest.json").read_text())
+    s1, s2 = manifest["polyhedra"][0], manifest["spheres"][0]
+    assert s1["status"] == "partial" and s1["attempts"] == [-9, -6, -6]
+    assert s1["partial"]["eps_1_reached"] == pytest.approx(0.04, abs=2e-3)
+    assert s1["partial"]["steady_from_eps_1"] == pytest.approx(0.03) and s1["partial"]["steady_snapshots"] == 2
+    assert s2["status"].startswith("run failed (-6)")
+    assert unusable_samples(str(out)) == ["spheres"]
+    md = (out / "report" / "report.md").read_text()
+    assert "| S1 polyhedra | seed 1 | PARTIAL (run failed (exit -6) at eps_1 = 0.04" in md
+    assert "resumed 2 time(s)" in md and "S2 spheres: no analysed run" in md
+    comp = pd.read_csv(out / "report" / "comparison.csv")
+    ours = comp.loc[(comp["sample"] == "polyhedra") & (comp["quantity"] == "q/p plateau"), "ours"].item()
+    summary = pd.read_csv(folders["polyhedra"] / "analysis" / "summary.csv")
+    steady = summary[(summary["stage"] == "shear") & (summary["eps_1"] >= 0.03 - 1e-9)]
+    assert len(steady) == 2 and ours == pytest.approx(steady["q_over_p"].mean(), rel=1e-12)
+    # the same report rebuilt from the manifest alone
+    md2 = open(build_report(str(out), str(out / "report2"))).read()
+    assert "PARTIAL" in md2

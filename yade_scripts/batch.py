@@ -21,6 +21,12 @@ import threading
 from .presets import ConfigError
 
 PROGRESS_SECONDS = 20.0
+#: a run that crashed (or was stopped by SIGTERM) and left a checkpoint is
+#: started again this many times at most; each start resumes from the newest
+#: checkpoint (triaxial.py). Exit 3 (a blow-up, max_steps) is never retried:
+#: it would replay the same steps.
+MAX_RESUMES = 2
+EXIT_FAILED, EXIT_TERM = 3, 75
 
 
 def yade_env():
@@ -71,11 +77,25 @@ def complete(dump):
         return False
 
 
+def has_checkpoint(dump):
+    """True when the run writing ``dump`` (STEM.h5) left a checkpoint
+    (STEM.ckpt or STEM.ckpt.prev) to resume from."""
+    stem = os.path.splitext(dump)[0]
+    return any(os.path.exists(stem + ext) for ext in (".ckpt", ".ckpt.prev"))
+
+
+def resumable(code, dump):
+    """True when a run that ended with exit ``code`` can be resumed: it did
+    not finish or stop on a blow-up, and left a checkpoint."""
+    return code not in (0, EXIT_FAILED) and has_checkpoint(dump)
+
+
 def clear_attempt(dump):
     """Remove what an unfinished run writing ``dump`` (STEM.h5) left: the
     dump, its part files, STEM.info.json and STEM.log.csv (logs are kept)."""
     stem = os.path.splitext(dump)[0]
-    for p in (stem + ".h5", stem + ".h5.parts", stem + ".info.json", stem + ".log.csv"):
+    for p in (stem + ".h5", stem + ".h5.parts", stem + ".info.json", stem + ".log.csv", stem + ".ckpt",
+              stem + ".ckpt.prev"):
         if os.path.isdir(p):
             shutil.rmtree(p, ignore_errors=True)
         elif os.path.exists(p):
@@ -100,26 +120,50 @@ def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
                 echo(f"[{tag}] {d}: {lines[-1][len('triaxial.py: '):].strip()}")
 
 
-def run_batch(folder, jobs=2, tag="batch", echo=print):
-    """Run the unfinished lines of ``folder/table.txt`` with yade-batch.
+def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None):
+    """Run the unfinished lines of ``folder/table.txt`` with yade-batch; a
+    line that crashed and left a checkpoint is run again (it resumes), up to
+    MAX_RESUMES times.
 
     Returns {description: exit status} for every line of the table (0 for
     lines already complete, None when yade-batch did not report a line).
+    ``attempts`` (a dict), when given, receives {description: [exit status
+    of each attempt]} for the lines run.
     """
-    exe = shutil.which("yade-batch")
-    if exe is None:
-        raise ConfigError("yade-batch is not installed (it comes with Debian's yade)")
     rows = read_table(folder)
     todo = [(k, r) for k, r in rows if not complete(dump_of(folder, r))]
     status = {r["description"]: 0 for _, r in rows}
     for k, r in rows:
         if (k, r) not in todo:
             echo(f"[{tag}] {r['description']} already complete, not run again")
-    if not todo:
-        return status
-    for _, r in todo:              # an unfinished earlier attempt starts afresh
-        clear_attempt(dump_of(folder, r))
-        status[r["description"]] = None
+    for _, r in todo:              # an unfinished earlier attempt resumes if it can, else starts afresh
+        if has_checkpoint(dump_of(folder, r)):
+            echo(f"[{tag}] {r['description']}: an unfinished run with a checkpoint, resuming it")
+        else:
+            clear_attempt(dump_of(folder, r))
+    tries = {r["description"]: [] for _, r in todo}
+    while todo:
+        got = _run_batch_lines(folder, todo, jobs, tag, echo)
+        for _, r in todo:
+            tries[r["description"]].append(got[r["description"]])
+        status.update(got)
+        todo = [(k, r) for k, r in todo if isinstance(got[r["description"]], int)
+                and resumable(got[r["description"]], dump_of(folder, r))
+                and len(tries[r["description"]]) <= MAX_RESUMES]
+        if todo:
+            echo(f"[{tag}] resuming from their checkpoints: " + ", ".join(
+                f"{r['description']} (exit {got[r['description']]})" for _, r in todo))
+    if attempts is not None:
+        attempts.update(tries)
+    return status
+
+
+def _run_batch_lines(folder, todo, jobs, tag, echo):
+    """One yade-batch over the table lines ``todo``; {description: status}."""
+    exe = shutil.which("yade-batch")
+    if exe is None:
+        raise ConfigError("yade-batch is not installed (it comes with Debian's yade)")
+    status = {r["description"]: None for _, r in todo}
     lines = ",".join(str(k) for k, _ in todo)
     cmd = [exe, "-j", str(jobs), "--job-threads", "1", "-l", lines, "--plot-update", "0",
            "table.txt", "triaxial.py"]
@@ -141,7 +185,10 @@ def run_batch(folder, jobs=2, tag="batch", echo=print):
                 if "done" in s and "exit status" in s:
                     desc = s[s.index("(") + 1:s.index(")")]
                     code = s.split("exit status")[1].split(")")[0].strip()
-                    status[desc] = int(code) if code.lstrip("-").isdigit() else code
+                    if code.lstrip("-").isdigit():   # yade-batch prints the raw wait status
+                        raw = int(code)
+                        code = raw >> 8 if raw > 0 and raw & 0xFF == 0 else (-(raw & 0x7F) if raw > 0 else raw)
+                    status[desc] = code
     proc.wait()
     stop.set()
     watcher.join()

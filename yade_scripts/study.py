@@ -25,7 +25,7 @@ import subprocess
 import sys
 import threading
 
-from .batch import clear_attempt, yade_env
+from .batch import MAX_RESUMES, clear_attempt, has_checkpoint, resumable, yade_env
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .presets import ConfigError, resolve
 
@@ -78,13 +78,34 @@ def _threads(sample, preset, overrides):
     return 1
 
 
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
+def _run_with_resumes(name, cmd, folder, result):
+    """Run ``cmd`` in ``folder``; a run that crashed or was stopped by SIGTERM
+    and left a checkpoint is started again (it resumes from the checkpoint),
+    up to MAX_RESUMES times. result[name] = (last exit code, [exit codes])."""
+    codes = []
+    while True:
+        proc = subprocess.Popen(cmd, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL, text=True, bufsize=1, env=yade_env())
+        _relay(name, proc, os.path.join(folder, "yade.log"))
+        codes.append(proc.wait())
+        if codes[-1] == 0 or not resumable(codes[-1], os.path.join(folder, "run.h5")) \
+                or len(codes) > MAX_RESUMES:
+            break
+        print(f"[{name}] exit {codes[-1]}: resuming from its checkpoint "
+              f"(resume {len(codes)} of at most {MAX_RESUMES})", flush=True)
+    result[name] = (codes[-1], codes)
+
+
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, attempts=None):
     """Generate (if needed) and run the samples in parallel; returns
-    {sample: return code (0 = done or already done)}."""
+    {sample: return code (0 = done or already done)}. A crashed run is
+    resumed from its checkpoint up to MAX_RESUMES times; ``attempts`` (a
+    dict), when given, receives {sample: [exit code of each attempt]}."""
     yade = shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
     procs = {}
+    results = {}
     for s in samples:
         folder = os.path.join(out, s)
         _set_aside_if_changed(folder, preset, s, overrides)
@@ -92,23 +113,26 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
         if os.path.exists(os.path.join(folder, "triaxial.py")):
-            clear_attempt(os.path.join(folder, "run.h5"))   # an unfinished attempt; its log is kept
+            if has_checkpoint(os.path.join(folder, "run.h5")):
+                print(f"[{s}] an unfinished run with a checkpoint: resuming it", flush=True)
+            else:
+                clear_attempt(os.path.join(folder, "run.h5"))   # an unfinished attempt; its log is kept
         else:
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
         threads = _threads(s, preset, overrides)
-        proc = subprocess.Popen([yade, "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder,
-                                stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True, bufsize=1,
-                                env=yade_env())
-        t = threading.Thread(target=_relay, args=(s, proc, os.path.join(folder, "yade.log")), daemon=True)
+        t = threading.Thread(target=_run_with_resumes, daemon=True,
+                             args=(s, [yade, "-j", str(threads), "-n", "-x", "triaxial.py"], folder, results))
         t.start()
-        procs[s] = (proc, t)
+        procs[s] = t
     codes = {s: 0 for s in samples}
-    for s, (proc, t) in procs.items():
-        codes[s] = proc.wait()
+    for s, t in procs.items():
         t.join()
+        codes[s], tries = results[s]
+        if attempts is not None:
+            attempts[s] = tries
         status = "done" if codes[s] == 0 else f"FAILED (exit {codes[s]}, see {os.path.join(out, s, 'yade.log')})"
-        print(f"[{s}] {status}", flush=True)
+        print(f"[{s}] {status}" + (f" after {len(tries) - 1} resume(s) (exits {tries})" if len(tries) > 1 else ""),
+              flush=True)
     return codes
 
 
@@ -126,19 +150,62 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
             generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
         else:                      # same parameters, maybe another n: rewrite the table only
             write_seed_table(folder, s, seeds)
-        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True))
+        tries = {}
+        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True), attempts=tries)
+        ATTEMPTS.update({(s, f"seed {r['seed']}"): tries[r["description"]] for _, r in read_table(folder)
+                         if r["description"] in tries})
         result[s] = [(f"seed {r['seed']}", dump_of(folder, r), status[r["description"]])
                      for _, r in read_table(folder)]
     return result
 
 
-def analyse_and_report(out, runs):
+#: exit codes of every attempt of the runs of this study, {(sample, label): [codes]}
+ATTEMPTS = {}
+
+
+def partial_progress(dump):
+    """How far an unfinished run got: {"eps_1_reached", "final_strain",
+    "steady_from_eps_1", "steady_snapshots"} from its dump (eps_1 = ln(H_iso /
+    H) of each shear snapshot against the isotropic one), or None when the
+    dump is unreadable or has no isotropic snapshot. The steady state starts
+    at STEADY_START x final_strain in eps_1 (the report's steady window,
+    eps_q >= STEADY_START x its final value, in the axial strain)."""
+    import json
+
+    import numpy as np
+    from postproc.schema import DumpFormatError, DumpReader
+    from postproc.statistics import STEADY_START
+
+    try:
+        with DumpReader(dump) as r:
+            final = float(r.parameters["final_strain"])
+            snaps = [(s.stage, float(s.box_lengths[2])) for s in (r.read(i) for i in range(len(r)))]
+    except (DumpFormatError, KeyError, OSError, ValueError, json.JSONDecodeError):
+        return None
+    iso = [h for stage, h in snaps if stage == "isotropic"]
+    if not iso:
+        return None
+    eps = np.array([np.log(iso[0] / h) for stage, h in snaps if stage == "shear"])
+    start = STEADY_START * final
+    return {"eps_1_reached": float(eps.max()) if len(eps) else 0.0, "final_strain": final,
+            "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
+
+
+def analyse_and_report(out, runs, attempts=None):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
-    write OUT/manifest.json and the report; returns the list of failures."""
+    write OUT/manifest.json and the report; returns the list of failures.
+
+    A failed run whose dump got past the start of the steady state (two
+    shear snapshots or more with eps_1 >= STEADY_START x final_strain, see
+    :func:`partial_progress`) is analysed and marked ``partial``: the report
+    uses its steady snapshots and says how far it got. ``attempts``
+    {(sample, label): [exit code of each attempt]} (default: this study's)
+    goes into the manifest when a run was resumed."""
     import json
 
     from postproc.cli import main as postproc_main
 
+    attempts = ATTEMPTS if attempts is None else attempts
     manifest, failed = {}, []
     for s, items in runs.items():
         manifest[s] = []
@@ -148,8 +215,30 @@ def analyse_and_report(out, runs):
             analysis = os.path.join(folder, "analysis" if os.path.basename(stem) == "run"
                                     else "analysis-" + os.path.basename(stem))
             info = stem + ".info.json"
-            if status != 0:
-                why = f"run failed ({status}); see {folder}"
+            extra = {}
+            tries = attempts.get((s, label), [])
+            if len(tries) > 1:
+                extra["attempts"] = tries
+                extra["note"] = f"resumed {len(tries) - 1} time(s) from its checkpoint (exits {tries})"
+            progress = partial_progress(dump) if status != 0 and os.path.exists(dump) else None
+            if status != 0 and progress and progress["steady_snapshots"] >= 2:
+                print(f"[{s}] analysing {label} (partial, reached eps_1 = {progress['eps_1_reached']:.3f}): {dump}",
+                      flush=True)
+                rc = postproc_main(["analyze", dump, "--out", analysis, "--no-progress"])
+                if rc in (0, 1) and os.path.exists(os.path.join(analysis, "summary.csv")):
+                    why = "partial"
+                    extra["partial"] = progress
+                    extra["note"] = (f"run failed (exit {status}) at eps_1 = {progress['eps_1_reached']:.3f} of "
+                                     f"{progress['final_strain']:g}; its {progress['steady_snapshots']} steady "
+                                     f"snapshots (eps_1 >= {progress['steady_from_eps_1']:.3f}) are used"
+                                     + (f"; {extra['note']}" if "note" in extra else ""))
+                else:
+                    why = f"run failed ({status}) and its partial dump could not be analysed (exit {rc})"
+                failed.append(f"{s} {label}")
+            elif status != 0:
+                got = (f"; it reached eps_1 = {progress['eps_1_reached']:.3f}, before the steady state "
+                       f"(eps_1 >= {progress['steady_from_eps_1']:.3f})") if progress else ""
+                why = f"run failed ({status}){got}; see {folder}"
                 failed.append(f"{s} {label}")
             elif not os.path.exists(dump):
                 why = "no dump"
@@ -163,11 +252,20 @@ def analyse_and_report(out, runs):
                     failed.append(f"{s} {label}")
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
                                 "analysis": os.path.relpath(analysis, out),
-                                "info": os.path.relpath(info, out), "status": why})
+                                "info": os.path.relpath(info, out), "status": why, **extra})
     with open(os.path.join(out, "manifest.json"), "w") as fh:
         json.dump(manifest, fh, indent=1)
     postproc_main(["report", out])
     return failed
+
+
+def unusable_samples(out):
+    """Samples of OUT/manifest.json with no run that is ok or partial."""
+    import json
+
+    with open(os.path.join(out, "manifest.json")) as fh:
+        manifest = json.load(fh)
+    return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
 
 
 def collect(folder):
@@ -245,7 +343,9 @@ def main(argv=None):
         os.makedirs(args.out, exist_ok=True)
         overrides = parse_overrides(args.set)
         if args.ensemble == 1:
-            codes = run_samples(args.out, args.preset, overrides, args.library)
+            tries = {}
+            codes = run_samples(args.out, args.preset, overrides, args.library, attempts=tries)
+            ATTEMPTS.update({(s, "seed 1"): t for s, t in tries.items()})
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs)
@@ -253,8 +353,13 @@ def main(argv=None):
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
     failed = analyse_and_report(args.out, runs)
+    missing = unusable_samples(args.out)
     if failed:
-        print(f"study: failed: {', '.join(failed)} (the report lists them)", file=sys.stderr)
+        print(f"study: failed: {', '.join(failed)} (the report lists them; partial runs are used)", file=sys.stderr)
+    if missing:
+        print(f"study: no usable run of {', '.join(missing)}: see the yade.log of its run folder under "
+              f"{args.out}; run the same command again to resume from the checkpoints (a blow-up, exit 3, needs "
+              f"other parameters, e.g. a smaller safety), or delete the folder to start it afresh", file=sys.stderr)
         return 1
     print(f"study: report in {args.out}/report/report.md (and report.html)", file=sys.stderr)
     return 0
