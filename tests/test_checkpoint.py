@@ -82,6 +82,14 @@ def test_choose_falls_back_to_the_previous_checkpoint_then_gives_up(tmp_path):
     assert checkpoint.choose(path + ".none", "f", refuse, say=said.append) is None and said == []
 
 
+def test_a_checkpoint_lacking_a_field_is_refused_not_a_traceback(tmp_path):
+    path = str(tmp_path / "run.ckpt")
+    checkpoint.save(path, {"fingerprint": "f", "step": 1})
+    said = []
+    assert checkpoint.choose(path, "f", lambda m: m["n_snapshots"], say=said.append) is None
+    assert said == [f"checkpoint not used: {path}: field 'n_snapshots' missing or malformed; starting afresh"]
+
+
 def test_fingerprint_ignores_runtime_parameters_only():
     p = {"seed": 1, "kappa": 150.0, "checkpoint_seconds": 300.0, "max_steps": 0, "resume": True}
     assert checkpoint.fingerprint(p) == checkpoint.fingerprint({**p, "checkpoint_seconds": 1, "resume": False,

@@ -210,9 +210,12 @@ def choose(path, expected_fingerprint, accept, say=print):
             if meta.get("fingerprint") != expected_fingerprint:
                 raise CheckpointError(f"{p}: written by a run with other parameters")
             value = accept(meta)
-        except ValueError as exc:          # CheckpointError, DumpFormatError
+        except (ValueError, KeyError, TypeError) as exc:    # CheckpointError, DumpFormatError, a field missing
             rest = "trying the previous one" if k + 1 < len(found) else "starting afresh"
-            say(f"checkpoint not used: {str(exc).splitlines()[0]}; {rest}")
+            why = str(exc).splitlines()[0] if str(exc) else exc.__class__.__name__
+            if isinstance(exc, (KeyError, TypeError)):
+                why = f"{p}: field {why} missing or malformed"
+            say(f"checkpoint not used: {why}; {rest}")
             continue
         return p, meta, arrays, blobs, value
     return None
