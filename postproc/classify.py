@@ -1,8 +1,16 @@
 """Contact classes of a snapshot under one chosen criterion.
 
-Two criteria, one interface (:class:`Classifier`):
+Three criteria, one interface (:class:`Classifier`):
 
-* ``"footprint"`` (the default): the group (simple, double, triple) from the
+* ``"points"`` (the default): LMGC90's count of contact points
+  (:mod:`postproc.contactpoints`): the vertices of each side within the
+  overlap slab (along the normal, or the partner's face plane closest to
+  it), plus a tolerance alpha times the overlap's mean thickness V/area
+  (``--tolerance``, default 0.1), give the touching
+  features (1 vertex, 2 edge, 3+ face), the pair type VV .. FF and the
+  group simple (1 point), double (EF, 2), triple (FF, 3+). V/area from the
+  dump (kernel runs) or recomputed with :mod:`shapes.overlap`.
+* ``"footprint"``: the group (simple, double, triple) from the
   overlap's footprint (:mod:`postproc.footprint`, threshold t in units of
   the pair size), dumped by kernel runs or recomputed from the shapes and
   poses for older or stock-YADE dumps. The vertex/edge/face features of the
@@ -26,13 +34,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import contactpoints as cpm
 from . import footprint as fpm
 from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("footprint", "angular")
-DEFAULT_METHOD = "footprint"
+METHODS = ("points", "footprint", "angular")
+DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
 
@@ -73,16 +82,19 @@ class Classifier:
     """Contact classes of polyhedra snapshots under one criterion.
 
     shapes : (vertices, triangles, triangle_faces) lists as returned by
-    :meth:`postproc.schema.DumpReader.shapes`. method : "footprint" or
-    "angular". threshold : t in units of the pair size (footprint; default
-    :data:`postproc.footprint.DEFAULT_THRESHOLD`). theta_deg : the angular
-    tolerance (the criterion itself for "angular"; the feature labels for
-    "footprint"; default 5). recompute : "auto" (use the dumped footprint,
-    else recompute), "always" (ignore a dumped one) or "never".
+    :meth:`postproc.schema.DumpReader.shapes`. method : "points" (the
+    default), "footprint" or "angular". threshold : t in units of the pair
+    size (footprint; default :data:`postproc.footprint.DEFAULT_THRESHOLD`).
+    theta_deg : the angular tolerance (the criterion itself for "angular";
+    the feature labels of contacts without overlap otherwise; default 5).
+    recompute : "auto" (use the dumped footprint or overlap area, else
+    recompute), "always" (ignore dumped ones) or "never". tolerance : alpha
+    of the "points" method (delta = alpha V/area; default
+    :data:`postproc.contactpoints.DEFAULT_ALPHA`).
     """
 
     def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
-                 recompute="auto"):
+                 recompute="auto", tolerance=None):
         if method not in METHODS:
             raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
         if recompute not in ("auto", "always", "never"):
@@ -93,15 +105,23 @@ class Classifier:
             raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
+        self.tolerance = cpm.check_alpha(cpm.DEFAULT_ALPHA if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
         self._shapes = (vertices, triangles)
         self._geometry = None
+        self._points = None
 
     @property
     def parameter(self):
-        """The criterion's parameter: t (units of d) or theta (deg)."""
-        return self.threshold if self.method == "footprint" else self.theta_deg
+        """The criterion's parameter: alpha, t (units of d) or theta (deg)."""
+        return {"points": self.tolerance, "footprint": self.threshold}.get(self.method, self.theta_deg)
+
+    @property
+    def point_tables(self):
+        if self._points is None:
+            self._points = cpm.point_tables(*self._shapes)
+        return self._points
 
     @property
     def geometry(self):
@@ -122,11 +142,11 @@ class Classifier:
             poly = np.isin(lab, PAIR_TYPES)
             return Classes(lab, var, poly, None, {"ct_method": "angular", "ct_theta_deg": self.theta_deg,
                                                   "ct_threshold": self.theta_deg})
+        if self.method == "points":
+            return self._points_classes(snap, variants)
         return self._footprint(snap, variants)
 
-    def _footprint(self, snap, variants):
-        where = f"snapshot {snap.name} (step {snap.step})"
-        # checks, sphere/wall labels and the angular features at theta
+    def _check_orientations(self, snap, where):
         if snap.orientations is not None and snap.body_kind is not None:
             q = np.asarray(snap.orientations, float)
             qn = np.linalg.norm(q, axis=1)
@@ -134,6 +154,68 @@ class Classifier:
             if bad.any():
                 raise InputError(f"{where}: polyhedron {int(snap.body_ids[np.flatnonzero(bad)[0]])} "
                                  "has a zero or non-finite orientation")
+
+    def _points_classes(self, snap, variants):
+        where = f"snapshot {snap.name} (step {snap.step})"
+        self._check_orientations(snap, where)
+        base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
+        cols = {"ct_method": "points", "ct_threshold": self.tolerance, "ct_theta_deg": self.theta_deg}
+        if not poly.any():
+            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly, None,
+                           {**cols, "ct_fp_recomputed": 0, "ct_fp_missing": 0})
+        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+        use_dump = snap.footprint_area is not None and self.recompute != "always"
+        if not use_dump and self.recompute == "never":
+            raise InputError(f"{where}: the dump has no overlap area (contacts/footprint_area) and "
+                             "recomputing it is switched off")
+        if use_dump:
+            area = np.asarray(snap.footprint_area, float)
+            vol = np.asarray(snap.overlap, float)
+            if area.shape != (len(snap.id1),) or vol.shape != (len(snap.id1),):
+                raise InputError(f"{where}: contacts/footprint_area has shape {area.shape}, expected "
+                                 f"({len(snap.id1)},)")
+            area, vol = area[poly], vol[poly]
+            ext = None if snap.footprint is None else np.asarray(snap.footprint, float)[poly]
+        else:
+            ext, area, vol = fpm.recompute(self.geometry, snap.shape_index[i1], snap.positions[i1],
+                                         snap.orientations[i1], snap.shape_index[i2], snap.positions[i2],
+                                         snap.orientations[i2])
+        bad = ~(np.isfinite(area) & np.isfinite(vol) & (area >= 0) & (vol >= 0))
+        if bad.any():
+            c = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
+            raise InputError(f"{where}: contact {c}: overlap volume {float(vol[bad][0])!r} or area "
+                             f"{float(area[bad][0])!r} is not finite and >= 0")
+        # no overlap (exactly touching, or a stock-YADE contact whose exact
+        # overlap is empty): no slab to count in; the angular class stays
+        missing = (area == 0) | (vol == 0)
+        h = np.where(missing, 0.0, vol / np.where(missing, 1.0, area))
+        cols.update({"ct_fp_recomputed": int(not use_dump), "ct_fp_missing": int(missing.sum())})
+        args = (self.point_tables, snap.shape_index[i1], snap.positions[i1], snap.orientations[i1],
+                snap.shape_index[i2], snap.positions[i2], snap.orientations[i2], snap.normal[poly], h)
+
+        def labels_at(alpha):
+            r = cpm.contact_points(*args, alpha=alpha)
+            out = base.copy()
+            out[poly] = np.array(PAIR_TYPES)[np.where(missing, pair, r["pair"])]
+            return out, r
+
+        lab, r = labels_at(self.tolerance)
+        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
+        cols["ct_relabelled"] = float(np.mean(lab[poly] != np.array(PAIR_TYPES)[pair]))
+        keep = ~missing
+        cols["ct_pts_h_median"] = float(np.median(h[keep])) if keep.any() else np.nan
+        # the footprint extents over the pair size, for the footprint figure
+        rel = None
+        if ext is not None and snap.sizes is not None and ext.shape == (len(h), 2):
+            d = fpm.pair_size(snap.sizes[i1], snap.sizes[i2])
+            if np.all(np.isfinite(d) & (d > 0)) and np.all(np.isfinite(ext)):
+                rel = np.where(missing[:, None], np.nan, np.sort(ext / d[:, None], axis=1)[:, ::-1])
+        return Classes(lab, var, poly, rel, cols)
+
+    def _footprint(self, snap, variants):
+        where = f"snapshot {snap.name} (step {snap.step})"
+        # checks, sphere/wall labels and the angular features at theta
+        self._check_orientations(snap, where)
         base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
         cols = {"ct_method": "footprint", "ct_threshold": self.threshold, "ct_theta_deg": self.theta_deg}
         if not poly.any():
@@ -187,23 +269,25 @@ class Classifier:
         return Classes(lab, var, poly, rel, cols)
 
 
-def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None):
+def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, tolerance=None):
     """Check the contact-type options before any file is opened; raises
     InputError (one line) for an unknown criterion or a bad parameter."""
     if method not in METHODS:
         raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
     if threshold is not None:
         fpm.check_threshold(threshold)
+    if tolerance is not None:
+        cpm.check_alpha(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):
         raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
 
 
-def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None):
+def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None, tolerance=None):
     """A :class:`Classifier` for a dump's shapes, or None when there are
     none (spheres, flat tables). Bad shapes raise InputError."""
     if shapes is None or not len(shapes[0]):
         return None
-    return Classifier(shapes, method, threshold, theta_deg)
+    return Classifier(shapes, method, threshold, theta_deg, tolerance=tolerance)
 
 
 
@@ -217,10 +301,12 @@ class AngularTables(Classifier):
         if not (np.isfinite(self.theta_deg) and 0 < self.theta_deg < 45):
             raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
         self.threshold = fpm.DEFAULT_THRESHOLD
+        self.tolerance = cpm.DEFAULT_ALPHA
         self.recompute = "never"
         self.tables = tables
         self._shapes = None
         self._geometry = None
+        self._points = None
 
 
 def snapshot_classes(snap, classifier):

@@ -103,17 +103,19 @@ def reference_index(stages):
 
 
 def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
-                 errors=True, progress=None, theta_deg=None, types="footprint", threshold=None,
-                 cell=None, fmt=None, atoms=None):
+                 errors=True, progress=None, theta_deg=None, types="points", threshold=None,
+                 cell=None, fmt=None, atoms=None, tolerance=None):
     """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
     the figures. For a dump of polyhedra also the contact types
-    (:class:`postproc.classify.Classifier`: ``types`` "footprint", the
-    default, with ``threshold`` in units of the pair size, or "angular" with
-    tolerance ``theta_deg``), ``force_pdf.csv`` and their figures. Returns
+    (:class:`postproc.classify.Classifier`: ``types`` "points", the
+    default, LMGC90's count of contact points with ``tolerance`` alpha,
+    "footprint" with ``threshold`` in units of the pair size, or "angular"
+    with tolerance ``theta_deg``), ``force_pdf.csv`` and their figures. Returns
     (n_good, list of error lines)."""
+    from . import footprint as fpm
     from .classify import classifier_for, check_options
 
-    check_options(types, threshold, theta_deg)
+    check_options(types, threshold, theta_deg, tolerance)
     import pandas as pd
 
     from . import plots
@@ -130,7 +132,7 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         raise InputError(f"--axis: {exc}") from None
     count, snaps, close, shapes = _open_source(path, volume, box, cell, fmt, atoms)
     try:
-        tables = classifier_for(shapes, types, threshold, theta_deg)
+        tables = classifier_for(shapes, types, threshold, theta_deg, tolerance)
     except InputError as exc:
         close()
         raise InputError(f"{path}: /shapes: {exc}") from None
@@ -190,8 +192,10 @@ def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
         if "ct_method" in df:
             plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
             ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
-            if ext and df["ct_method"].iloc[0] == "footprint":
-                plots.plot_footprint(np.concatenate(ext), float(df["ct_threshold"].iloc[0]),
+            if ext and df["ct_method"].iloc[0] != "angular":
+                t = float(df["ct_threshold"].iloc[0]) if df["ct_method"].iloc[0] == "footprint" \
+                    else fpm.DEFAULT_THRESHOLD
+                plots.plot_footprint(np.concatenate(ext), t,
                                      os.path.join(tmp, "footprint.png"), what)
         if problems:
             with open(os.path.join(tmp, "errors.txt"), "w") as fh:
@@ -231,9 +235,12 @@ def main(argv=None):
     an.add_argument("--atoms", help="LAMMPS dump custom (id x y z) with the positions, "
                                     "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
-    an.add_argument("--types", choices=("footprint", "angular"), default="footprint",
-                    help="contact-type criterion (polyhedra): the overlap's footprint (default) or "
-                         "the angular one")
+    an.add_argument("--types", choices=("points", "footprint", "angular"), default="points",
+                    help="contact-type criterion (polyhedra): LMGC90's count of contact points "
+                         "(default), the overlap's footprint, or the angular one")
+    an.add_argument("--tolerance", type=float, default=None,
+                    help="points criterion: alpha, the distance tolerance in units of the overlap's "
+                         "mean thickness V/area (default 0.1)")
     an.add_argument("--threshold", type=float, default=None,
                     help="footprint threshold in units of the pair size d (default 0.1)")
     an.add_argument("--theta", type=float, default=None,
@@ -255,8 +262,9 @@ def main(argv=None):
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
-    vt.add_argument("--types", choices=("footprint", "angular"), default="footprint",
-                    help="contact-type criterion (default footprint)")
+    vt.add_argument("--types", choices=("points", "footprint", "angular"), default="points",
+                    help="contact-type criterion (default points)")
+    vt.add_argument("--tolerance", type=float, default=None, help="points tolerance alpha, units of V/area")
     vt.add_argument("--threshold", type=float, default=None, help="footprint threshold, units of d")
     vt.add_argument("--theta", type=float, default=None, help="angular tolerance, degrees")
     vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")
@@ -283,7 +291,7 @@ def main(argv=None):
                     raise InputError(f"--snapshots: index {bad[0]} out of range (the dump has {n})")
                 snaps = [k % n for k in args.snapshots]
             files = export_vtk(args.path, args.outdir, args.theta, snaps, progress=True, types=args.types,
-                               threshold=args.threshold)
+                               threshold=args.threshold, tolerance=args.tolerance)
         except BAD_INPUT as exc:
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
@@ -312,7 +320,7 @@ def main(argv=None):
         n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
                                    box=args.box, nbins=args.bins, errors=not args.no_errors,
                                    progress=args.progress, theta_deg=args.theta, types=args.types,
-                                   threshold=args.threshold, cell=args.cell,
+                                   threshold=args.threshold, cell=args.cell, tolerance=args.tolerance,
                                    fmt=args.format, atoms=args.atoms)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)

@@ -155,6 +155,9 @@ def plot_networks(df, path, label=""):
 def _criterion(df):
     """(name of the criterion, its band) of a summary's contact types."""
     method = df["ct_method"].iloc[0] if "ct_method" in df else "angular"
+    if method == "points":
+        a = df["ct_threshold"].iloc[0]
+        return f"contact points, tolerance {a:g} V/area", f"{a / 2:g} to {2 * a:g} V/area"
     if method == "footprint":
         t = df["ct_threshold"].iloc[0]
         return f"footprint threshold {t:g} d", f"{t / 2:g} d to {2 * t:g} d"

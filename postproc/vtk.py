@@ -106,25 +106,26 @@ def _write_pvd(path, entries):
         fh.write("</Collection>\n</VTKFile>\n")
 
 
-def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False, types="footprint",
-               threshold=None):
+def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False, types="points",
+               threshold=None, tolerance=None):
     """Write the VTK files of the dump ``path`` into ``outdir``; returns the
     list of files written. ``snapshots``: indices to export (default all).
-    Contact types by ``types`` ("footprint", threshold in units of d, or
-    "angular", tolerance ``theta_deg``): :class:`postproc.classify.Classifier`."""
+    Contact types by ``types`` ("points", the default, tolerance alpha
+    ``tolerance``; "footprint", threshold in units of d; or "angular",
+    tolerance ``theta_deg``): :class:`postproc.classify.Classifier`."""
     import meshio
 
     from .classify import check_options, classifier_for, snapshot_classes
     from .schema import DumpReader
 
-    check_options(types, threshold, theta_deg)
+    check_options(types, threshold, theta_deg, tolerance)
     os.makedirs(outdir, exist_ok=True)
     written, pvd_p, pvd_c = [], [], []
     with DumpReader(path) as reader:
         if len(reader) == 0:
             raise InputError(f"{path}: the dump holds no snapshots")
         shapes = reader.shapes()
-        tables = classifier_for(shapes, types, threshold, theta_deg)
+        tables = classifier_for(shapes, types, threshold, theta_deg, tolerance)
         idx = range(len(reader)) if snapshots is None else snapshots
         for i in idx:
             snap = reader.read(i)

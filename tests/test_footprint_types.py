@@ -96,7 +96,7 @@ def _snapshot(pairs):
 @pytest.fixture(scope="module")
 def classifier():
     shapes = [(v, t, geometric_faces(v, t)) for v, t in SHAPES]
-    return Classifier(tuple(map(list, zip(*shapes))))
+    return Classifier(tuple(map(list, zip(*shapes))), method="footprint")
 
 
 def _pairs(cases, depth_of_d):
@@ -255,9 +255,9 @@ def test_engine_contacts_classify_as_their_recomputation(classifier):
                     normal=c["normal"], overlap=c["volume"], body_kind=np.ones(n, np.int8), orientations=quat,
                     shape_index=shape.astype(np.int32), sizes=sizes, footprint=c["footprint"],
                     footprint_area=c["area"])
-    cl = classifier_for((verts, tris, faces))
+    cl = classifier_for((verts, tris, faces), "footprint")
     dumped = cl.classify(snap)
-    rec = Classifier((verts, tris, faces), recompute="always").classify(snap)
+    rec = Classifier((verts, tris, faces), "footprint", recompute="always").classify(snap)
     assert rec.columns["ct_fp_recomputed"] == 1 and dumped.columns["ct_fp_recomputed"] == 0
     assert dumped.labels.tolist() == rec.labels.tolist()
     for tag in ("lo", "hi"):
@@ -297,7 +297,7 @@ def test_bad_input_gets_one_line_errors(classifier):
     with pytest.raises(InputError, match="polyhedron 9 has a zero or non-finite orientation"):
         classifier.classify(snap)
     shapes = [(v, t, geometric_faces(v, t)) for v, t in SHAPES]
-    for kw, msg in (({"method": "shape"}, "--types must be one of footprint, angular"),
+    for kw, msg in (({"method": "shape"}, "--types must be one of points, footprint, angular"),
                     ({"threshold": 0.0}, r"--threshold must be in \(0, 1\)"),
                     ({"threshold": float("nan")}, r"--threshold must be in \(0, 1\)"),
                     ({"theta_deg": 60}, r"--theta must be in \(0, 45\)")):
@@ -316,8 +316,8 @@ def test_a_contact_without_overlap_keeps_its_angular_class(classifier):
     assert res.labels.tolist() == ["FF", "EF"] and res.columns["ct_fp_missing"] == 2
 
 
-def test_cli_default_is_the_footprint_and_recomputes_without_one(tmp_path, capsys):
-    """postproc analyze on a dump with and without contacts/footprint (a
+def test_cli_footprint_recomputes_without_one(tmp_path, capsys):
+    """postproc analyze --types footprint on a dump with and without contacts/footprint (a
     kernel run, a stock or version-1 dump): the same contact-type columns,
     footprint.png, the stability columns at t/2 and 2t; --types angular; bad
     options get one line and exit code 2."""
@@ -342,7 +342,7 @@ def test_cli_default_is_the_footprint_and_recomputes_without_one(tmp_path, capsy
                 if fp:
                     contacts.update(footprint=snap.footprint, footprint_area=snap.footprint_area)
                 write_snapshot(w, snap, step=step, stage=stage, contacts=contacts)
-        assert main(["analyze", path, "--out", str(tmp_path / name)]) == 0
+        assert main(["analyze", path, "--out", str(tmp_path / name), "--types", "footprint"]) == 0
         out[name] = pd.read_csv(tmp_path / name / "summary.csv")
         assert (tmp_path / name / "footprint.png").stat().st_size > 0
     k, s = out["kernel"], out["stock"]
