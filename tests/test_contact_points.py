@@ -279,3 +279,13 @@ def test_cli_default_is_the_point_count(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--tolerance must be finite and > 0" in err[0]
     assert not (tmp_path / "b").exists()
+
+
+def test_a_contact_without_overlap_keeps_its_angular_class():
+    """Cubes 1e-9 d apart (a stock-dump contact whose exact overlap is
+    empty): no slab to count in; the contact keeps its angular type."""
+    snap = _snapshot(_pairs([CASES["cube face on cube face"], CASES["crossed cube edges"]], 1e-3))
+    snap.positions[1::2, 2] += (1e-3 + 1e-9) * D_CUBE
+    snap.footprint = snap.footprint_area = None
+    res = _classifier().classify(snap)
+    assert res.labels.tolist() == ["FF", "EE"] and res.columns["ct_fp_missing"] == 2
