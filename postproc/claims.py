@@ -196,8 +196,11 @@ def evaluate(samples):
     dfw = difference(fs, fw)
     conds.append(_side(dfw))
     checks.append(f"FF share of the strong network {fs.text()} vs weak {fw.text()}")
-    if s1 and "ct_method" in s1[0] and s1[0]["ct_method"].iloc[0] == "footprint":
+    method = s1[0]["ct_method"].iloc[0] if s1 and "ct_method" in s1[0] else None
+    if method == "footprint":
         checks.append(f"footprint criterion, threshold {s1[0]['ct_threshold'].iloc[0]:g} d")
+    elif method == "points":
+        checks.append(f"contact-point count, tolerance {s1[0]['ct_threshold'].iloc[0]:g} V/area")
     elif s1 and "ct_theta_deg" in s1[0]:
         checks.append(f"angular criterion, tolerance {s1[0]['ct_theta_deg'].iloc[0]:g} deg")
     add(6, "; ".join(checks), conds if s1 and "ct_fratio_FF" in s1[0] else [0],

@@ -278,7 +278,7 @@ def build_report(study, out=None, reference=REFERENCE):
             gp = group_branch_polar(s1[0])
             figure("fig_types_polar.png", plots.plot_group_polar, *gp,
                    caption="branch-vector directions P_Ω(θ) of simple and triple contacts of S1 "
-                           "(footprint criterion) at εq ≈ 0.3 or the last snapshot, first seed: "
+                           "(the analysis's contact-type criterion) at εq ≈ 0.3 or the last snapshot, first seed: "
                            "the paper's claim-6 figure")
         except Exception as exc:
             problems.append(f"figure fig_types_polar.png not drawn: {exc.__class__.__name__}: {exc}")
