@@ -39,7 +39,7 @@ from scipy.spatial.transform import Rotation
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
-from postproc.axes import axis_vector, rotation_z_to       # noqa: E402
+from postproc.axes import axis_vector, quaternion_matrices, rotation_z_to   # noqa: E402
 from postproc.branchlength import (_solid_moments, length_profile,  # noqa: E402
                                    principal_extents, radial_distance, subset_anisotropy)
 from postproc.classify import Classifier                   # noqa: E402
@@ -51,18 +51,6 @@ from postproc.synthetic import harmonic_contacts           # noqa: E402
 
 GROUP = {"VV": "simple", "VE": "simple", "VF": "simple", "EE": "simple", "EF": "double",
          "FF": "triple"}
-
-
-def quat_matrix(q):
-    """(B, 3, 3) rotation matrices (local -> global) of unit quaternions
-    (B, 4) (w, x, y, z)."""
-    q = np.asarray(q, float)
-    q = q / np.linalg.norm(q, axis=1)[:, None]
-    w, x, y, z = q.T
-    return np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
 
 
 def fit_eq_a2(branch, length, e):
@@ -148,7 +136,7 @@ def analyse(path, axis, n_pairs, rng):
         per_snap["a_l_norm"].append(rn["a_l"])
         if poly:
             sh1, sh2 = s.shape_index[i1], s.shape_index[i2]
-            R = quat_matrix(s.orientations)
+            R = quaternion_matrices(s.orientations)
             rows["il"].append(0.5 * (dims[sh1, 1] / dims[sh1, 0] + dims[sh2, 1] / dims[sh2, 0]))
             rows["si"].append(0.5 * (dims[sh1, 2] / dims[sh1, 1] + dims[sh2, 2] / dims[sh2, 1]))
             rows["b1"].append(sh1)
@@ -258,7 +246,7 @@ def analyse(path, axis, n_pairs, rng):
     j1, j2 = rng.integers(0, len(geo), K), rng.integers(0, len(geo), K)
     sizes = np.array([2 * np.max(np.linalg.norm(g[0] - g[2], axis=1)) for g in geo])
     dmk = 0.5 * (sizes[j1] + sizes[j2])
-    Rlast = quat_matrix(last.orientations)
+    Rlast = quaternion_matrices(last.orientations)
     row_of_shape = np.empty(len(geo), int)
     row_of_shape[last.shape_index] = np.arange(nb)
 
