@@ -14,7 +14,7 @@ from postproc.errors import InputError
 from shapes.overlap import pair_overlap
 from shapes.polyhedron import geometric_faces
 from test_contact_types import quat_from_matrix, rot
-from test_footprint_types import CASES, D_CUBE, I3, SHAPES, _pairs, _pose, _snapshot
+from test_footprint_types import CASES, D_CUBE, I3, SHAPES, _pairs, _pose, _snapshot, kernel_snapshot
 
 TABLES = point_tables([v for v, _ in SHAPES], [t for _, t in SHAPES])
 # name: expected (points, group) at every depth and tolerance
@@ -196,35 +196,8 @@ def test_kernel_contact_set_dumped_and_recomputed_classify_identically():
     overlap recomputed from the shapes and poses: every class agrees, at
     alpha, alpha/2 and 2 alpha."""
     from postproc.classify import classifier_for
-    from postproc.schema import Snapshot
-    from shapes.engine import ContactEngine
-    from shapes.generate import generate_library
 
-    shapes, _ = generate_library(8, seed=3)
-    rng = np.random.default_rng(5)
-    m = 4
-    n = m ** 3
-    idx = np.stack(np.meshgrid(*[np.arange(m)] * 3, indexing="ij"), -1).reshape(-1, 3)
-    pos = 0.56 * idx + rng.uniform(-0.03, 0.03, size=(n, 3))
-    quat = np.roll(Rotation.random(n, random_state=rng).as_quat(), 1, axis=1)
-    shape = rng.integers(len(shapes), size=n)
-    verts = [s.vertices for s in shapes]
-    tris = [s.triangles for s in shapes]
-    faces = [geometric_faces(v, t) for v, t in zip(verts, tris)]
-    sizes = np.array([2 * np.linalg.norm(verts[s], axis=1).max() for s in shape])
-    eng = ContactEngine(verts, tris, shape, sizes, 1e7, 2e5, 0.5, 0.0, 0.05, walls=False, threads=1)
-    eng.step(pos, quat)
-    c = eng.contacts()
-    eng.close()
-    assert len(c["i"]) > 40
-    ids = np.arange(n) + 6
-    snap = Snapshot(name="000001", step=1, time=0.0, stage="shear", volume=8.0, box_lo=np.full(3, -0.5),
-                    box_hi=np.full(3, 1.5), wall_ids=np.arange(6), wall_forces=None, body_ids=ids,
-                    positions=pos, id1=ids[c["i"]], id2=ids[c["j"]], point=c["point"],
-                    force=c["force_normal"] + c["force_tangential"], force_normal=c["force_normal"],
-                    normal=c["normal"], overlap=c["volume"], body_kind=np.ones(n, np.int8), orientations=quat,
-                    shape_index=shape.astype(np.int32), sizes=sizes, footprint=c["footprint"],
-                    footprint_area=c["area"])
+    snap, (verts, tris, faces) = kernel_snapshot(5)
     cl = classifier_for((verts, tris, faces))
     assert cl.method == "points"
     dumped = cl.classify(snap)

@@ -220,18 +220,17 @@ def test_halving_and_doubling_the_threshold_is_monotonic():
         [TRIPLE, DOUBLE, SIMPLE]
 
 
-def test_engine_contacts_classify_as_their_recomputation(classifier):
-    """A contact set from the kernel's stepping engine (no YADE), written to
-    a dump with its footprint, and the same snapshot without it (as a stock
-    or version-1 dump): recomputed from the shapes and poses, every contact
-    gets the same class, and the analysis rows agree."""
-    from postproc.analysis import analyze_snapshot
-    from postproc.classify import classifier_for
+
+def kernel_snapshot(seed):
+    """A contact set from the kernel's stepping engine (no YADE): 64 random
+    library grains in a loose 4 x 4 x 4 lattice, posed with rng ``seed``,
+    as a Snapshot with the dumped overlap volume and footprint. Returns
+    (snapshot, (vertices, triangles, geometric faces) of the shapes)."""
     from shapes.engine import ContactEngine
     from shapes.generate import generate_library
 
     shapes, _ = generate_library(8, seed=3)
-    rng = np.random.default_rng(4)
+    rng = np.random.default_rng(seed)
     m = 4
     n = m ** 3
     idx = np.stack(np.meshgrid(*[np.arange(m)] * 3, indexing="ij"), -1).reshape(-1, 3)
@@ -255,6 +254,17 @@ def test_engine_contacts_classify_as_their_recomputation(classifier):
                     normal=c["normal"], overlap=c["volume"], body_kind=np.ones(n, np.int8), orientations=quat,
                     shape_index=shape.astype(np.int32), sizes=sizes, footprint=c["footprint"],
                     footprint_area=c["area"])
+    return snap, (verts, tris, faces)
+
+def test_engine_contacts_classify_as_their_recomputation(classifier):
+    """A contact set from the kernel's stepping engine (no YADE), written to
+    a dump with its footprint, and the same snapshot without it (as a stock
+    or version-1 dump): recomputed from the shapes and poses, every contact
+    gets the same class, and the analysis rows agree."""
+    from postproc.analysis import analyze_snapshot
+    from postproc.classify import classifier_for
+
+    snap, (verts, tris, faces) = kernel_snapshot(4)
     cl = classifier_for((verts, tris, faces), "footprint")
     dumped = cl.classify(snap)
     rec = Classifier((verts, tris, faces), "footprint", recompute="always").classify(snap)
