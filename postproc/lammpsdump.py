@@ -264,13 +264,19 @@ def read_liggghts_local(path):
     Forces are turned into the forces on id2 by id1 (see the module
     docstring); branch vectors are minimum images across the periodic
     (``pp``) axes of each block's box. Returns a list."""
+    return _each_block(path, lambda k, blk: _liggghts_block(path, k, blk))
+
+
+def _each_block(path, parse):
+    """parse(k, block) for every TIMESTEP block of ``path``: a list with one
+    snapshot or one InputError per block (a bad block loses no other)."""
     out = []
     for k, blk in enumerate(_blocks(path)):
         if isinstance(blk, InputError):
             out.append(blk)
             continue
         try:
-            out.append(_liggghts_block(path, k, blk))
+            out.append(parse(k, blk))
         except InputError as exc:
             out.append(exc)
     return out
@@ -351,16 +357,7 @@ def read_lammps_local(path, atoms):
         raise InputError(f"{path}: a LAMMPS pair/local dump needs the atom positions "
                          "(--atoms ATOMS.dump, a dump custom with id x y z)")
     pos_by_step = read_atoms(atoms)
-    out = []
-    for k, blk in enumerate(_blocks(path)):
-        if isinstance(blk, InputError):
-            out.append(blk)
-            continue
-        try:
-            out.append(_lammps_block(path, atoms, k, blk, pos_by_step))
-        except InputError as exc:
-            out.append(exc)
-    return out
+    return _each_block(path, lambda k, blk: _lammps_block(path, atoms, k, blk, pos_by_step))
 
 
 def _lammps_block(path, atoms, k, blk, pos_by_step):
