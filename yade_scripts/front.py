@@ -52,6 +52,37 @@ PLANS = {
                   ("k300-I2e-2-N250", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 250}),
                   ("k300-I2e-2-N4000", {"kappa": 300.0, "inertial_number": 2e-2, "n_particles": 4000})]},
 }
+
+
+def _grid(points, seeds, n_particles):
+    """Plan lines for every (kappa, I[, N]) point and seed, seed-major: every
+    point's first seeds come before any point's later seeds, so a plan cut
+    short still has whole pairs. Descriptions ``k<kappa>-I<I>[-N<N>]-s<seed>``;
+    the same seed at two points starts from the same grains and positions
+    (paired differences)."""
+    lines = []
+    for seed in seeds:
+        for p in points:
+            kappa, inertial = p[0], p[1]
+            n = p[2] if len(p) > 2 else n_particles
+            tag = f"k{kappa:g}-I{inertial:g}" + (f"-N{n}" if n != n_particles else "")
+            lines.append((f"{tag}-s{seed}", {"kappa": float(kappa), "inertial_number": float(inertial),
+                                              "n_particles": n, "seed": seed}))
+    return lines
+
+
+# The front of the README (issue 14): the default preset (dense preparation)
+# sheared to eps_1 = 0.3, 3 seeds per point; S1 at 200 grains (plus a
+# 500-grain point at the default kappa, I), S2 at 1000 spheres (plus 4000).
+# A kappa sweep at the default I, an I sweep at the default kappa and one
+# corner (stiff and slow) to test that the two effects add.
+KERNEL_POINTS = [(300, 2e-2), (100, 2e-2), (1000, 2e-2), (3000, 2e-2),
+                 (300, 4e-2), (300, 1e-2), (300, 5e-3), (1000, 1e-2)]
+PLANS["kernel"] = {
+    "preset": "default", "common": {"final_strain": 0.3, "dump_strain": 0.01},
+    "polyhedra": _grid(KERNEL_POINTS + [(300, 2e-2, 500)], (1, 2, 3), 200),
+    "spheres": _grid(KERNEL_POINTS + [(300, 2e-2, 4000)], (1, 2, 3), 1000),
+}
 LOW_DETAIL = {"v_min": 8, "v_max": 12}
 
 

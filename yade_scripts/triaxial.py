@@ -424,7 +424,9 @@ def control():
             print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
                   f"solid fraction {state['phi_iso']:.4f}, unbalanced force {unbalanced():.2e}", flush=True)
             snapshot("isotropic")
-            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3))
+            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3),
+                         shear_start_step=O.iter,
+                         shear_start_wall=previous["wall_seconds"] + time.time() - t0)
             newton.damping = damping
             if compaction_friction != friction:
                 set_friction(friction)
@@ -495,7 +497,7 @@ def control():
 # round-off change), so the kernel keeps the run's own shapes from the
 # checkpoint, and the dump's /shapes stay those of the first attempt.
 STATE_KEYS = ("stage", "H0", "L0", "eps_1", "next_dump", "phi_iso", "integral", "v_top", "contact_steps",
-              "interaction_steps")
+              "interaction_steps", "shear_start_step", "shear_start_wall")
 previous = {"wall_seconds": 0.0, "engine_seconds": {}, "resumes": []}   # earlier attempts of this run
 
 
@@ -627,6 +629,7 @@ engine_seconds = {k: previous["engine_seconds"].get(k, 0.0) + v for k, v in engi
 info = {"steps": O.iter, "time": O.time, "wall_seconds": previous["wall_seconds"] + time.time() - t0,
         "solid_fraction_isotropic": state["phi_iso"], "snapshots": writer._n_snapshots,
         "contact_steps": state["contact_steps"], "interaction_steps": state["interaction_steps"],
+        "shear_start_step": state.get("shear_start_step"), "shear_start_wall_seconds": state.get("shear_start_wall"),
         "engine_seconds": engine_seconds, "resumes": previous["resumes"], **derived}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
