@@ -31,13 +31,49 @@ from .statistics import plateau_estimate, steady_indices
 
 QUANTITIES = ("q_over_p", "a", "a_n", "a_t")
 
+# The quantities of the study's comparison table (postproc.report.
+# comparison_table), one value per run: column -> row name of that table.
+# phi_iso, the solid fraction after compaction, comes from the dump.
+COMPARISON = {
+    "qp_plateau": "q/p plateau", "qp_peak": "q/p peak",
+    "psi_peak_deg": "dilatancy angle at the peak (deg)",
+    "a": "a", "a_l": "a_l", "a_n": "a_n", "a_t": "a_t", "sff": "(2/5)(a+a_l+a_n+a_t)",
+    "z": "z (a pair counts once)", "frac_below_mean": "fraction of forces below the mean",
+    "ct_simple": "proportion of simple contacts", "ct_double": "proportion of double contacts",
+    "ct_triple": "proportion of triple contacts",
+}
+FRONT_QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
+# The default's stiffness and inertial number: the fit's units (kappa_d / kappa
+# and I / I_d), so that its two slopes are the two effects at the default.
+DEFAULT_KAPPA = 300.0
+DEFAULT_I = 2e-2
+
+
+def _run_values(df, sample, reference):
+    """{column: value} of one run's summary table: its comparison-table row
+    values (each the run's steady plateau or value at the peak)."""
+    from .report import comparison_table
+
+    rows = comparison_table({sample: [df]}, reference)
+    by_name = {name: est for name, smp, est, _ in rows if smp == sample}
+    return {col: (float(by_name[name].mean) if by_name.get(name) is not None else np.nan)
+            for col, name in COMPARISON.items()}
+
 
 def collect_runs(folder):
-    """DataFrame, one row per analysed run of the sweep folder."""
+    """DataFrame, one row per analysed run of the sweep folder: its
+    parameters (kappa, inertial_number, n_particles, library, seed), its cost
+    (wall_seconds, steps, compaction_steps, shear_steps, contact_steps, and
+    for the polyhedra kernel touch_steps, the exact touching contact-steps),
+    the plateau of q/p, a, a_n, a_t with one-seed batch-means s.e., and every
+    quantity of FRONT_QUANTITIES."""
     import pandas as pd
 
+    from .report import REFERENCE
     from .schema import DumpReader
 
+    with open(REFERENCE) as fh:
+        reference = json.load(fh)
     rows = []
     for summary in sorted(glob.glob(os.path.join(folder, "*", "analysis-*", "summary.csv"))):
         ana = os.path.dirname(summary)
@@ -52,24 +88,34 @@ def collect_runs(folder):
             sample = r.sample_kind
         with open(info_path) as fh:
             info = json.load(fh)
-        df = pd.read_csv(summary)
+        df = pd.read_csv(summary, dtype={"snapshot": str})
         idx = steady_indices(df["eps_q"], df["stage"])
+        shear0 = info.get("shear_start_step")
         row = {"sample": sample, "run": name.split("-", 1)[1] if "-" in name else name,
                "kappa": par.get("kappa"), "inertial_number": par.get("inertial_number"),
                "n_particles": par.get("n_particles"), "library": par.get("library", ""),
+               "seed": par.get("seed"), "final_strain": par.get("final_strain"),
                "steps": info.get("steps"), "wall_seconds": info.get("wall_seconds"),
+               "compaction_steps": shear0,
+               "shear_steps": (info["steps"] - shear0) if shear0 is not None else np.nan,
+               "compaction_wall_seconds": info.get("shear_start_wall_seconds"),
                "contact_steps": info.get("contact_steps"),
-               "n_steady": len(idx)}
+               "touch_steps": (info.get("kernel") or {}).get("touch_steps", np.nan),
+               "n_steady": len(idx), "phi_iso": par.get("solid_fraction_isotropic", np.nan)}
         for q in QUANTITIES:
             e = plateau_estimate([df[q].to_numpy(float)[idx]])
             row[q] = e.mean
             row[q + "_se"] = e.se
+        row.update(_run_values(df, sample, reference))
         rows.append(row)
     return pd.DataFrame(rows)
 
 
 def add_errors(runs):
-    """Add ``ref`` (bool), ``err_<q>`` and ``err_max`` columns, per sample."""
+    """Add ``ref`` (bool), ``err_<q>`` and ``err_max`` columns, per sample:
+    each run's |plateau - reference plateau| for q in QUANTITIES. The
+    reference is the first run whose name starts with ``ref``, else the
+    stiffest, slowest, largest run."""
     runs = runs.copy()
     runs["ref"] = False
     for s, g in runs.groupby("sample"):
@@ -96,11 +142,214 @@ def pareto(cost, error):
     return keep
 
 
+POINT = ["sample", "kappa", "inertial_number", "n_particles", "library"]
+
+
+def _t(dof, level=0.95):
+    from scipy.stats import t
+
+    return float(t.ppf(0.5 + level / 2, dof)) if dof >= 1 else np.nan
+
+
+def point_table(runs, quantities=FRONT_QUANTITIES):
+    """One row per point (sample, kappa, I, N, library): ``n_seeds``, the
+    mean over seeds of each quantity ``<q>`` with the 95 % Student's-t
+    half-width ``<q>_ci`` (nan with one seed), and the medians of the cost
+    columns (wall_seconds, steps, compaction_steps, shear_steps)."""
+    import pandas as pd
+
+    rows = []
+    for key, g in runs.groupby(POINT, sort=True):
+        row = dict(zip(POINT, key))
+        row["n_seeds"] = int(g["seed"].nunique()) if "seed" in g else len(g)
+        for q in quantities:
+            v = g[q].to_numpy(float) if q in g else np.array([])
+            v = v[np.isfinite(v)]
+            row[q] = float(v.mean()) if len(v) else np.nan
+            row[q + "_ci"] = (_t(len(v) - 1) * float(v.std(ddof=1)) / np.sqrt(len(v))
+                              if len(v) > 1 else np.nan)
+        for c in ("wall_seconds", "steps", "compaction_steps", "shear_steps"):
+            row[c] = float(np.nanmedian(g[c].to_numpy(float))) if c in g and g[c].notna().any() else np.nan
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+    """Least-squares fit of one quantity over the runs of one sample at one
+    size, with one offset per seed (the seeds are paired: the same seed at
+    every point starts from the same grains and positions):
+
+        X(kappa, I, seed) = X0 + A kappa_d / kappa + B I / I_d + c_seed,  sum c = 0
+
+    linear in 1/kappa (contact deflections scale as 1/kappa: Agnolin & Roux
+    2007, Roux & Combe) and in I (the quasistatic limit of mu(I) =
+    mu_0 + b I, GDR MiDi 2004, da Cruz et al. 2005). X0 is the rigid,
+    quasistatic limit kappa -> inf, I -> 0; A and B are the stiffness and the
+    rate effects at the default (kappa_d, I_d), so the default's bias is
+    A + B. Returns a dict with X0, A, B, bias = A + B, their standard errors
+    (``se_<name>``), 95 % half-widths (``ci_<name>``), the residual
+    standard deviation ``resid_sd``, ``dof`` and ``n`` runs; nans when the
+    fit has no degrees of freedom left.
+    """
+    g = runs[np.isfinite(runs[q].to_numpy(float))]
+    y = g[q].to_numpy(float)
+    x1 = kappa_d / g["kappa"].to_numpy(float)
+    x2 = g["inertial_number"].to_numpy(float) / inertial_d
+    seeds = sorted(g["seed"].unique()) if "seed" in g else [None]
+    cols = [np.ones_like(y), x1, x2]
+    sv = g["seed"].to_numpy() if "seed" in g else np.zeros(len(y))
+    for s in seeds[1:]:                        # sum-to-zero seed offsets
+        cols.append((sv == s).astype(float) - (sv == seeds[0]).astype(float))
+    X = np.column_stack(cols)
+    n, k = X.shape
+    out = {"n": n, "dof": n - k}
+    names = ("X0", "A", "B")
+    if n <= k or np.linalg.matrix_rank(X) < k:
+        out.update({nm: np.nan for nm in names + ("bias", "resid_sd")})
+        out.update({f"{p}_{nm}": np.nan for p in ("se", "ci") for nm in names + ("bias",)})
+        return out
+    beta, *_ = np.linalg.lstsq(X, y, rcond=None)
+    resid = y - X @ beta
+    s2 = float(resid @ resid) / (n - k)
+    cov = s2 * np.linalg.inv(X.T @ X)
+    t = _t(n - k)
+    for j, nm in enumerate(names):
+        out[nm] = float(beta[j])
+        out["se_" + nm] = float(np.sqrt(cov[j, j]))
+        out["ci_" + nm] = t * out["se_" + nm]
+    out["bias"] = float(beta[1] + beta[2])
+    out["se_bias"] = float(np.sqrt(cov[1, 1] + cov[2, 2] + 2 * cov[1, 2]))
+    out["ci_bias"] = t * out["se_bias"]
+    out["resid_sd"] = float(np.sqrt(s2))
+    return out
+
+
+def monotone(points, q, axis, fixed):
+    """Whether the point means of ``q`` change in one direction along one
+    sweep. axis "kappa" (at I = fixed) or "inertial_number" (at kappa =
+    fixed); points of one sample and size. Returns (+1 increasing, -1
+    decreasing, 0 not monotone or fewer than 3 points) in the axis's own
+    order (kappa increasing, I increasing)."""
+    other = "inertial_number" if axis == "kappa" else "kappa"
+    g = points[np.isclose(points[other].to_numpy(float), fixed)].sort_values(axis)
+    v = g[q].to_numpy(float)
+    v = v[np.isfinite(v)]
+    if len(v) < 3:
+        return 0
+    d = np.diff(v)
+    return 1 if np.all(d > 0) else (-1 if np.all(d < 0) else 0)
+
+
+def size_effect(runs, q, n_small, n_large, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+    """Mean over seeds of q at (kappa_d, I_d) for N = n_large minus N =
+    n_small (independent samples: Welch's t). Returns (difference, 95 %
+    half-width) or (nan, nan)."""
+    from .statistics import difference, plateau_estimate as pe
+
+    at = runs[np.isclose(runs["kappa"], kappa_d) & np.isclose(runs["inertial_number"], inertial_d)]
+    a = at.loc[at["n_particles"] == n_large, q].to_numpy(float)
+    b = at.loc[at["n_particles"] == n_small, q].to_numpy(float)
+    a, b = a[np.isfinite(a)], b[np.isfinite(b)]
+    if len(a) < 2 or len(b) < 2:
+        return np.nan, np.nan
+    e = difference(pe([[v] for v in a]), pe([[v] for v in b]))
+    lo, hi = e.ci()
+    return float(e.mean), float((hi - lo) / 2)
+
+
+def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+    """Per sample (at its most common N and library) and quantity: the fit of
+    :func:`fit_rigid_quasistatic`, whether the kappa and I sweeps are
+    monotone, the seed-to-seed standard deviation at the default point
+    (``seed_sd``), the size effect (largest N minus the base N at the
+    default) and the prediction error of the corner points (stiff and slow
+    at once), which tests that the two effects add."""
+    import pandas as pd
+
+    rows = []
+    for s, gs in runs.groupby("sample"):
+        base_n = gs["n_particles"].mode().iloc[0]
+        base_lib = gs["library"].mode().iloc[0]
+        g = gs[(gs["n_particles"] == base_n) & (gs["library"] == base_lib)]
+        pts = point_table(g, quantities)
+        sizes = sorted(set(gs["n_particles"]) - {base_n})
+        for q in quantities:
+            if q not in g or not np.isfinite(g[q].to_numpy(float)).any():
+                continue
+            f = fit_rigid_quasistatic(g, q, kappa_d, inertial_d)
+            at = g[np.isclose(g["kappa"], kappa_d) & np.isclose(g["inertial_number"], inertial_d)][q]
+            corner = g[~np.isclose(g["kappa"], kappa_d) & ~np.isclose(g["inertial_number"], inertial_d)]
+            row = {"sample": s, "quantity": q, "n_particles": int(base_n), **f,
+                   "monotone_kappa": monotone(pts, q, "kappa", inertial_d),
+                   "monotone_I": monotone(pts, q, "inertial_number", kappa_d),
+                   "default_mean": float(at.mean()) if len(at) else np.nan,
+                   "seed_sd": float(at.std(ddof=1)) if at.notna().sum() > 1 else np.nan}
+            if len(corner) and np.isfinite(f["X0"]):
+                pred = (f["X0"] + f["A"] * kappa_d / corner["kappa"].to_numpy(float)
+                        + f["B"] * corner["inertial_number"].to_numpy(float) / inertial_d)
+                c = corner[q].to_numpy(float)
+                # seed offsets cancel in the mean over the corner's seeds
+                row["corner_residual"] = float(np.nanmean(c - pred))
+            else:
+                row["corner_residual"] = np.nan
+            if sizes:
+                row["size_n"] = int(sizes[-1])
+                row["size_effect"], row["size_effect_ci"] = size_effect(gs, q, base_n, sizes[-1],
+                                                                        kappa_d, inertial_d)
+            rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def cost_model(runs, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, strain=0.3):
+    """Per sample, the cost constants measured on the sweep's runs, as the
+    medians over runs:
+
+    * ``compaction_steps_ref``: steps to the isotropic state, scaled to
+      kappa_d (the time step goes as kappa^-1/2: steps x sqrt(kappa_d/kappa));
+    * ``shear_steps_ref``: shear steps to eps_1 = ``strain`` at (kappa_d,
+      I_d): shear steps x sqrt(kappa_d/kappa) x (I/I_d) x strain/final_strain
+      (the strain rate goes as I);
+    * ``contacts_per_grain``: touching contacts per grain and step
+      (kernel touch_steps / steps / N; else the logged contact-steps);
+    * ``us_per_contact_step``: wall time per touching contact-step (µs), for
+      the run's own threads;
+    * ``us_per_grain_step``: wall time per grain-step (µs);
+    with the relative spread (``*_rsd``, sd / median) of each scaled step
+    count, which says how well the kappa^-1/2 and I^-1 laws hold.
+    Returns a DataFrame, one row per sample and particle count.
+    """
+    import pandas as pd
+
+    rows = []
+    for (s, n), g in runs.groupby(["sample", "n_particles"]):
+        scale = np.sqrt(kappa_d / g["kappa"].to_numpy(float))
+        comp = g["compaction_steps"].to_numpy(float) * scale
+        shear = (g["shear_steps"].to_numpy(float) * scale * g["inertial_number"].to_numpy(float)
+                 / inertial_d * strain / g["final_strain"].to_numpy(float))
+        touch = g["touch_steps"].to_numpy(float)
+        touch = np.where(np.isfinite(touch), touch, g["contact_steps"].to_numpy(float))
+        steps = g["steps"].to_numpy(float)
+        wall = g["wall_seconds"].to_numpy(float)
+        row = {"sample": s, "n_particles": int(n), "runs": len(g)}
+        for name, v in (("compaction_steps_ref", comp), ("shear_steps_ref", shear)):
+            v = v[np.isfinite(v)]
+            row[name] = float(np.median(v)) if len(v) else np.nan
+            row[name + "_rsd"] = float(v.std(ddof=1) / np.median(v)) if len(v) > 1 else np.nan
+        row["contacts_per_grain"] = float(np.nanmedian(touch / steps / n))
+        row["us_per_contact_step"] = float(np.nanmedian(wall / touch * 1e6))
+        row["us_per_grain_step"] = float(np.nanmedian(wall / steps / n * 1e6))
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
 def write_front(folder):
-    """Write ``front.csv`` and ``front.png`` into the sweep folder; returns
-    the table."""
+    """Write into the sweep folder: ``front.csv`` (one row per run),
+    ``front-points.csv`` (means over seeds per point), ``front-fit.csv``
+    (the extrapolation and the default's bias per quantity),
+    ``front-cost.csv`` (the cost model) and ``front.png``,
+    ``front-trends.png``. Returns the run table."""
     from .errors import InputError
-    from .plots import plot_front
+    from .plots import plot_front, plot_front_trends
 
     runs = collect_runs(folder)
     if runs.empty:
@@ -110,7 +359,13 @@ def write_front(folder):
     for s, g in runs.groupby("sample"):
         runs.loc[g.index, "pareto"] = pareto(g["wall_seconds"], g["err_max"])
     runs.to_csv(os.path.join(folder, "front.csv"), index=False)
+    points = point_table(runs)
+    points.to_csv(os.path.join(folder, "front-points.csv"), index=False)
+    fits = fit_table(runs)
+    fits.to_csv(os.path.join(folder, "front-fit.csv"), index=False)
+    cost_model(runs).to_csv(os.path.join(folder, "front-cost.csv"), index=False)
     plot_front(runs, os.path.join(folder, "front.png"))
+    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"))
     return runs
 
 

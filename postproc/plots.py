@@ -393,6 +393,56 @@ def plot_front(runs, path):
     plt.close(fig)
 
 
+TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_peak_deg", "dilatancy angle at peak (deg)"),
+                ("a", "a"), ("a_n", "a_n"), ("a_t", "a_t"), ("z", "z"), ("phi_iso", "solid fraction (isotropic)"))
+
+
+def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
+    """The kappa and I trends of the front, one row per sample, one panel per
+    quantity: point means over seeds with their 95 % intervals against
+    x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
+    at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
+    (postproc.front.fit_rigid_quasistatic) and the extrapolated X0 at x = 0
+    (star, with its interval); other points (the corner) as crosses."""
+    plt = _plt()
+    samples = list(dict.fromkeys(points["sample"]))
+    panels = [p for p in TREND_PANELS if p[0] in points]
+    fig, axes = plt.subplots(len(samples), len(panels), figsize=(2.6 * len(panels), 2.7 * len(samples)),
+                             squeeze=False)
+    for r, s in enumerate(samples):
+        g = points[points["sample"] == s]
+        base_n = g["n_particles"].mode().iloc[0] if "n_particles" in g else None
+        if base_n is not None:
+            g = g[g["n_particles"] == base_n]
+        kap = np.isclose(g["inertial_number"], inertial_d)
+        rate = np.isclose(g["kappa"], kappa_d)
+        for c, (q, label) in enumerate(panels):
+            ax = axes[r, c]
+            for sel, x, m, lab in ((kap, kappa_d / g["kappa"], "o", "x = κd/κ"),
+                                   (rate & ~kap, g["inertial_number"] / inertial_d, "s", "x = I/Id"),
+                                   (~kap & ~rate, kappa_d / g["kappa"], "x", "corner (x = κd/κ)")):
+                if sel.any():
+                    ax.errorbar(x[sel], g.loc[sel, q], yerr=g.loc[sel, q + "_ci"].fillna(0), fmt=m,
+                                ms=4, capsize=2, label=lab)
+            f = fits[(fits["sample"] == s) & (fits["quantity"] == q)]
+            if len(f) and np.isfinite(f["X0"].iloc[0]):
+                f = f.iloc[0]
+                xs = np.linspace(0, 2.2, 20)
+                ax.plot(xs, f["X0"] + f["A"] * xs + f["B"], "C0-", lw=0.8)
+                ax.plot(xs, f["X0"] + f["A"] + f["B"] * xs, "C1-", lw=0.8)
+                ax.errorbar([0], [f["X0"]], yerr=[f["ci_X0"]] if np.isfinite(f["ci_X0"]) else None,
+                            fmt="*", color="k", ms=8, capsize=2, label="κ→∞, I→0")
+            ax.set_title(f"{s}: {label}", fontsize=8)
+            ax.tick_params(labelsize=7)
+            if r == len(samples) - 1:
+                ax.set_xlabel("κd/κ or I/Id (default at 1)", fontsize=7)
+            if r == 0 and c == 0:
+                ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def plot_analysis_front(table, path):
     """Analysis estimators: RMS error (largest over a, a_l, a_n, a_t)
     against contacts per set, and time per set against RMS error."""

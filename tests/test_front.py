@@ -7,7 +7,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from postproc.front import add_errors, analysis_front, pareto
+from postproc.front import (add_errors, analysis_front, cost_model, fit_rigid_quasistatic, fit_table,
+                            monotone, pareto, point_table)
 
 
 def test_pareto_and_errors_on_a_known_table():
@@ -23,6 +24,88 @@ def test_pareto_and_errors_on_a_known_table():
     # without a "ref" line: the stiffest, slowest run
     runs["run"] = ["x", "y", "z"]
     assert add_errors(runs)["ref"].tolist() == [True, False, False]
+
+
+def synthetic_sweep(x0=0.40, A=0.03, B=0.05, noise=0.0, seeds=(1, 2, 3), rng=None):
+    """Runs of a kappa sweep at I = 2e-2, an I sweep at kappa = 300 and a
+    corner, obeying X = x0 + A 300/kappa + B I/2e-2 + c_seed (+ noise)."""
+    pts = [(300, 2e-2), (100, 2e-2), (1000, 2e-2), (3000, 2e-2), (300, 4e-2), (300, 1e-2),
+           (300, 5e-3), (1000, 1e-2)]
+    offsets = {1: 0.02, 2: -0.01, 3: -0.01}
+    rows = []
+    for seed in seeds:
+        for k, i in pts:
+            x = x0 + A * 300 / k + B * i / 2e-2 + offsets[seed]
+            if noise:
+                x += noise * rng.standard_normal()
+            rows.append({"sample": "polyhedra", "kappa": float(k), "inertial_number": i, "n_particles": 200,
+                         "library": "shapes.h5", "seed": seed, "qp_plateau": x})
+    return pd.DataFrame(rows)
+
+
+def test_rigid_quasistatic_fit_recovers_an_exact_law():
+    runs = synthetic_sweep()
+    f = fit_rigid_quasistatic(runs, "qp_plateau")
+    # exact data: only round-off is left
+    assert f["X0"] == pytest.approx(0.40, abs=1e-12)
+    assert f["A"] == pytest.approx(0.03, abs=1e-12) and f["B"] == pytest.approx(0.05, abs=1e-12)
+    assert f["bias"] == pytest.approx(0.08, abs=1e-12) and f["resid_sd"] < 1e-12
+    assert f["n"] == 24 and f["dof"] == 24 - 5          # X0, A, B and two seed offsets
+    # the seeds' offsets do not leak into X0 when a seed misses a point
+    f2 = fit_rigid_quasistatic(runs.drop(index=[9, 10]), "qp_plateau")
+    assert f2["X0"] == pytest.approx(0.40, abs=1e-12)
+    t = fit_table(runs, ("qp_plateau",))
+    row = t.iloc[0]
+    assert row["monotone_kappa"] == -1 and row["monotone_I"] == 1
+    assert row["corner_residual"] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_rigid_quasistatic_fit_intervals_cover_the_truth():
+    """With Gaussian noise of sd 0.01, the 95 % intervals of X0 and of the
+    bias cover the truth in about 95 % of 400 sweeps (binomial sd 1.1 %:
+    a band of 4 sd)."""
+    rng = np.random.default_rng(3)
+    cover = {"X0": 0, "bias": 0}
+    for _ in range(400):
+        f = fit_rigid_quasistatic(synthetic_sweep(noise=0.01, rng=rng), "qp_plateau")
+        cover["X0"] += abs(f["X0"] - 0.40) <= f["ci_X0"]
+        cover["bias"] += abs(f["bias"] - 0.08) <= f["ci_bias"]
+    for k, c in cover.items():
+        assert 0.95 - 4 * 0.011 < c / 400 < 0.95 + 4 * 0.011, (k, c)
+
+
+def test_point_table_and_monotone_on_known_numbers():
+    runs = pd.DataFrame({"sample": ["s"] * 6, "kappa": [300.0] * 3 + [1000.0] * 3,
+                         "inertial_number": [0.02] * 6, "n_particles": [10] * 6, "library": ["x"] * 6,
+                         "seed": [1, 2, 3] * 2, "q": [1.0, 2.0, 3.0, 5.0, 5.0, 5.0],
+                         "wall_seconds": [1, 2, 3, 4, 5, 6], "steps": [10] * 6,
+                         "compaction_steps": [4] * 6, "shear_steps": [6] * 6})
+    p = point_table(runs, ("q",))
+    assert p["n_seeds"].tolist() == [3, 3] and p["q"].tolist() == [2.0, 5.0]
+    # t(0.975, 2) = 4.3027 times s.e. 1/sqrt(3)
+    assert p["q_ci"].iloc[0] == pytest.approx(4.302653 / math.sqrt(3), rel=1e-6)
+    assert p["q_ci"].iloc[1] == 0.0 and p["wall_seconds"].tolist() == [2.0, 5.0]
+    pts = pd.DataFrame({"kappa": [100.0, 300, 1000, 3000], "inertial_number": [0.02] * 4,
+                        "q": [1.0, 2.0, 2.5, 2.4]})
+    assert monotone(pts, "q", "kappa", 0.02) == 0
+    assert monotone(pts.iloc[:3], "q", "kappa", 0.02) == 1
+
+
+def test_cost_model_scales_steps_to_the_default():
+    """Steps that follow the laws exactly (compaction as kappa^1/2, shear
+    as kappa^1/2 / I) scale back to one reference with no spread."""
+    rows = []
+    for k, i in [(300, 2e-2), (1200, 2e-2), (300, 5e-3), (75, 4e-2)]:
+        c = 40000 * math.sqrt(k / 300)
+        sh = 30000 * math.sqrt(k / 300) * (2e-2 / i) * (0.2 / 0.3)
+        rows.append({"sample": "polyhedra", "n_particles": 200, "kappa": float(k), "inertial_number": i,
+                     "final_strain": 0.2, "compaction_steps": c, "shear_steps": sh, "steps": c + sh,
+                     "touch_steps": 600 * (c + sh), "contact_steps": np.nan,
+                     "wall_seconds": (c + sh) * 600 * 5e-6})
+    m = cost_model(pd.DataFrame(rows)).iloc[0]
+    assert m["compaction_steps_ref"] == pytest.approx(40000) and m["shear_steps_ref"] == pytest.approx(30000)
+    assert m["compaction_steps_ref_rsd"] < 1e-12 and m["shear_steps_ref_rsd"] < 1e-12
+    assert m["contacts_per_grain"] == pytest.approx(3.0) and m["us_per_contact_step"] == pytest.approx(5.0)
 
 
 def test_analysis_front_errors_shrink_as_one_over_sqrt_n():

@@ -82,16 +82,22 @@ def test_kernel_tangential_law_and_normal():
 
 # ------------------------------------------------------------ tiny triaxial runs
 KINDS = ("polyhedra", "polyhedra-yade", "spheres")
+# the tiny preset compacts frictionless (the dense preparation); its loose
+# twins compact at the shear friction 0.5, from the same seed
+VARIANTS = {"polyhedra": {}, "polyhedra-yade": {"contact_engine": "yade"}, "spheres": {},
+            "polyhedra-loose": {"compaction_friction": 0.5}, "spheres-loose": {"compaction_friction": 0.5}}
+
+
 @pytest.fixture(scope="session")
 def tiny_runs(tmp_path_factory, shape_library):
     """Both samples on the tiny preset, run side by side (2 cores); S1 with
-    the compiled kernel (the default) and with YADE's stock contacts."""
+    the compiled kernel (the default) and with YADE's stock contacts; both
+    also with the loose preparation."""
     base = tmp_path_factory.mktemp("tiny")
     procs = {}
-    for kind in KINDS:
+    for kind, extra in VARIANTS.items():
         out = base / kind
-        sample, engine = (kind.split("-") + ["kernel"])[:2]
-        generate(str(out), "tiny", sample, overrides={"contact_engine": engine, "kernel_threads": 1},
+        generate(str(out), "tiny", kind.split("-")[0], overrides={"kernel_threads": 1, **extra},
                  library=shape_library)
         log = open(out / "yade.log", "w")
         procs[kind] = (subprocess.Popen([YADE, "-n", "-x", "triaxial.py"], cwd=out, stdout=log,
@@ -148,12 +154,38 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
             assert np.all(ft[~walls] <= 0.5 * fn[~walls] * (1 + 1e-9) + 1e-12)   # Coulomb, mu = 0.5
             assert np.all(ft[walls] <= 1e-9 * fn[walls] + 1e-12)                 # frictionless walls
             # dense preparation: frictionless compaction (compaction_friction 0),
-            # mu = 0.5 from the start of shear, reached by sliding contacts
+            # mu = 0.5 from the start of shear, reached by sliding contacts in
+            # every shear snapshot
             ratio = ft[~walls] / fn[~walls]
+            assert r.parameters["friction"] == 0.5
             if s.stage == "isotropic":
                 assert r.parameters["compaction_friction"] == 0.0 and np.all(ratio <= 1e-12)
-            elif i == len(r) - 1:
+            else:
                 assert ratio.max() == pytest.approx(0.5, rel=1e-9)
+
+
+@pytest.mark.parametrize("sample", ("polyhedra", "spheres"))
+def test_dense_preparation_is_denser_than_the_loose_one(tiny_runs, sample):
+    """Same seed, same grains: compaction frictionless (dense, the tiny and
+    default presets' preparation) against compaction at mu = 0.5 (loose).
+    Friction during compaction lets contacts hold the grains apart, so the
+    loose isotropic state has the lower solid fraction; both shear at
+    mu = 0.5, the loose one with friction already mobilized at the isotropic
+    state (some contacts at the Coulomb limit)."""
+    phi = {}
+    for kind in (sample, sample + "-loose"):
+        with DumpReader(str(tiny_runs[kind] / "run.h5")) as r:
+            phi[kind] = r.parameters["solid_fraction_isotropic"]
+            assert r.parameters["friction"] == 0.5
+            assert r.parameters["compaction_friction"] == (0.5 if kind.endswith("loose") else 0.0)
+            iso = r.read(0)
+            assert iso.stage == "isotropic"
+            walls = np.isin(iso.id1, iso.wall_ids) | np.isin(iso.id2, iso.wall_ids)
+            fn = np.einsum("ij,ij->i", iso.force_normal, iso.normal)[~walls]
+            ft = np.linalg.norm(iso.force - iso.force_normal, axis=1)[~walls]
+            if kind.endswith("loose"):
+                assert (ft / fn).max() == pytest.approx(0.5, rel=1e-9)
+    assert phi[sample] > phi[sample + "-loose"], phi
 
 
 @pytest.mark.parametrize("kind", KINDS)

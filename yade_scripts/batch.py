@@ -120,7 +120,7 @@ def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
                 echo(f"[{tag}] {d}: {lines[-1][len('triaxial.py: '):].strip()}")
 
 
-def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None):
+def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_threads=1):
     """Run the unfinished lines of ``folder/table.txt`` with yade-batch; a
     line that crashed and left a checkpoint is run again (it resumes), up to
     MAX_RESUMES times.
@@ -128,7 +128,8 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None):
     Returns {description: exit status} for every line of the table (0 for
     lines already complete, None when yade-batch did not report a line).
     ``attempts`` (a dict), when given, receives {description: [exit status
-    of each attempt]} for the lines run.
+    of each attempt]} for the lines run. ``job_threads``: YADE threads
+    (``yade -jN``, the polyhedra kernel's OpenMP threads) of each job.
     """
     rows = read_table(folder)
     todo = [(k, r) for k, r in rows if not complete(dump_of(folder, r))]
@@ -143,7 +144,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None):
             clear_attempt(dump_of(folder, r))
     tries = {r["description"]: [] for _, r in todo}
     while todo:
-        got = _run_batch_lines(folder, todo, jobs, tag, echo)
+        got = _run_batch_lines(folder, todo, jobs, tag, echo, job_threads)
         for _, r in todo:
             tries[r["description"]].append(got[r["description"]])
         status.update(got)
@@ -158,14 +159,14 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None):
     return status
 
 
-def _run_batch_lines(folder, todo, jobs, tag, echo):
+def _run_batch_lines(folder, todo, jobs, tag, echo, job_threads=1):
     """One yade-batch over the table lines ``todo``; {description: status}."""
     exe = shutil.which("yade-batch")
     if exe is None:
         raise ConfigError("yade-batch is not installed (it comes with Debian's yade)")
     status = {r["description"]: None for _, r in todo}
     lines = ",".join(str(k) for k, _ in todo)
-    cmd = [exe, "-j", str(jobs), "--job-threads", "1", "-l", lines, "--plot-update", "0",
+    cmd = [exe, "-j", str(jobs), "--job-threads", str(job_threads), "-l", lines, "--plot-update", "0",
            "table.txt", "triaxial.py"]
     echo(f"[{tag}] yade-batch: {len(todo)} run(s), {jobs} at a time: "
          + ", ".join(r["description"] for _, r in todo))

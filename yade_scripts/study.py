@@ -136,9 +136,10 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, atte
     return codes
 
 
-def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES):
+def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None):
     """Seeds 1..n of each sample through yade-batch; returns
-    {sample: [(label, dump path, status)]} (status 0 = complete)."""
+    {sample: [(label, dump path, status)]} (status 0 = complete).
+    ``job_threads``: {sample: YADE threads per job} (default one each)."""
     from .batch import dump_of, read_table, run_batch
 
     result = {}
@@ -151,7 +152,8 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         else:                      # same parameters, maybe another n: rewrite the table only
             write_seed_table(folder, s, seeds)
         tries = {}
-        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True), attempts=tries)
+        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True), attempts=tries,
+                           job_threads=(job_threads or {}).get(s, 1))
         ATTEMPTS.update({(s, f"seed {r['seed']}"): tries[r["description"]] for _, r in read_table(folder)
                          if r["description"] in tries})
         result[s] = [(f"seed {r['seed']}", dump_of(folder, r), status[r["description"]])
@@ -324,6 +326,9 @@ def main(argv=None):
     ap.add_argument("--library")
     ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: via yade-batch)")
     ap.add_argument("--jobs", type=int, default=2, help="yade-batch jobs at a time (ensembles)")
+    ap.add_argument("--job-threads", type=int, default=1,
+                    help="YADE threads per polyhedra job of an ensemble (the kernel's OpenMP threads; "
+                         "sphere jobs use one): e.g. --jobs 8 --job-threads 2 on a 16-core node")
     args = ap.parse_args(argv)
     if args.collect:
         try:
@@ -348,7 +353,10 @@ def main(argv=None):
             ATTEMPTS.update({(s, "seed 1"): t for s, t in tries.items()})
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
-            runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs)
+            if args.jobs < 1 or args.job_threads < 1:
+                raise ConfigError(f"--jobs and --job-threads must be >= 1, got {args.jobs} and {args.job_threads}")
+            runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
+                                job_threads={"polyhedra": args.job_threads})
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
