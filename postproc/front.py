@@ -54,7 +54,7 @@ def _run_values(df, sample, reference):
     values (each the run's steady plateau or value at the peak)."""
     from .report import comparison_table
 
-    rows = comparison_table({sample: [df]}, reference)
+    rows = comparison_table({sample: [df.copy()]}, reference)     # copy: one consolidated block
     by_name = {name: est for name, smp, est, _ in rows if smp == sample}
     return {col: (float(by_name[name].mean) if by_name.get(name) is not None else np.nan)
             for col, name in COMPARISON.items()}
@@ -174,16 +174,20 @@ def point_table(runs, quantities=FRONT_QUANTITIES):
     return pd.DataFrame(rows)
 
 
-def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, alpha=1.0, beta=1.0):
     """Least-squares fit of one quantity over the runs of one sample at one
     size, with one offset per seed (the seeds are paired: the same seed at
     every point starts from the same grains and positions):
 
-        X(kappa, I, seed) = X0 + A kappa_d / kappa + B I / I_d + c_seed,  sum c = 0
+        X(kappa, I, seed) = X0 + A (kappa_d / kappa)^alpha + B (I / I_d)^beta + c_seed,
+        sum c = 0.
 
-    linear in 1/kappa (contact deflections scale as 1/kappa: Agnolin & Roux
-    2007, Roux & Combe) and in I (the quasistatic limit of mu(I) =
-    mu_0 + b I, GDR MiDi 2004, da Cruz et al. 2005). X0 is the rigid,
+    alpha = 1: effects of the contact deflection, delta/d ~ 1/kappa, on
+    stresses (linear contact law; Agnolin & Roux 2007); alpha = 1/2: the
+    jamming scaling of contact numbers, z - z_c ~ (delta/d)^(1/2) (O'Hern et
+    al. 2003). beta = 1: the quasistatic limit of mu(I) = mu_0 + b I (GDR
+    MiDi 2004, da Cruz et al. 2005); beta = 1/2 the empirical alternative
+    (:func:`fit_table` picks the form the data fit best). X0 is the rigid,
     quasistatic limit kappa -> inf, I -> 0; A and B are the stiffness and the
     rate effects at the default (kappa_d, I_d), so the default's bias is
     A + B. Returns a dict with X0, A, B, bias = A + B, their standard errors
@@ -193,8 +197,8 @@ def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
     """
     g = runs[np.isfinite(runs[q].to_numpy(float))]
     y = g[q].to_numpy(float)
-    x1 = kappa_d / g["kappa"].to_numpy(float)
-    x2 = g["inertial_number"].to_numpy(float) / inertial_d
+    x1 = (kappa_d / g["kappa"].to_numpy(float)) ** alpha
+    x2 = (g["inertial_number"].to_numpy(float) / inertial_d) ** beta
     seeds = sorted(g["seed"].unique()) if "seed" in g else [None]
     cols = [np.ones_like(y), x1, x2]
     sv = g["seed"].to_numpy() if "seed" in g else np.zeros(len(y))
@@ -202,7 +206,7 @@ def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
         cols.append((sv == s).astype(float) - (sv == seeds[0]).astype(float))
     X = np.column_stack(cols)
     n, k = X.shape
-    out = {"n": n, "dof": n - k}
+    out = {"n": n, "dof": n - k, "alpha": alpha, "beta": beta}
     names = ("X0", "A", "B")
     if n <= k or np.linalg.matrix_rank(X) < k:
         out.update({nm: np.nan for nm in names + ("bias", "resid_sd")})
@@ -257,9 +261,15 @@ def size_effect(runs, q, n_small, n_large, kappa_d=DEFAULT_KAPPA, inertial_d=DEF
     return float(e.mean), float((hi - lo) / 2)
 
 
-def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+FORMS = ((1.0, 1.0), (0.5, 1.0), (1.0, 0.5), (0.5, 0.5))
+
+
+def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, forms=FORMS):
     """Per sample (at its most common N and library) and quantity: the fit of
-    :func:`fit_rigid_quasistatic`, whether the kappa and I sweeps are
+    :func:`fit_rigid_quasistatic` in the form (alpha, beta) of ``forms`` with
+    the smallest residual (all forms have the same number of parameters),
+    the range of X0 over all forms (``X0_min``, ``X0_max``: how much the
+    extrapolation depends on the form), whether the kappa and I sweeps are
     monotone, the seed-to-seed standard deviation at the default point
     (``seed_sd``), the size effect (largest N minus the base N at the
     default) and the prediction error of the corner points (stiff and slow
@@ -276,17 +286,21 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial
         for q in quantities:
             if q not in g or not np.isfinite(g[q].to_numpy(float)).any():
                 continue
-            f = fit_rigid_quasistatic(g, q, kappa_d, inertial_d)
+            fits = [fit_rigid_quasistatic(g, q, kappa_d, inertial_d, a, b) for a, b in forms]
+            ok = [f for f in fits if np.isfinite(f["resid_sd"])]
+            f = min(ok, key=lambda f: f["resid_sd"]) if ok else fits[0]
             at = g[np.isclose(g["kappa"], kappa_d) & np.isclose(g["inertial_number"], inertial_d)][q]
             corner = g[~np.isclose(g["kappa"], kappa_d) & ~np.isclose(g["inertial_number"], inertial_d)]
             row = {"sample": s, "quantity": q, "n_particles": int(base_n), **f,
+                   "X0_min": min((x["X0"] for x in ok), default=np.nan),
+                   "X0_max": max((x["X0"] for x in ok), default=np.nan),
                    "monotone_kappa": monotone(pts, q, "kappa", inertial_d),
                    "monotone_I": monotone(pts, q, "inertial_number", kappa_d),
                    "default_mean": float(at.mean()) if len(at) else np.nan,
                    "seed_sd": float(at.std(ddof=1)) if at.notna().sum() > 1 else np.nan}
             if len(corner) and np.isfinite(f["X0"]):
-                pred = (f["X0"] + f["A"] * kappa_d / corner["kappa"].to_numpy(float)
-                        + f["B"] * corner["inertial_number"].to_numpy(float) / inertial_d)
+                pred = (f["X0"] + f["A"] * (kappa_d / corner["kappa"].to_numpy(float)) ** f["alpha"]
+                        + f["B"] * (corner["inertial_number"].to_numpy(float) / inertial_d) ** f["beta"])
                 c = corner[q].to_numpy(float)
                 # seed offsets cancel in the mean over the corner's seeds
                 row["corner_residual"] = float(np.nanmean(c - pred))

@@ -402,7 +402,8 @@ def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
     quantity: point means over seeds with their 95 % intervals against
     x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
     at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
-    (postproc.front.fit_rigid_quasistatic) and the extrapolated X0 at x = 0
+    (postproc.front.fit_rigid_quasistatic, in the form fit_table chose:
+    x^alpha and x^beta) and the extrapolated X0 at x = 0
     (star, with its interval); other points (the corner) as crosses."""
     plt = _plt()
     samples = list(dict.fromkeys(points["sample"]))
@@ -428,8 +429,8 @@ def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
             if len(f) and np.isfinite(f["X0"].iloc[0]):
                 f = f.iloc[0]
                 xs = np.linspace(0, 2.2, 20)
-                ax.plot(xs, f["X0"] + f["A"] * xs + f["B"], "C0-", lw=0.8)
-                ax.plot(xs, f["X0"] + f["A"] + f["B"] * xs, "C1-", lw=0.8)
+                ax.plot(xs, f["X0"] + f["A"] * xs ** f["alpha"] + f["B"], "C0-", lw=0.8)
+                ax.plot(xs, f["X0"] + f["A"] + f["B"] * xs ** f["beta"], "C1-", lw=0.8)
                 ax.errorbar([0], [f["X0"]], yerr=[f["ci_X0"]] if np.isfinite(f["ci_X0"]) else None,
                             fmt="*", color="k", ms=8, capsize=2, label="κ→∞, I→0")
             ax.set_title(f"{s}: {label}", fontsize=8)

@@ -26,16 +26,17 @@ def test_pareto_and_errors_on_a_known_table():
     assert add_errors(runs)["ref"].tolist() == [True, False, False]
 
 
-def synthetic_sweep(x0=0.40, A=0.03, B=0.05, noise=0.0, seeds=(1, 2, 3), rng=None):
+def synthetic_sweep(x0=0.40, A=0.03, B=0.05, noise=0.0, seeds=(1, 2, 3), rng=None, alpha=1.0, beta=1.0):
     """Runs of a kappa sweep at I = 2e-2, an I sweep at kappa = 300 and a
-    corner, obeying X = x0 + A 300/kappa + B I/2e-2 + c_seed (+ noise)."""
+    corner, obeying X = x0 + A (300/kappa)^alpha + B (I/2e-2)^beta + c_seed
+    (+ noise)."""
     pts = [(300, 2e-2), (100, 2e-2), (1000, 2e-2), (3000, 2e-2), (300, 4e-2), (300, 1e-2),
            (300, 5e-3), (1000, 1e-2)]
     offsets = {1: 0.02, 2: -0.01, 3: -0.01}
     rows = []
     for seed in seeds:
         for k, i in pts:
-            x = x0 + A * 300 / k + B * i / 2e-2 + offsets[seed]
+            x = x0 + A * (300 / k) ** alpha + B * (i / 2e-2) ** beta + offsets[seed]
             if noise:
                 x += noise * rng.standard_normal()
             rows.append({"sample": "polyhedra", "kappa": float(k), "inertial_number": i, "n_particles": 200,
@@ -58,6 +59,11 @@ def test_rigid_quasistatic_fit_recovers_an_exact_law():
     row = t.iloc[0]
     assert row["monotone_kappa"] == -1 and row["monotone_I"] == 1
     assert row["corner_residual"] == pytest.approx(0.0, abs=1e-12)
+    assert (row["alpha"], row["beta"]) == (1.0, 1.0)
+    # a law in kappa^-1/2 and I^1/2 (jamming-like): that form is chosen, exactly
+    t = fit_table(synthetic_sweep(alpha=0.5, beta=0.5), ("qp_plateau",)).iloc[0]
+    assert (t["alpha"], t["beta"]) == (0.5, 0.5) and t["X0"] == pytest.approx(0.40, abs=1e-12)
+    assert t["X0_min"] - 1e-12 <= 0.40 <= t["X0_max"] + 1e-12 and t["X0_max"] - t["X0_min"] > 0.01
 
 
 def test_rigid_quasistatic_fit_intervals_cover_the_truth():

@@ -78,10 +78,12 @@ def _grid(points, seeds, n_particles):
 # corner (stiff and slow) to test that the two effects add.
 KERNEL_POINTS = [(300, 2e-2), (100, 2e-2), (1000, 2e-2), (3000, 2e-2),
                  (300, 4e-2), (300, 1e-2), (300, 5e-3), (1000, 1e-2)]
+# The 4000-sphere point has one seed: its frictionless compaction wanders
+# (two seeds were stopped unconverged after 115 000 and 170 000 steps).
 PLANS["kernel"] = {
     "preset": "default", "common": {"final_strain": 0.3, "dump_strain": 0.01},
     "polyhedra": _grid(KERNEL_POINTS + [(300, 2e-2, 500)], (1, 2, 3), 200),
-    "spheres": _grid(KERNEL_POINTS + [(300, 2e-2, 4000)], (1, 2, 3), 1000),
+    "spheres": _grid(KERNEL_POINTS, (1, 2, 3), 1000) + _grid([(300, 2e-2, 4000)], (1,), 1000),
 }
 LOW_DETAIL = {"v_min": 8, "v_max": 12}
 
