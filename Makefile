@@ -11,6 +11,8 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 STUDY ?= runs/study
 PRESET ?= default
 ENSEMBLE ?= 3
+JOBS ?= 2
+JOB_THREADS ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
@@ -54,16 +56,19 @@ shapes: $(SHAPES_LIB)
 
 # The main job: S1 and S2 on the default preset, side by side (2 cores),
 # then the analysis of every dump and the report (STUDY/report/report.md).
-# ENSEMBLE=n runs n seeds per sample through yade-batch. Finished runs are
-# not run again.
+# ENSEMBLE=n runs n seeds per sample through yade-batch, JOBS at a time
+# (JOB_THREADS threads per polyhedra job). Finished runs are not run again.
+# One 16-core node: make study PRESET=intermediate ENSEMBLE=16 JOBS=16
 study: system venv kernel $(SHAPES_LIB)
-	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE)
+	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
+	    --jobs $(JOBS) --job-threads $(JOB_THREADS)
 
-# Speed against error (issue 7): a yade-batch sweep over kappa, I, N and shape
-# detail for S1 and S2 (FRONT_PLAN=quick, about 27 min on 2 cores), then the
-# analysis estimators on synthetic sets. Finished runs are not run again.
+# Speed against error (issue 14): a yade-batch sweep over kappa and I, 3 seeds
+# per point, S1 200 grains and S2 1000 spheres (FRONT_PLAN=kernel, about 2 h
+# on 2 cores; FRONT_PLAN=quick is the older 24-grain, one-seed sweep), then
+# the analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front
-FRONT_PLAN ?= quick
+FRONT_PLAN ?= kernel
 front: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
 	$(PY) benchmarks/front_analysis.py --out $(FRONT)-analysis

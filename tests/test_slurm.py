@@ -12,7 +12,7 @@ import pytest
 
 from yade_scripts.generate import main as generate_main
 from yade_scripts.presets import resolve
-from yade_scripts.slurm import REFERENCE_STEPS, estimate
+from yade_scripts.slurm import COMPACTION_STEPS, CONTACTS_PER_GRAIN, SHEAR_STEPS, US_PER_CONTACT_STEP, estimate
 from yade_scripts.study import main as study_main
 
 YADE = shutil.which("yade")
@@ -62,14 +62,22 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
 
 
 def test_cost_model_scaling():
+    """The paper preset from the measured constants, by hand: kappa 1e4 (time
+    step sqrt(1e4/300) shorter), I 1e-3 (20 x the shear steps), I_c 1e-2
+    (5 x the compaction steps)."""
     p = resolve("paper", "polyhedra")
     e = estimate(p)
-    steps = REFERENCE_STEPS["polyhedra"] * math.sqrt(1e4 / 300) * 2e-2 / 1e-3
-    assert e["steps"] == pytest.approx(steps, rel=1e-12)
-    assert e["contacts"] == pytest.approx(36933 * 3.0)
-    assert e["core_hours"] == pytest.approx(steps * 36933 * 3.0 * 6.0 * 2 / 3.6e9, rel=1e-12)
-    q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2x sqrt(kappa), 1/2 I: same steps
+    root = math.sqrt(1e4 / 300)
+    assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 5, rel=1e-12)
+    assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 20, rel=1e-12)
+    assert e["contacts"] == pytest.approx(36933 * CONTACTS_PER_GRAIN["polyhedra"])
+    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"]
+                                            / 3.6e9, rel=1e-12)
+    q = dict(p, kappa=4e4, inertial_number=2e-3, compaction_inertial_number=2e-2)  # 2 x sqrt(kappa), 1/2 I
     assert estimate(q)["steps"] == pytest.approx(e["steps"], rel=1e-12)
+    # the default preset: the reference steps themselves
+    d = estimate(resolve("default", "polyhedra"))
+    assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
 
 
 @pytest.mark.yade

@@ -1,18 +1,20 @@
 """Speed against error: a yade-batch sweep over stiffness, inertial number,
-particle count and shape detail, for S1 and S2.
+particle count (and, in the older ``quick`` plan, shape detail), for S1 and S2.
 
-    python -m yade_scripts.front --plan quick --out runs/front [--jobs 2]
+    python -m yade_scripts.front --plan kernel --out runs/front [--jobs 2]
 
 Each sample gets one run folder ``OUT/<sample>`` (one scene, one table):
-every table line overrides ``kappa``, ``inertial_number``, ``n_particles``
-and ``library`` (the shape detail: ``shapes.h5`` is the standard library,
-8-37 vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices,
-mean 10, from the same generator). Complete dumps are not run again. Each
-dump is analysed (``postproc analyze``) and the front is written by
-:func:`postproc.front.write_front` into ``OUT/front.csv`` and
-``OUT/front.png``: wall time, contact-steps and the error of the q/p
-plateau, a, a_n and a_t against the sweep's reference run, the stiffest
-and slowest one (largest kappa, smallest I, largest N, standard shapes).
+every table line overrides ``kappa``, ``inertial_number``, ``n_particles``,
+``seed`` (``kernel`` plan: 3 seeds per point, seed-major, the same seed at
+every point) and ``library`` (``shapes.h5`` is the standard library, 8-37
+vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices, mean
+10, from the same generator). Complete dumps are not run again. Each dump
+is analysed (``postproc analyze``) and :func:`postproc.front.write_front`
+writes ``OUT/front.csv`` (one row per run: cost and every quantity of the
+study's comparison table), ``front-points.csv`` (means and 95 % intervals
+over seeds), ``front-fit.csv`` (the extrapolation to kappa -> inf, I -> 0
+and the default's bias per quantity), ``front-cost.csv`` (the cost model),
+``front.png`` and ``front-trends.png``.
 """
 from __future__ import annotations
 
@@ -171,7 +173,7 @@ def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra"))
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.front", description=__doc__.splitlines()[0])
-    ap.add_argument("--plan", default="quick", help=f"one of {sorted(PLANS)}")
+    ap.add_argument("--plan", default="kernel", help=f"one of {sorted(PLANS)}")
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--library")

@@ -15,8 +15,8 @@ then analyses whatever has finished.
 
 Run a task by hand (no SLURM): ``SLURM_ARRAY_TASK_ID=2 bash slurm.sh``.
 
-Cost model: core-hours = steps x contacts x (cost per contact-step) x
-cores / 3600e6, see :func:`estimate`.
+Cost model: core-hours = steps x contacts x (µs per contact-step on one
+core) / 3.6e9, see :func:`estimate`.
 """
 from __future__ import annotations
 
@@ -24,37 +24,54 @@ import math
 import os
 import shlex
 
-#: measured cost of a contact-step (README cost table: 1000 and 3000 grains,
-#: kernel on 2 threads: 6.0 and 5.7 us of wall time); so about 12 core-us
-US_PER_CONTACT_STEP = {"polyhedra": 6.0, "spheres": 0.8}
-#: cores behind those figures
-MEASURED_CORES = {"polyhedra": 2, "spheres": 1}
-#: touching contacts per grain (3000-grain S1 run: about 9 100 contacts)
-CONTACTS_PER_GRAIN = {"polyhedra": 3.0, "spheres": 2.5}
-#: reference runs of the default preset (kappa = 300, I = 2e-2, eps_1 to 0.3;
-#: README cost table): 3000-grain S1, 81 519 steps; 1000-sphere S2, 6 478
-REFERENCE_STEPS = {"polyhedra": 81_519, "spheres": 6_478}
-REFERENCE = {"kappa": 300.0, "inertial_number": 2e-2, "final_strain": 0.3}
+#: Cost model, measured by the kernel front (``make front``, plan ``kernel``,
+#: 2026-11-23; ``front-cost.csv``; README "Paper scale"): medians over the
+#: front's runs, each on one core (two jobs side by side on 2 cores).
+#: Steps at the default (kappa = 300, I = 2e-2, compaction I_c = 5e-2, eps_1 to
+#: 0.3): compaction to the isotropic state and shear, scaled from every run
+#: by sqrt(300/kappa) and I/2e-2 (relative spread over the runs about 9 %
+#: for polyhedra; the spheres' frictionless compaction spreads by 43 %).
+COMPACTION_STEPS = {"polyhedra": 40_550, "spheres": 15_100}
+SHEAR_STEPS = {"polyhedra": 29_810, "spheres": 3_077}
+#: wall time per touching contact-step on one core (µs): the kernel's whole
+#: step (C, poses, forces, Newton, controller) over its touching contacts;
+#: YADE's own sphere loop for S2
+US_PER_CONTACT_STEP = {"polyhedra": 6.7, "spheres": 0.39}
+#: touching contacts per grain in a large sample: z / 2 of the 1000-grain
+#: default study (z = 5.56 and 3.96, a face-face pair counting once;
+#: the front's 200-grain samples have 1.8, their walls take a larger share)
+CONTACTS_PER_GRAIN = {"polyhedra": 2.8, "spheres": 2.0}
+REFERENCE = {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
+             "final_strain": 0.3}
 
 
 def estimate(params):
-    """Cost of one run from its parameters: dict with steps, contacts,
-    contact_steps, core_hours (upper bound: all steps counted as shear).
+    """Cost of one run on one core from its parameters: dict with
+    compaction_steps, shear_steps, steps, contacts, contact_steps,
+    core_hours.
 
-    steps = reference steps of the sample x sqrt(kappa / 300) (the time step
-    goes as kappa^-1/2) x (2e-2 / I) (the shear rate goes as I) x
-    (final_strain / 0.3);
-    contacts = grains x contacts per grain; core-hours = steps x contacts x
-    us per contact-step x cores of the measurement / 3.6e9. Steps do not
-    depend on the number of grains (rate and time step are per grain)."""
+    compaction steps = COMPACTION_STEPS x sqrt(kappa / 300) (the time step goes
+    as kappa^-1/2) x (5e-2 / I_c) (the compaction's wall speed goes as its
+    inertial number: assumed, not swept); shear steps = SHEAR_STEPS x
+    sqrt(kappa / 300) x (2e-2 / I) (the shear rate goes as I) x
+    (final_strain / 0.3); contacts = grains x CONTACTS_PER_GRAIN;
+    core-hours = steps x contacts x US_PER_CONTACT_STEP / 3.6e9. Steps do not
+    depend on the number of grains (rate and time step are per grain), except
+    that large frictionless sphere packings take longer to settle (the front's
+    4000-sphere compactions: 65 400 steps and two not settled after 115 000).
+    The kernel's speed-up on more threads is not in the model (2 threads
+    gave 1.6-2.4 x on 1000 grains, README cost table)."""
     s = params["sample"]
-    steps = (REFERENCE_STEPS[s] * math.sqrt(params["kappa"] / REFERENCE["kappa"])
-             * REFERENCE["inertial_number"] / params["inertial_number"]
+    root = math.sqrt(params["kappa"] / REFERENCE["kappa"])
+    comp = (COMPACTION_STEPS[s] * root * REFERENCE["compaction_inertial_number"]
+            / params["compaction_inertial_number"])
+    shear = (SHEAR_STEPS[s] * root * REFERENCE["inertial_number"] / params["inertial_number"]
              * params["final_strain"] / REFERENCE["final_strain"])
+    steps = comp + shear
     contacts = params["n_particles"] * CONTACTS_PER_GRAIN[s]
     cs = steps * contacts
-    return {"steps": steps, "contacts": contacts, "contact_steps": cs,
-            "core_hours": cs * US_PER_CONTACT_STEP[s] * MEASURED_CORES[s] / 3.6e9}
+    return {"compaction_steps": comp, "shear_steps": shear, "steps": steps, "contacts": contacts,
+            "contact_steps": cs, "core_hours": cs * US_PER_CONTACT_STEP[s] / 3.6e9}
 
 
 def write_slurm(folder, params, rows, cpus=2, time="24:00:00", partition=None, name=None):
@@ -84,7 +101,7 @@ def write_slurm(folder, params, rows, cpus=2, time="24:00:00", partition=None, n
 # Cost model (yade_scripts/slurm.py, README): steps x contacts x us per contact-step
 #   {params['sample']}, {params['n_particles']} grains, kappa={params['kappa']:g}, I={params['inertial_number']:g}:
 #   ~{est['steps']:.3g} steps x ~{est['contacts']:.3g} contacts x {US_PER_CONTACT_STEP[params['sample']]} us
-#   (measured on {MEASURED_CORES[params['sample']]} cores) = ~{est['core_hours']:.3g} core-hours per line
+#   (one core) = ~{est['core_hours']:.3g} core-hours per line
 set -euo pipefail
 HERE="${{RUN_DIR:-${{SLURM_SUBMIT_DIR:-$(cd "$(dirname "$0")" && pwd)}}}}"
 LINES=({' '.join(lines)})
