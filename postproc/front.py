@@ -356,12 +356,47 @@ def cost_model(runs, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, strain=0.3):
     return pd.DataFrame(rows)
 
 
+def _f(x, d=3):
+    return f"{x:.{d}f}" if np.isfinite(x) else "n/a"
+
+
+def front_markdown(fits, cost):
+    """The front as markdown: per sample, the extrapolated limit X0 (95 %
+    interval, and its range over the fit forms), the default's bias A + B
+    with its interval, the stiffness and rate parts, the form, whether
+    both sweeps are monotone, the corner's residual and the seed-to-seed
+    sd at the default point; then the cost model."""
+    out = []
+    for s, g in fits.groupby("sample"):
+        out += [f"### {s} ({int(g['n_particles'].iloc[0])} particles)", "",
+                "| quantity | default (mean) | κ→∞, I→0 | range over forms | bias of the default | "
+                "κ part A | I part B | form (α, β) | monotone κ / I | corner residual | seed sd |",
+                "|---|---|---|---|---|---|---|---|---|---|---|"]
+        for _, r in g.iterrows():
+            mono = "/".join({1: "↑", -1: "↓", 0: "no"}[int(m)] for m in (r["monotone_kappa"], r["monotone_I"]))
+            out.append(f"| {r['quantity']} | {_f(r['default_mean'])} | {_f(r['X0'])} ± {_f(r['ci_X0'])} | "
+                       f"{_f(r['X0_min'])}–{_f(r['X0_max'])} | {_f(r['bias'])} ± {_f(r['ci_bias'])} | "
+                       f"{_f(r['A'])} ± {_f(r['ci_A'])} | {_f(r['B'])} ± {_f(r['ci_B'])} | "
+                       f"({r['alpha']:g}, {r['beta']:g}) | {mono} | {_f(r['corner_residual'])} | "
+                       f"{_f(r['seed_sd'])} |")
+        out.append("")
+    out += ["### cost", "", "| sample | N | runs | compaction steps | shear steps to ε1 = 0.3 | "
+            "contacts per grain | µs per contact-step | µs per grain-step |", "|---|---|---|---|---|---|---|---|"]
+    for _, r in cost.iterrows():
+        out.append(f"| {r['sample']} | {int(r['n_particles'])} | {int(r['runs'])} | "
+                   f"{r['compaction_steps_ref']:.0f} (± {100 * r['compaction_steps_ref_rsd']:.0f} %) | "
+                   f"{r['shear_steps_ref']:.0f} (± {100 * r['shear_steps_ref_rsd']:.0f} %) | "
+                   f"{r['contacts_per_grain']:.2f} | {r['us_per_contact_step']:.2f} | {r['us_per_grain_step']:.2f} |")
+    return "\n".join(out) + "\n"
+
+
 def write_front(folder):
     """Write into the sweep folder: ``front.csv`` (one row per run),
     ``front-points.csv`` (means over seeds per point), ``front-fit.csv``
     (the extrapolation and the default's bias per quantity),
-    ``front-cost.csv`` (the cost model) and ``front.png``,
-    ``front-trends.png``. Returns the run table."""
+    ``front-cost.csv`` (the cost model), ``front.md`` (the fit and the cost
+    as markdown tables), ``front.png`` and ``front-trends.png``. Returns the
+    run table."""
     from .errors import InputError
     from .plots import plot_front, plot_front_trends
 
@@ -377,7 +412,10 @@ def write_front(folder):
     points.to_csv(os.path.join(folder, "front-points.csv"), index=False)
     fits = fit_table(runs)
     fits.to_csv(os.path.join(folder, "front-fit.csv"), index=False)
-    cost_model(runs).to_csv(os.path.join(folder, "front-cost.csv"), index=False)
+    cost = cost_model(runs)
+    cost.to_csv(os.path.join(folder, "front-cost.csv"), index=False)
+    with open(os.path.join(folder, "front.md"), "w") as fh:
+        fh.write(front_markdown(fits, cost))
     plot_front(runs, os.path.join(folder, "front.png"))
     plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"))
     return runs

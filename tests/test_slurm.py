@@ -102,3 +102,25 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
     assert [m["label"] for m in manifest["spheres"]] == ["seed 1", "seed 2"]
     assert all(m["status"] == "ok" for m in manifest["spheres"])
     assert (out / "report" / "report.md").exists()
+
+
+def test_intermediate_preset_fills_a_16_core_node(tmp_path):
+    """The 5000-grain preset: its parameters, a 16-line yade-batch table, and
+    its cost from the model (about 13 core-hours per S1 seed, so 16 seeds,
+    one per core, in about 13 hours on one node)."""
+    p = resolve("intermediate", "polyhedra")
+    assert (p["n_particles"], p["kappa"], p["inertial_number"]) == (5000, 3000.0, 5e-3)
+    assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5
+    assert resolve("intermediate", "spheres")["n_particles"] == 1000
+    e = estimate(p)
+    root = math.sqrt(3000 / 300)
+    steps = COMPACTION_STEPS["polyhedra"] * root + SHEAR_STEPS["polyhedra"] * root * 4
+    assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
+                                            * US_PER_CONTACT_STEP["polyhedra"] / 3.6e9, rel=1e-12)
+    out = tmp_path / "node"
+    assert generate_main(["--preset", "intermediate", "--sample", "spheres", "--out", str(out),
+                          "--seeds", *map(str, range(1, 17))]) == 0
+    lines = (out / "table.txt").read_text().splitlines()
+    assert len(lines) == 17 and lines[16].split()[1] == "16"
+    assert study_main(["--preset", "intermediate", "--out", str(tmp_path / "s"), "--ensemble", "16",
+                       "--jobs", "16", "--job-threads", "0"]) == 2

@@ -9,6 +9,13 @@
              0.5 for polyhedra, 0 for spheres); friction 0.5 for both in shear.
 ``loose``    the default with both samples compacted at friction 0.5.
 ``dense``    the default with both samples compacted frictionless.
+``intermediate``  5000 polyhedra at kappa = 3000, I = 5e-3 (stiffer and
+             slower than the default: the kernel front puts the default's
+             stiffness bias on z and the contact types), 1000 spheres (the
+             same box: a sphere of size d has 5.2 x the volume of our
+             polyhedra); one 16-core node through yade-batch, e.g.
+             ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``: about
+             13 core-hours per S1 seed (yade_scripts.slurm.estimate).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
              cluster through yade-batch; not run here.
 
@@ -41,6 +48,12 @@ PRESETS = {
         # polyhedra compacted with mu = 0.5 (0.587 at 1000 grains, 0.602 at
         # 3000; frictionless gives 0.71), spheres frictionless (0.61)
         "polyhedra": {"n_particles": 1000, "compaction_friction": 0.5},
+        "spheres": {"n_particles": 1000, "compaction_friction": 0.0},
+    },
+    "intermediate": {
+        "common": {"kappa": 3000.0, "inertial_number": 5e-3, "compaction_inertial_number": 5e-2,
+                   "dump_strain": 0.01, "final_strain": 0.3, "unbalanced_tolerance": 0.02},
+        "polyhedra": {"n_particles": 5000, "compaction_friction": 0.5},
         "spheres": {"n_particles": 1000, "compaction_friction": 0.0},
     },
     "paper": {
