@@ -139,3 +139,14 @@ def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library):
     ref = table[table["ref"]]
     assert len(ref) == 2 and (ref["err_max"] == 0).all()
     assert set(table.loc[table["sample"] == "polyhedra", "library"]) == {"shapes.h5", "shapes-low.h5"}
+    # every comparison quantity per run, and the seed/fit/cost tables (two
+    # points per sample leave the fit no degrees of freedom: nans, not numbers)
+    assert np.isfinite(table[["qp_plateau", "qp_peak", "z", "phi_iso", "frac_below_mean"]].to_numpy(float)).all()
+    points = pd.read_csv(out / "front-points.csv")
+    assert len(points) == 4 and (points["n_seeds"] == 1).all()
+    fits = pd.read_csv(out / "front-fit.csv")
+    assert fits["X0"].isna().all() and set(fits["sample"]) == {"polyhedra", "spheres"}
+    cost = pd.read_csv(out / "front-cost.csv")
+    assert (cost["us_per_contact_step"] > 0).all() and (cost["contacts_per_grain"] > 0).all()
+    assert "### cost" in (out / "front.md").read_text()
+    assert (out / "front-trends.png").stat().st_size > 1000
