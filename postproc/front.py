@@ -37,10 +37,13 @@ QUANTITIES = ("q_over_p", "a", "a_n", "a_t")
 COMPARISON = {
     "qp_plateau": "q/p plateau", "qp_peak": "q/p peak",
     "psi_peak_deg": "dilatancy angle at the peak (deg)",
+    "a_al": "a + a_l", "an_at": "a_n + a_t",
     "a": "a", "a_l": "a_l", "a_n": "a_n", "a_t": "a_t", "sff": "(2/5)(a+a_l+a_n+a_t)",
     "z": "z (a pair counts once)", "frac_below_mean": "fraction of forces below the mean",
     "ct_simple": "proportion of simple contacts", "ct_double": "proportion of double contacts",
     "ct_triple": "proportion of triple contacts",
+    "fr_simple": "mean f_n of simple contacts / mean", "fr_double": "mean f_n of double contacts / mean",
+    "fr_triple": "mean f_n of triple contacts / mean",
 }
 FRONT_QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
 # The default's stiffness and inertial number: the fit's units (kappa_d / kappa

@@ -394,7 +394,8 @@ def plot_front(runs, path):
 
 
 TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_peak_deg", "dilatancy angle at peak (deg)"),
-                ("a", "a"), ("a_n", "a_n"), ("a_t", "a_t"), ("z", "z"), ("phi_iso", "solid fraction (isotropic)"))
+                ("a", "a"), ("a_n", "a_n"), ("a_t", "a_t"), ("z", "z"), ("phi_iso", "solid fraction (isotropic)"),
+                ("ct_simple", "simple contacts (fraction)"))
 
 
 def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
@@ -425,10 +426,13 @@ def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
                 if sel.any():
                     ax.errorbar(x[sel], g.loc[sel, q], yerr=g.loc[sel, q + "_ci"].fillna(0), fmt=m,
                                 ms=4, capsize=2, label=lab)
+            if not np.isfinite(g[q].to_numpy(float)).any():     # e.g. contact types of spheres
+                ax.set_axis_off()
+                continue
             f = fits[(fits["sample"] == s) & (fits["quantity"] == q)]
             if len(f) and np.isfinite(f["X0"].iloc[0]):
                 f = f.iloc[0]
-                xs = np.linspace(0, 2.2, 20)
+                xs = np.linspace(0, 3.1, 32)
                 ax.plot(xs, f["X0"] + f["A"] * xs ** f["alpha"] + f["B"], "C0-", lw=0.8)
                 ax.plot(xs, f["X0"] + f["A"] + f["B"] * xs ** f["beta"], "C1-", lw=0.8)
                 ax.errorbar([0], [f["X0"]], yerr=[f["ci_X0"]] if np.isfinite(f["ci_X0"]) else None,
