@@ -106,8 +106,8 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
 
 def test_intermediate_preset_fills_a_16_core_node(tmp_path):
     """The 5000-grain preset: its parameters, a 16-line yade-batch table, and
-    its cost from the model (about 13 core-hours per S1 seed, so 16 seeds,
-    one per core, in about 13 hours on one node)."""
+    its cost from the model (about 14 core-hours per S1 seed, so 16 seeds,
+    one per core, in about 14 hours on one node)."""
     p = resolve("intermediate", "polyhedra")
     assert (p["n_particles"], p["kappa"], p["inertial_number"]) == (5000, 3000.0, 5e-3)
     assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5

@@ -15,7 +15,7 @@
              same box: a sphere of size d has 5.2 x the volume of our
              polyhedra); one 16-core node through yade-batch, e.g.
              ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``: about
-             13 core-hours per S1 seed (yade_scripts.slurm.estimate).
+             14 core-hours per S1 seed (yade_scripts.slurm.estimate).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
              cluster through yade-batch; not run here.
 
