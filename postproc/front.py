@@ -27,7 +27,7 @@ import time
 
 import numpy as np
 
-from .statistics import plateau_estimate, steady_indices
+from .statistics import Estimate, plateau_estimate, steady_indices
 
 QUANTITIES = ("q_over_p", "a", "a_n", "a_t")
 
@@ -148,12 +148,6 @@ def pareto(cost, error):
 POINT = ["sample", "kappa", "inertial_number", "n_particles", "library"]
 
 
-def _t(dof, level=0.95):
-    from scipy.stats import t
-
-    return float(t.ppf(0.5 + level / 2, dof)) if dof >= 1 else np.nan
-
-
 def point_table(runs, quantities=FRONT_QUANTITIES):
     """One row per point (sample, kappa, I, N, library): ``n_seeds``, the
     mean over seeds of each quantity ``<q>`` with the 95 % Student's-t
@@ -167,10 +161,9 @@ def point_table(runs, quantities=FRONT_QUANTITIES):
         row["n_seeds"] = int(g["seed"].nunique()) if "seed" in g else len(g)
         for q in quantities:
             v = g[q].to_numpy(float) if q in g else np.array([])
-            v = v[np.isfinite(v)]
-            row[q] = float(v.mean()) if len(v) else np.nan
-            row[q + "_ci"] = (_t(len(v) - 1) * float(v.std(ddof=1)) / np.sqrt(len(v))
-                              if len(v) > 1 else np.nan)
+            e = plateau_estimate([[x] for x in v])       # one value per seed: t over seeds
+            lo, hi = e.ci()
+            row[q], row[q + "_ci"] = e.mean, (hi - lo) / 2
         for c in ("wall_seconds", "steps", "compaction_steps", "shear_steps"):
             row[c] = float(np.nanmedian(g[c].to_numpy(float))) if c in g and g[c].notna().any() else np.nan
         rows.append(row)
@@ -215,18 +208,16 @@ def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, 
         out.update({nm: np.nan for nm in names + ("bias", "resid_sd")})
         out.update({f"{p}_{nm}": np.nan for p in ("se", "ci") for nm in names + ("bias",)})
         return out
-    beta, *_ = np.linalg.lstsq(X, y, rcond=None)
-    resid = y - X @ beta
+    coef, *_ = np.linalg.lstsq(X, y, rcond=None)
+    resid = y - X @ coef
     s2 = float(resid @ resid) / (n - k)
     cov = s2 * np.linalg.inv(X.T @ X)
-    t = _t(n - k)
-    for j, nm in enumerate(names):
-        out[nm] = float(beta[j])
-        out["se_" + nm] = float(np.sqrt(cov[j, j]))
-        out["ci_" + nm] = t * out["se_" + nm]
-    out["bias"] = float(beta[1] + beta[2])
-    out["se_bias"] = float(np.sqrt(cov[1, 1] + cov[2, 2] + 2 * cov[1, 2]))
-    out["ci_bias"] = t * out["se_bias"]
+    # the bias A + B as the combination (0, 1, 1, 0...) of the coefficients
+    combos = {"X0": [0], "A": [1], "B": [2], "bias": [1, 2]}
+    for nm, idx in combos.items():
+        e = Estimate(float(coef[idx].sum()), float(np.sqrt(cov[np.ix_(idx, idx)].sum())), n - k, n, "fit")
+        lo, hi = e.ci()
+        out[nm], out["se_" + nm], out["ci_" + nm] = e.mean, e.se, (hi - lo) / 2
     out["resid_sd"] = float(np.sqrt(s2))
     return out
 
@@ -420,7 +411,7 @@ def write_front(folder):
     with open(os.path.join(folder, "front.md"), "w") as fh:
         fh.write(front_markdown(fits, cost))
     plot_front(runs, os.path.join(folder, "front.png"))
-    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"))
+    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), DEFAULT_KAPPA, DEFAULT_I)
     return runs
 
 

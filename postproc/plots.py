@@ -398,9 +398,11 @@ TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_pe
                 ("ct_simple", "simple contacts (fraction)"))
 
 
-def plot_front_trends(points, fits, path, kappa_d=300.0, inertial_d=2e-2):
+def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     """The kappa and I trends of the front, one row per sample, one panel per
-    quantity: point means over seeds with their 95 % intervals against
+    quantity (kappa_d, inertial_d: the default point, the fit's units;
+    postproc.front.DEFAULT_KAPPA, DEFAULT_I): point means over seeds with
+    their 95 % intervals against
     x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
     at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
     (postproc.front.fit_rigid_quasistatic, in the form fit_table chose:
