@@ -29,7 +29,10 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "polycontact.c")
-CFLAGS = ["-O3", "-fopenmp", "-fPIC", "-shared", "-std=gnu99", "-fno-math-errno"]
+# -ffp-contract=off: no fused multiply-adds, so that two code paths that
+# compute the same expression (the culled clipping and the plain one) give
+# the same bits on every x86-64 or ARM machine
+CFLAGS = ["-O3", "-fopenmp", "-fPIC", "-shared", "-std=gnu99", "-fno-math-errno", "-ffp-contract=off"]
 _LIB = None
 
 
@@ -105,10 +108,18 @@ def load():
     lib.pc_engine_get_friction.restype = None
     lib.pc_engine_npairs.argtypes = [ctypes.c_void_p]
     lib.pc_engine_npairs.restype = ctypes.c_int
-    lib.pc_engine_get_state.argtypes = [ctypes.c_void_p, _D, _D, _D, _I, _D, _D, _D, _I, _D]
+    lib.pc_engine_get_state.argtypes = [ctypes.c_void_p, _D, _D, _D, _D, _I, _D, _D, _D, _I, _D]
     lib.pc_engine_get_state.restype = None
-    lib.pc_engine_set_state.argtypes = [ctypes.c_void_p, _D, _D, _D, ctypes.c_int, _I, _D, _D, _D, _I, _D]
+    lib.pc_engine_set_state.argtypes = [ctypes.c_void_p, _D, _D, _D, _D, ctypes.c_int, _I, _D, _D, _D, _I, _D]
     lib.pc_engine_set_state.restype = ctypes.c_int
+    lib.pc_engine_set_mode.argtypes = [ctypes.c_void_p, ctypes.c_int]
+    lib.pc_engine_set_mode.restype = None
+    lib.pc_engine_set_workspace_points.argtypes = [ctypes.c_void_p, ctypes.c_int]
+    lib.pc_engine_set_workspace_points.restype = ctypes.c_int
+    lib.pc_engine_layout.argtypes = [_I]
+    lib.pc_engine_layout.restype = None
+    lib.pc_engine_stat_name.argtypes = [ctypes.c_int]
+    lib.pc_engine_stat_name.restype = ctypes.c_char_p
     _LIB = lib
     return lib
 

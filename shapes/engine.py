@@ -8,8 +8,16 @@ steps inside the C engine (``polycontact.c``):
 * a Verlet neighbour list on bounding spheres (cell grid), rebuilt only when
   a body has moved more than ``skin / 2`` since the last build; the pairs'
   histories are carried over a rebuild;
-* per pair: bounding spheres, then the separating axis cached from the last
-  step, then the exact overlap (:mod:`shapes.overlap`);
+* per pair, the cheapest exact proof that it does not touch: bounding
+  spheres; a separating axis kept from an earlier step whose gap exceeds how
+  far the two bodies' vertices can have moved since (a bound summed step by
+  step from their displacements and rotations); the same axis re-measured
+  with support functions; a separating-axis search (Gilbert's iteration on
+  the Minkowski difference, checked over every vertex). Only pairs without a
+  proof are clipped (:mod:`shapes.overlap`), and a pair that touched at the
+  last step clips only the triangles and planes that can meet the overlap.
+  ``fast=False`` keeps the plain path (face tests and full clipping for every
+  pair) to check against: the two give the same contacts and forces;
 * YADE's volumetric normal law F_n = k_V V n on B at the overlap centroid,
   and the incremental Coulomb tangential law: the history is projected on the
   new tangent plane (norm kept) and turned by the pair's mean spin about n,
@@ -36,7 +44,21 @@ except ImportError:          # copied into a run folder's lib/ (no package)
 
 
 class EngineError(RuntimeError):
-    """The engine refused a step (non-finite positions, out of memory)."""
+    """The engine refused a step (non-finite positions, out of memory, a
+    contact that overflowed the clipping workspace)."""
+
+
+def layout():
+    """The C side's record sizes: a dict with ``pair_doubles`` (a pair's
+    record in the engine state), ``wall_doubles`` (a wall contact's
+    results), ``stat_names`` (the step counters, in order), ``scalars``
+    (state scalars) and ``max_walls``."""
+    lib = ckernel.load()
+    out = np.zeros(5, np.int32)
+    lib.pc_engine_layout(ckernel.iptr(out))
+    names = tuple(lib.pc_engine_stat_name(k).decode() for k in range(int(out[2])))
+    return {"pair_doubles": int(out[0]), "wall_doubles": int(out[1]), "stat_names": names,
+            "scalars": int(out[3]), "max_walls": int(out[4])}
 
 
 WALL_AXIS = (0, 0, 1, 1, 2, 2)
@@ -52,13 +74,25 @@ class ContactEngine:
     kt_coef : N/m^3 (k_t = kt_coef d_pair^2). mu, mu_wall : friction
     coefficients. skin : m, Verlet margin. walls : with the six box walls.
     threads : OpenMP threads (0: all; a step with fewer than 400 pair and
-    wall tests runs on one thread).
+    wall tests runs on one thread). fast : proofs of separation, culled
+    clipping and shadows computed when contacts are asked for (the default);
+    False: the plain path, to check against.
     """
 
     def __init__(self, vertices, triangles, shape_index, sizes, k_v, kt_coef, mu, mu_wall, skin,
-                 walls=True, threads=0):
+                 walls=True, threads=0, fast=True):
         if len(vertices) != len(triangles) or not len(vertices):
             raise ValueError("one triangle array per vertex array, at least one shape")
+        for s, (v, t) in enumerate(zip(vertices, triangles)):
+            v, t = np.asarray(v), np.asarray(t)
+            if v.ndim != 2 or v.shape[1] != 3 or len(v) < 4 or not np.all(np.isfinite(v)):
+                raise ValueError(f"shape {s}: vertices must be a finite (V >= 4, 3) array, got shape {v.shape}")
+            if t.ndim != 2 or t.shape[1] != 3 or len(t) < 4 or not np.issubdtype(t.dtype, np.integer):
+                raise ValueError(f"shape {s}: triangles must be an integer (T >= 4, 3) array, got {t.dtype} {t.shape}")
+            if t.min() < 0 or t.max() >= len(v):
+                raise ValueError(f"shape {s}: triangle index {int(t.max() if t.max() >= len(v) else t.min())} "
+                                 f"outside its {len(v)} vertices")
+        self.layout = layout()
         self.n = len(shape_index)
         self.voff = ckernel.i32(np.concatenate([[0], np.cumsum([len(v) for v in vertices])]))
         self.toff = ckernel.i32(np.concatenate([[0], np.cumsum([len(t) for t in triangles])]))
@@ -82,11 +116,14 @@ class ContactEngine:
             float(mu_wall), float(skin), self.threads)
         if not self.handle:
             raise EngineError("could not create the contact engine (out of memory?)")
+        self.lib.pc_engine_set_mode(self.handle, int(bool(fast)))
+        self.fast = bool(fast)
         self.force = np.zeros((self.n, 3))
         self.torque = np.zeros((self.n, 3))
         self.wall_force = np.zeros((max(self.nw, 1), 3))
-        self.stat = np.zeros(8)
-        self._zero_walls = np.zeros(6)
+        self.stat = np.zeros(len(self.layout["stat_names"]))
+        self._stat_index = {k: i for i, k in enumerate(self.layout["stat_names"])}
+        self._no_walls = np.zeros(1)
 
     def close(self):
         if getattr(self, "handle", None):
@@ -98,47 +135,80 @@ class ContactEngine:
     def step(self, positions, quaternions, wall_positions=None):
         """One step. positions (N, 3) m; quaternions (N, 4) (w, x, y, z),
         local -> global; wall_positions (6,) m, the coordinate of each wall
-        plane along its axis (x-, x+, y-, y+, z-, z+). Returns (force (N, 3)
-        N, torque (N, 3) N m, wall_force (6, 3) N on each wall); the arrays
-        are the engine's own, overwritten by the next step."""
+        plane along its axis (x-, x+, y-, y+, z-, z+), finite, each low wall
+        below its high wall (required with walls, ignored without). Returns
+        (force (N, 3) N, torque (N, 3) N m, wall_force (6, 3) N on each
+        wall); the arrays are the engine's own, overwritten by the next
+        step."""
         pos = ckernel.f64(positions)
         quat = ckernel.f64(quaternions)
         if pos.shape != (self.n, 3) or quat.shape != (self.n, 4):
             raise ValueError(f"positions must be ({self.n}, 3) and quaternions ({self.n}, 4)")
-        wp = ckernel.f64(self._zero_walls if wall_positions is None else wall_positions)
+        if self.nw:
+            if wall_positions is None:
+                raise ValueError("this engine has six walls: give their positions (x-, x+, y-, y+, z-, z+)")
+            wp = ckernel.f64(wall_positions)
+            if wp.shape != (6,) or not np.all(np.isfinite(wp)):
+                raise ValueError(f"wall positions must be 6 finite numbers (x-, x+, y-, y+, z-, z+), got {wp!r}")
+            if np.any(wp[0::2] >= wp[1::2]):
+                raise ValueError(f"wall positions: each low wall must lie below its high wall, got {wp.tolist()}")
+        else:
+            wp = self._no_walls
         err = self.lib.pc_engine_step(self.handle, ckernel.dptr(pos), ckernel.dptr(quat), ckernel.dptr(wp),
                                       ckernel.dptr(self.force), ckernel.dptr(self.torque),
                                       ckernel.dptr(self.wall_force), ckernel.dptr(self.stat))
         if err == -2:
             raise EngineError("particle positions are not finite")
+        if err == -4:
+            raise EngineError(f"{int(self.stats['workspace_overflows'])} contacts overflowed the clipping workspace "
+                              "(their forces would be lost): the shapes have more faces than it was sized for")
         if err:
             raise EngineError(f"contact engine step failed (code {err}: out of memory)")
         return self.force, self.torque, self.wall_force[:self.nw]
 
     @property
+    def stats(self):
+        """The last step's counters by name (see ``layout()['stat_names']``):
+        touching pairs, wall contacts, listed pairs, sliding contacts, sums
+        of |F| (N), rebuilds so far, clipped pairs, and the listed pairs
+        proved apart by spheres, by the motion bound, by the cached axis and
+        by the axis search."""
+        return {k: float(self.stat[i]) for k, i in self._stat_index.items()}
+
+    def _count(self, name):
+        return int(self.stat[self._stat_index[name]])
+
+    @property
     def n_pair_contacts(self):
-        return int(self.stat[0])
+        return self._count("touching_pairs")
 
     @property
     def n_wall_contacts(self):
-        return int(self.stat[1])
+        return self._count("wall_contacts")
 
     @property
     def n_pairs(self):
         """Pairs in the neighbour list (touching or not)."""
-        return int(self.stat[2])
+        return self._count("listed_pairs")
 
     @property
     def n_rebuilds(self):
-        return int(self.stat[5])
+        return self._count("rebuilds")
 
     def unbalanced(self):
         """Mean |net force| over the bodies / mean |contact force| (YADE's
         unbalanced-force ratio), NaN without contacts."""
-        nc = self.stat[0] + self.stat[1]
+        st = self.stats
+        nc = st["touching_pairs"] + st["wall_contacts"]
         if nc == 0 or self.n == 0:
             return float("nan")
-        return float((self.stat[6] / self.n) / (self.stat[4] / nc))
+        return float((st["sum_body_force"] / self.n) / (st["sum_contact_force"] / nc))
+
+    def set_workspace_points(self, npts):
+        """Shrink every thread's clipping workspace to ``npts`` points (tests:
+        a contact that does not fit then stops the step with EngineError)."""
+        if self.lib.pc_engine_set_workspace_points(self.handle, int(npts)) != 0:
+            raise ValueError(f"workspace points must be 16 to the allocated size, got {npts}")
 
     def memory_bytes(self):
         return int(self.lib.pc_engine_memory(self.handle))
@@ -165,8 +235,14 @@ class ContactEngine:
         self.lib.pc_engine_get_friction(self.handle, ckernel.dptr(out))
         return float(out[0]), float(out[1])
 
-    STATE_KEYS = ("x", "R", "xbuild", "pair_ids", "pair_records", "wall_shear", "wall_results", "wall_touching",
-                  "scalars")
+    STATE_KEYS = ("x", "R", "xbuild", "motion", "pair_ids", "pair_records", "wall_shear", "wall_results",
+                  "wall_touching", "scalars")
+
+    def _state_shapes(self, npairs):
+        n, nw, L = self.n, max(self.nw, 1), self.layout
+        return {"x": (n, 3), "R": (n, 9), "xbuild": (n, 3), "motion": (n,), "pair_ids": (npairs, 2),
+                "pair_records": (npairs, L["pair_doubles"]), "wall_shear": (n * nw, 3),
+                "wall_results": (n * nw, L["wall_doubles"]), "wall_touching": (n * nw,), "scalars": (L["scalars"],)}
 
     def state(self):
         """Everything later steps depend on, as a dict of numpy arrays (for
@@ -175,14 +251,12 @@ class ContactEngine:
         wall contacts' histories, and the counters. An engine built with the
         same shapes, bodies and walls and given this state by
         :meth:`set_state` continues bit for bit like this one."""
-        n, nw = self.n, max(self.nw, 1)
         npairs = int(self.lib.pc_engine_npairs(self.handle))
-        st = {"x": np.zeros((n, 3)), "R": np.zeros((n, 9)), "xbuild": np.zeros((n, 3)),
-              "pair_ids": np.zeros((npairs, 2), np.int32), "pair_records": np.zeros((npairs, 20)),
-              "wall_shear": np.zeros((n * nw, 3)), "wall_results": np.zeros((n * nw, 10)),
-              "wall_touching": np.zeros(n * nw, np.int32), "scalars": np.zeros(2)}
+        st = {k: np.zeros(shp, np.int32 if k in ("pair_ids", "wall_touching") else np.float64)
+              for k, shp in self._state_shapes(npairs).items()}
         self.lib.pc_engine_get_state(self.handle, ckernel.dptr(st["x"]), ckernel.dptr(st["R"]),
-                                     ckernel.dptr(st["xbuild"]), ckernel.iptr(st["pair_ids"]),
+                                     ckernel.dptr(st["xbuild"]), ckernel.dptr(st["motion"]),
+                                     ckernel.iptr(st["pair_ids"]),
                                      ckernel.dptr(st["pair_records"]), ckernel.dptr(st["wall_shear"]),
                                      ckernel.dptr(st["wall_results"]), ckernel.iptr(st["wall_touching"]),
                                      ckernel.dptr(st["scalars"]))
@@ -192,20 +266,18 @@ class ContactEngine:
     def set_state(self, st):
         """Restore a :meth:`state` (raises ValueError when it does not fit
         this engine: other body count, wall count or pair ids)."""
-        n, nw = self.n, max(self.nw, 1)
         missing = [k for k in self.STATE_KEYS if k not in st]
         if missing:
-            raise ValueError(f"engine state lacks {missing}")
+            raise ValueError(f"engine state lacks {missing} (a state of an older kernel?)")
         a = {k: (ckernel.i32(st[k]) if k in ("pair_ids", "wall_touching") else ckernel.f64(st[k]))
              for k in self.STATE_KEYS}
         npairs = len(a["pair_ids"])
-        shapes = {"x": (n, 3), "R": (n, 9), "xbuild": (n, 3), "pair_ids": (npairs, 2), "pair_records": (npairs, 20),
-                  "wall_shear": (n * nw, 3), "wall_results": (n * nw, 10), "wall_touching": (n * nw,), "scalars": (2,)}
-        for k, shp in shapes.items():
+        for k, shp in self._state_shapes(npairs).items():
             if a[k].shape != shp:
                 raise ValueError(f"engine state: {k} has shape {a[k].shape}, this engine needs {shp}")
         err = self.lib.pc_engine_set_state(self.handle, ckernel.dptr(a["x"]), ckernel.dptr(a["R"]),
-                                           ckernel.dptr(a["xbuild"]), npairs, ckernel.iptr(a["pair_ids"]),
+                                           ckernel.dptr(a["xbuild"]), ckernel.dptr(a["motion"]), npairs,
+                                           ckernel.iptr(a["pair_ids"]),
                                            ckernel.dptr(a["pair_records"]), ckernel.dptr(a["wall_shear"]),
                                            ckernel.dptr(a["wall_results"]), ckernel.iptr(a["wall_touching"]),
                                            ckernel.dptr(a["scalars"]))

@@ -99,11 +99,15 @@ typedef struct {
     int *hull;          /* hull indices */
     double *dA;         /* nvA x ntB distances */
     int *nout;          /* per plane: number of A's vertices outside */
+    double *key;        /* per plane of B: how much it faces A (hot path) */
+    double *vdist;      /* per vertex of A: distance to the first plane (hot path) */
+    int alloc_pts;      /* points allocated (cap_pts may be set lower, for tests) */
 } work_t;
 
 static void work_free(work_t *w) {
     for (int k = 0; k < 2; k++) { free(w->start[k]); free(w->count[k]); free(w->tag[k]); free(w->pts[k]); }
     free(w->capp); free(w->dist); free(w->order); free(w->proj); free(w->hull); free(w->dA); free(w->nout);
+    free(w->key); free(w->vdist);
     memset(w, 0, sizeof(*w));
 }
 
@@ -112,7 +116,7 @@ static int work_init(work_t *w, int max_t, int max_v) {
     memset(w, 0, sizeof(*w));
     int P = 2 * max_t + 12;                     /* polygons: A's triangles + a cap per B plane and box plane */
     long pts = (long)P * (long)(max_t + 12) + 16; /* each convex polygon gains at most one vertex per cut */
-    w->cap_poly = P; w->cap_pts = (int)pts;
+    w->cap_poly = P; w->cap_pts = (int)pts; w->alloc_pts = (int)pts;
     for (int k = 0; k < 2; k++) {
         w->start[k] = malloc(sizeof(int) * P); w->count[k] = malloc(sizeof(int) * P);
         w->tag[k] = malloc(sizeof(int) * P); w->pts[k] = malloc(sizeof(double) * 3 * pts);
@@ -124,9 +128,13 @@ static int work_init(work_t *w, int max_t, int max_v) {
     w->hull = malloc(sizeof(int) * (pts + 2));
     w->dA = malloc(sizeof(double) * (long)max_v * (max_t + 1) + 8);
     w->nout = malloc(sizeof(int) * (max_t + 4));
+    w->key = malloc(sizeof(double) * (max_t + 4));
+    w->vdist = malloc(sizeof(double) * (max_v + 4));
     for (int k = 0; k < 2; k++)
         if (!w->start[k] || !w->count[k] || !w->tag[k] || !w->pts[k]) { work_free(w); return -1; }
-    if (!w->capp || !w->dist || !w->order || !w->proj || !w->hull || !w->dA || !w->nout) { work_free(w); return -1; }
+    if (!w->capp || !w->dist || !w->order || !w->proj || !w->hull || !w->dA || !w->nout || !w->key || !w->vdist) {
+        work_free(w); return -1;
+    }
     return 0;
 }
 
@@ -252,7 +260,7 @@ static void shadow(const double *pts, int npts, const double *n, work_t *w, doub
 
 /* Finish: volume, centroid, S_A and the shadow from the polygon set. */
 static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, const double *xB_minus_xA,
-                      overlap_t *r) {
+                      int want_shadow, overlap_t *r) {
     int *start = w->start[buf], *count = w->count[buf], *tag = w->tag[buf];
     double *pts = w->pts[buf];
     if (np == 0) { overlap_zero(r); return; }
@@ -302,7 +310,13 @@ static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, con
         if (l > 0) { r->normal[0] = xB_minus_xA[0] / l; r->normal[1] = xB_minus_xA[1] / l; r->normal[2] = xB_minus_xA[2] / l; }
         else { r->normal[0] = 0; r->normal[1] = 0; r->normal[2] = 1; }
     }
-    /* the shadow, from the polygon vertices (contiguous in the buffer) */
+    /* the shadow, from the polygon vertices (contiguous in the buffer); it
+     * does not enter the contact law, so the engine computes it only for the
+     * contacts it reports (NaN until then) */
+    if (!want_shadow) {
+        r->area = NAN; r->footprint[0] = r->footprint[1] = NAN;
+        return;
+    }
     int first = start[0];
     int last = start[np - 1] + count[np - 1];
     shadow(pts + 3 * first, last - first, r->normal, w, &r->area, r->footprint);
@@ -318,10 +332,13 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
                       int *overflow) {
     int *s0 = w->start[buf], *c0 = w->count[buf], *t0 = w->tag[buf];
     double *p0 = w->pts[buf];
-    {   /* the polygons are contiguous in the buffer: one pass decides */
-        const double *q0 = p0 + 3 * s0[0];
-        int tot = s0[np - 1] + c0[np - 1] - s0[0], any = 0;
-        for (int i = 0; i < tot && !any; i++) any = dot3(q0 + 3 * i, n) - h > eps;
+    /* the polygons are contiguous in the buffer: one pass gives every
+     * point's distance (kept for the cut) and decides whether any is outside */
+    int first = s0[0], tot = s0[np - 1] + c0[np - 1] - first, any = 0;
+    double *dist = w->dist;
+    {
+        const double *q0 = p0 + 3 * first;
+        for (int i = 0; i < tot; i++) { dist[i] = dot3(q0 + 3 * i, n) - h; any |= dist[i] > eps; }
         if (!any) return -1;
     }
     int *s1 = w->start[1 - buf], *c1 = w->count[1 - buf], *t1 = w->tag[1 - buf];
@@ -331,9 +348,9 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
     for (int f = 0; f < np; f++) {
         int st = s0[f], cn = c0[f];
         double *P = p0 + 3 * st;
-        double *d = w->dist;
+        const double *d = dist + (st - first);
         int nin = 0;
-        for (int i = 0; i < cn; i++) { d[i] = dot3(P + 3 * i, n) - h; nin += d[i] <= eps; }
+        for (int i = 0; i < cn; i++) nin += d[i] <= eps;
         if (nin == 0) continue;                                     /* all outside */
         if (q + cn + 1 > w->cap_pts || out + 2 > w->cap_poly) { *overflow = 1; return 0; }
         s1[out] = q; t1[out] = t0[f];
@@ -365,6 +382,17 @@ static int clip_plane(work_t *w, int buf, int np, const double *n, double h, int
     if (ncap >= 3 && out > 0) {
         if (q + ncap > w->cap_pts || out + 1 > w->cap_poly) { *overflow = 1; return 0; }
         order_cap(cap, ncap, n, w->proj);
+        /* A cut edge shared by two polygons gives the same point twice (cut
+         * from its inside end, so the same bits): keep one. A repeated point
+         * adds exact zeros to every integral and nothing to any hull. */
+        int m = 1;
+        for (int i = 1; i < ncap; i++) {
+            const double *a = cap + 3 * (m - 1), *b = cap + 3 * i;
+            if (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) continue;
+            if (m != i) memcpy(cap + 3 * m, b, 3 * sizeof(double));
+            m++;
+        }
+        ncap = m;
         memcpy(p1 + 3 * q, cap, sizeof(double) * 3 * ncap);
         s1[out] = q; c1[out] = ncap; t1[out] = captag; out++; q += ncap;
     }
@@ -389,25 +417,82 @@ static void bounding_sphere(const work_t *w, int buf, int np, double *c, double 
 
 /* Overlap of A and B posed in the same frame. A's triangles are clipped by
  * B's planes (those that cut A, most cutting first). dAB is an optional
- * centre difference for the degenerate-normal fallback. */
+ * centre difference for the degenerate-normal fallback.
+ *
+ * hot: the pair touched at the last step. It skips the separation tests
+ * (clipping finds an empty overlap anyway) and clips first by the planes of
+ * B that face A most, which cut the most. With cull (the engine's fast
+ * mode), that path does the same cuts in the same order with less work, so
+ * its polygons are bit for bit those of the plain path:
+ *   - A's triangles wholly beyond the first plane k0 are never copied: the
+ *     first cut would drop them whole, and they give it no cap point;
+ *   - after that cut, the planes that cannot reach the bounding sphere of
+ *     what is left are dropped before the sort: every later point lies in
+ *     that sphere (cuts only interpolate between points), so those planes
+ *     would cut nothing; the others keep their relative order.
+ * Planes that cut nothing change nothing, so the sequence of effective cuts,
+ * and every polygon, is the plain path's. */
 static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
-                         double *sep_axis, int hot) {
+                         double *sep_axis, int hot, int cull, int want_shadow) {
     int ntB = B->nt;
     if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
     int *ord = w->order, m = 0;
-    if (hot && dAB) {
-        /* A pair that touched at the last step: skip the separation tests
-         * (clipping finds an empty overlap anyway) and clip first by the
-         * planes of B that face A most, which cut the most; the planes that
-         * cut nothing cost one pass over the few points left. */
-        double *key = w->dist;
+    int np = 0, buf = 0, overflow = 0;
+    /* Each plane of B in turn; a plane that cannot reach the bounding sphere
+     * of what is left cannot cut it. The sphere is refreshed after every
+     * plane that cut (what is left only shrinks, so a stale sphere is still
+     * a valid, looser bound). */
+    double sc[3] = {0, 0, 0}, sr = INFINITY;
+    /* round-off tolerance of a plane test: the coordinates are O(r_A + |x_B - x_A|) */
+    double ra = 0;
+    for (int i = 0; i < A->nv; i++) {
+        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
+        ra = q > ra ? q : ra;
+    }
+    double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
+    if (hot && dAB && cull) {
+        double *key = w->key;
+        int k0 = -1;
         for (int k = 0; k < ntB; k++) {
-            double f = -dot3(B->n + 3 * k, dAB);      /* dAB = x_B - x_A: facing A is n.(x_A - x_B) > 0 */
+            key[k] = -dot3(B->n + 3 * k, dAB);      /* dAB = x_B - x_A: facing A is n.(x_A - x_B) > 0 */
+            if (!(B->dup && B->dup[k]) && (k0 < 0 || key[k] > key[k0])) k0 = k;
+        }
+        if (k0 < 0) { overlap_zero(r); return; }
+        const double *n0 = B->n + 3 * k0;
+        double h0 = B->h[k0], *dv = w->vdist;
+        for (int i = 0; i < A->nv; i++) dv[i] = dot3(A->v + 3 * i, n0) - h0;
+        for (int f = 0; f < A->nt; f++) {
+            const int *tr = A->t + 3 * f;
+            if (dv[tr[0]] > eps && dv[tr[1]] > eps && dv[tr[2]] > eps) continue;   /* wholly beyond k0 */
+            w->start[0][np] = 3 * np; w->count[0][np] = 3; w->tag[0][np] = f;
+            for (int c = 0; c < 3; c++) memcpy(w->pts[0] + 3 * (3 * np + c), A->v + 3 * tr[c], 3 * sizeof(double));
+            np++;
+        }
+        if (np == 0) { overlap_zero(r); return; }
+        int q = clip_plane(w, 0, np, n0, h0, A->nt + k0, eps, &overflow);
+        if (overflow) { overlap_zero(r); r->status = PC_WORKSPACE; return; }
+        if (q >= 0) {
+            np = q; buf = 1;
+            if (np > 0) bounding_sphere(w, buf, np, sc, &sr);
+        }
+        for (int k = 0; k < ntB && np > 0; k++) {
+            if (k == k0 || (B->dup && B->dup[k])) continue;
+            if (dot3(B->n + 3 * k, sc) - B->h[k] + sr <= 0) continue;   /* cannot cut what is left */
+            int j = m++;
+            while (j > 0 && key[ord[j - 1]] < key[k]) { ord[j] = ord[j - 1]; j--; }
+            ord[j] = k;
+        }
+        goto cut;
+    }
+    if (hot && dAB) {
+        double *key = w->key;
+        for (int k = 0; k < ntB; k++) {
+            double f = -dot3(B->n + 3 * k, dAB);
             int j = m++;
             while (j > 0 && key[j - 1] < f) { ord[j] = ord[j - 1]; key[j] = key[j - 1]; j--; }
             ord[j] = k; key[j] = f;
         }
-        goto clip;
+        goto fill;
     }
     /* distances of A's vertices to B's planes; separation by a face of B */
     int *nout = w->nout;
@@ -442,25 +527,14 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
         while (j > 0 && nout[ord[j - 1]] < nout[k]) { ord[j] = ord[j - 1]; j--; }
         ord[j] = k;
     }
-clip:;
+fill:
     /* A's triangles as the starting polygons */
-    int np = A->nt, buf = 0, overflow = 0;
+    np = A->nt;
     for (int f = 0; f < np; f++) {
         w->start[0][f] = 3 * f; w->count[0][f] = 3; w->tag[0][f] = f;
         for (int c = 0; c < 3; c++) memcpy(w->pts[0] + 3 * (3 * f + c), A->v + 3 * A->t[3 * f + c], 3 * sizeof(double));
     }
-    /* Each plane of B in turn; a plane that cannot reach the bounding sphere
-     * of what is left cannot cut it. The sphere is refreshed after every
-     * plane that cut (what is left only shrinks, so a stale sphere is still
-     * a valid, looser bound). */
-    double sc[3] = {0, 0, 0}, sr = INFINITY;
-    /* round-off tolerance of a plane test: the coordinates are O(r_A + |x_B - x_A|) */
-    double ra = 0;
-    for (int i = 0; i < A->nv; i++) {
-        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
-        ra = q > ra ? q : ra;
-    }
-    double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
+cut:
     for (int i = 0; i < m && np > 0; i++) {
         int k = ord[i];
         if (B->dup && B->dup[k]) continue;                 /* the same plane as an earlier triangle */
@@ -472,13 +546,13 @@ clip:;
             if (np > 0) bounding_sphere(w, buf, np, sc, &sr);
         }
     }
-    integrate(w, buf, np, A->nt, A->n, dAB, r);
+    integrate(w, buf, np, A->nt, A->n, dAB, want_shadow, r);
 }
 
 /* Overlap of polyhedron A with the half-space beyond a plane n.x > h (the
  * wall's material side is n.x >= h ... here we keep n.x <= h): the part of A
  * with n.x <= h. The normal is -n (from the wall towards A) when wall_to_a. */
-static void overlap_halfspace(const posed_t *A, const double *n, double h, work_t *w, overlap_t *r) {
+static void overlap_halfspace(const posed_t *A, const double *n, double h, work_t *w, int want_shadow, overlap_t *r) {
     int c = 0;
     for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
     if (c == A->nv) { overlap_zero(r); return; }
@@ -501,7 +575,7 @@ static void overlap_halfspace(const posed_t *A, const double *n, double h, work_
      * compute V, centroid via integrate (tag -1 is not an A face), then set
      * the normal: from the wall to A is -n. */
     double negn[3] = {-n[0], -n[1], -n[2]};
-    integrate(w, buf, np, 0, NULL, negn, r);
+    integrate(w, buf, np, 0, NULL, negn, want_shadow, r);
     if (r->volume > 0) {
         r->normal[0] = -n[0]; r->normal[1] = -n[1]; r->normal[2] = -n[2];
         r->status = PC_OK;     /* the shadow on the plane normal to -n is the one computed */
@@ -629,7 +703,7 @@ int pc_batch_overlap(int ns, const int *voff, const double *v, const int *toff, 
             pose_shape(&T, sa[p], RA, zero, va, na, ha, &A);
             pose_shape(&T, sb[p], RB, d, vb, nb, hb, &B);
             overlap_t r;
-            overlap_pair(&A, &B, d, &w, &r, NULL, 0);
+            overlap_pair(&A, &B, d, &w, &r, NULL, 0, 0, 1);
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
             for (int c = 0; c < 3; c++) {
                 cen[3 * p + c] = r.volume > 0 ? r.centroid[c] + pa[3 * p + c] : NAN;
@@ -685,7 +759,7 @@ int pc_batch_wall(int ns, const int *voff, const double *v, const int *toff, con
             double h = dot3(m, rel);
             /* the overlap is where m.x < h: clip with plane n = m, keep n.x <= h */
             overlap_t r;
-            overlap_halfspace(&A, nn, h, &w, &r);
+            overlap_halfspace(&A, nn, h, &w, 1, &r);
             /* overlap_halfspace returns normal -n = -m; from the wall to the body is +m */
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
             for (int c = 0; c < 3; c++) {
@@ -702,13 +776,44 @@ int pc_batch_wall(int ns, const int *voff, const double *v, const int *toff, con
 }
 
 /* ================================================================== the engine */
+/* Counters of one step (pc_engine_step's stat), named by pc_engine_stat_name. */
+enum {
+    PC_STAT_TOUCHING_PAIRS,      /* particle pairs in contact */
+    PC_STAT_WALL_CONTACTS,       /* particle-wall contacts */
+    PC_STAT_LISTED_PAIRS,        /* pairs in the neighbour list */
+    PC_STAT_SLIDING,             /* contacts at the Coulomb limit */
+    PC_STAT_SUM_CONTACT_FORCE,   /* sum over contacts of |F| (N) */
+    PC_STAT_REBUILDS,            /* neighbour-list builds so far */
+    PC_STAT_SUM_BODY_FORCE,      /* sum over bodies of |net contact force| (N) */
+    PC_STAT_CLIPPED,             /* pairs whose overlap was computed (clipping) */
+    PC_STAT_APART_SPHERES,       /* listed pairs apart by their bounding spheres */
+    PC_STAT_APART_MOTION,        /* apart: cached axis, gap larger than the motion since it was measured */
+    PC_STAT_APART_AXIS,          /* apart: cached axis re-measured with support functions */
+    PC_STAT_APART_SEARCH,        /* apart: a separating axis found by the search */
+    PC_STAT_OVERFLOWS,           /* pairs or wall contacts that overflowed the clipping workspace */
+    PC_NSTAT
+};
+static const char *PC_STAT_NAMES[PC_NSTAT] = {
+    "touching_pairs", "wall_contacts", "listed_pairs", "sliding_contacts", "sum_contact_force", "rebuilds",
+    "sum_body_force", "clipped_pairs", "apart_by_spheres", "apart_by_motion_bound", "apart_by_cached_axis",
+    "apart_by_axis_search", "workspace_overflows"};
+
+#define PC_MAX_WALLS 16
+#define PC_PAIR_DOUBLES 24       /* a pair's record in the engine state (see pc_engine_get_state) */
+#define PC_WALL_DOUBLES 10       /* a wall contact's results: vol c(3) fp(2) area fn(3) */
+#define PC_SCALARS (2 + PC_MAX_WALLS)   /* have_prev, builds, the wall positions of the last step */
+#define PC_SEARCH_ITERATIONS 24  /* iterations of the separating-axis search before clipping decides */
+
 typedef struct {
     int i, j;                 /* body rows, i < j */
+    int touching;             /* in contact at the last step */
+    int hot_used;             /* the clipping path of the last step (1: the pair had touched before) */
     double ft[3];             /* shear force on j by i (history) */
-    double axis[3];           /* cached separating axis (from i to j), 0 if none */
-    /* per-step results */
+    double axis[3];           /* cached separating axis (unit, from i to j), 0 if none */
+    double gap;               /* min over j - max over i of the vertices along axis when measured (m) */
+    double mi0, mj0;          /* the motion bounds of i and j then (engine_t.motion) */
+    /* per-step results (fp and area computed when the contacts are asked for) */
     double vol, c[3], n[3], fp[2], area, fn[3];
-    int touching;
 } pair_t;
 
 typedef struct {
@@ -719,10 +824,15 @@ typedef struct {
     double *size;              /* per body d */
     double kv, ct, mu, mu_wall, skin;
     /* walls: axis (0,1,2), inward sign (+1 lo wall, -1 hi wall) */
-    int wall_axis[16];
-    double wall_sign[16];
+    int wall_axis[PC_MAX_WALLS];
+    double wall_sign[PC_MAX_WALLS];
+    double wall_pos[PC_MAX_WALLS];   /* of the last step */
     /* per body pose state */
     double *R, *Rprev, *x, *xprev, *xbuild, *rv, *rn, *rh;
+    double *motion;            /* per body: sum over steps of a bound on any vertex's displacement (m) */
+    double *spin;              /* per body: rotation vector of the last step (small angles) */
+    int fast;                  /* 1: proofs of separation, culled clipping, shadows on demand; 0: the plain path */
+    int shadows_ready;         /* the touching contacts' shadows belong to the last step */
     int *voffb, *toffb;        /* offsets into rv (vertices) and rn (triangles) per body */
     int have_prev;
     /* neighbour list */
@@ -736,7 +846,7 @@ typedef struct {
     work_t *work;
     double *cellbuf; int *cellhead, *cellnext; int cellcap;
     long nbuild;
-    double stat[8];
+    double stat[PC_NSTAT];
 } engine_t;
 
 void pc_engine_free(engine_t *E);
@@ -756,7 +866,9 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     memcpy(vo, voff, sizeof(int) * (ns + 1)); memcpy(to, toff, sizeof(int) * (ns + 1));
     memcpy(vv, v, sizeof(double) * 3 * nvt); memcpy(tt, t, sizeof(int) * 3 * ntt);
     if (table_init(&E->T, ns, vo, vv, to, tt)) { pc_engine_free(E); return NULL; }
-    E->nb = nb; E->nw = nw > 16 ? 16 : nw;
+    if (nw < 0 || nw > PC_MAX_WALLS) { pc_engine_free(E); return NULL; }
+    E->nb = nb; E->nw = nw;
+    E->fast = 1;
     E->shape_own = malloc(sizeof(int) * (nb + 1)); E->size = malloc(sizeof(double) * (nb + 1));
     memcpy(E->shape_own, shape, sizeof(int) * nb); memcpy(E->size, size, sizeof(double) * nb);
     E->shape = E->shape_own;
@@ -771,6 +883,7 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     E->R = malloc(sizeof(double) * 9 * nb); E->Rprev = malloc(sizeof(double) * 9 * nb);
     E->x = malloc(sizeof(double) * 3 * nb); E->xprev = malloc(sizeof(double) * 3 * nb);
     E->xbuild = malloc(sizeof(double) * 3 * nb);
+    E->motion = calloc(nb + 1, sizeof(double)); E->spin = calloc(3 * (size_t)nb + 1, sizeof(double));
     E->voffb = malloc(sizeof(int) * (nb + 1)); E->toffb = malloc(sizeof(int) * (nb + 1));
     E->voffb[0] = 0; E->toffb[0] = 0;
     for (int b = 0; b < nb; b++) {
@@ -785,7 +898,7 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     E->wres = calloc((size_t)nb * E->nw * 10 + 1, sizeof(double));
     E->wtouch = calloc((size_t)nb * E->nw + 1, sizeof(int));
     E->work = calloc(nthreads, sizeof(work_t));
-    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->rv || !E->rn || !E->rh || !E->wft ||
+    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->motion || !E->spin || !E->rv || !E->rn || !E->rh || !E->wft ||
         !E->wres || !E->wtouch || !E->work) { pc_engine_free(E); return NULL; }
     for (int k = 0; k < nthreads; k++)
         if (work_init(&E->work[k], E->T.max_t, E->T.max_v)) { pc_engine_free(E); return NULL; }
@@ -802,6 +915,7 @@ void pc_engine_free(engine_t *E) {
     table_free(&E->T);
     free(E->shape_own); free(E->size);
     free(E->R); free(E->Rprev); free(E->x); free(E->xprev); free(E->xbuild); free(E->voffb); free(E->toffb);
+    free(E->motion); free(E->spin);
     free(E->rv); free(E->rn); free(E->rh); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
     free(E->wtouch); free(E->cellbuf); free(E->cellhead); free(E->cellnext);
     free(E);
@@ -897,7 +1011,9 @@ static int rebuild(engine_t *E) {
         if (a < E->npairs && E->pairs[a].i == p->i && E->pairs[a].j == p->j) {
             memcpy(p->ft, E->pairs[a].ft, sizeof(p->ft));
             memcpy(p->axis, E->pairs[a].axis, sizeof(p->axis));
+            p->gap = E->pairs[a].gap; p->mi0 = E->pairs[a].mi0; p->mj0 = E->pairs[a].mj0;
             p->touching = E->pairs[a].touching;      /* the pair touched at the last step */
+            p->hot_used = E->pairs[a].hot_used;
         }
     }
     pair_t *tmp = E->pairs; int tcap = E->cap_pairs;
@@ -918,16 +1034,30 @@ static void point_disp(const engine_t *E, int b, const double *c, double *du) {
     du[0] = c[0] - (xp[0] + old[0]); du[1] = c[1] - (xp[1] + old[1]); du[2] = c[2] - (xp[2] + old[2]);
 }
 
-/* spin of body b about n over the step (rotation angle, small) */
-static double spin_about(const engine_t *E, int b, const double *n) {
-    if (!E->have_prev) return 0;
+/* rotation vector of body b over the step (small angles): the axial vector
+ * of W = R Rp^T, zero before the first step */
+static void body_spin(const engine_t *E, int b, double *w) {
+    if (!E->have_prev) { w[0] = w[1] = w[2] = 0; return; }
     const double *R = E->R + 9 * b, *Rp = E->Rprev + 9 * b;
-    /* W = R Rp^T; its axial vector ~ rotation vector for small rotations */
     double W[9];
     for (int r = 0; r < 3; r++) for (int c = 0; c < 3; c++)
         W[3 * r + c] = R[3 * r] * Rp[3 * c] + R[3 * r + 1] * Rp[3 * c + 1] + R[3 * r + 2] * Rp[3 * c + 2];
-    double w[3] = {0.5 * (W[7] - W[5]), 0.5 * (W[2] - W[6]), 0.5 * (W[3] - W[1])};
-    return dot3(w, n);
+    w[0] = 0.5 * (W[7] - W[5]); w[1] = 0.5 * (W[2] - W[6]); w[2] = 0.5 * (W[3] - W[1]);
+}
+
+/* spin of body b about n over the step (rotation angle, small) */
+static inline double spin_about(const engine_t *E, int b, const double *n) { return dot3(E->spin + 3 * b, n); }
+
+/* A bound on the displacement of any vertex of body b over the last step:
+ * |x - x_prev| + r_b |R - R_prev|_F / sqrt(2). For rotations R, R_prev the
+ * largest stretch of R - R_prev is 2 sin(theta/2) = |R - R_prev|_F / sqrt(2),
+ * theta the angle between them; 1e-9 covers the round-off of the poses. */
+static double body_motion(const engine_t *E, int b) {
+    if (!E->have_prev) return 0;
+    const double *x = E->x + 3 * b, *xp = E->xprev + 3 * b, *R = E->R + 9 * b, *Rp = E->Rprev + 9 * b;
+    double dx[3] = {x[0] - xp[0], x[1] - xp[1], x[2] - xp[2]}, f = 0;
+    for (int k = 0; k < 9; k++) f += (R[k] - Rp[k]) * (R[k] - Rp[k]);
+    return (sqrt(dot3(dx, dx)) + E->T.radius[E->shape[b]] * sqrt(0.5 * f)) * (1 + 1e-9);
 }
 
 /* tangential update; ft in/out, returns 1 when sliding */
@@ -951,27 +1081,239 @@ static int tangential(double *ft, const double *n, double twist, const double *d
     return slide;
 }
 
-/* One step. pos (nb,3), quat (nb,4) w,x,y,z; wall_pos (nw) coordinate of each
- * wall plane along its axis. Outputs: force, torque (nb,3) on the bodies,
- * wall_force (nw,3) on the walls. stat: [0] touching pairs, [1] wall contacts,
- * [2] neighbour pairs, [3] sliding, [4] sum |F_c|, [5] rebuilds, [6] sum |F_body|,
- * [7] workspace errors. Returns 0, -1 (memory), -2 (non-finite positions). */
-int pc_engine_step(engine_t *E, const double *pos, const double *quat, const double *wall_pos,
-                   double *force, double *torque, double *wall_force, double *stat) {
-    int nb = E->nb, nw = E->nw;
-    /* poses */
-    if (E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
-    memcpy(E->x, pos, sizeof(double) * 3 * nb);
-    for (int b = 0; b < nb; b++) {
-        for (int c = 0; c < 3; c++) if (!isfinite(pos[3 * b + c])) return -2;
-        quat_to_mat(quat + 4 * b, E->R + 9 * b);
+/* ------------------------------------------------------------------ proofs of separation */
+/* Largest u.v over the n vertices v. */
+static inline double support_max(const double *v, int n, const double *u, int *arg) {
+    double m = -INFINITY;
+    int k = 0;
+    for (int a = 0; a < n; a++) { double s = dot3(v + 3 * a, u); if (s > m) { m = s; k = a; } }
+    if (arg) *arg = k;
+    return m;
+}
+
+/* Smallest u.v over the n vertices v. */
+static inline double support_min(const double *v, int n, const double *u, int *arg) {
+    double m = INFINITY;
+    int k = 0;
+    for (int a = 0; a < n; a++) { double s = dot3(v + 3 * a, u); if (s < m) { m = s; k = a; } }
+    if (arg) *arg = k;
+    return m;
+}
+
+/* The gap along the unit axis u (from A to B) of A's vertices va and B's
+ * vertices vb + d: min over B - max over A. Positive: the plane normal to u
+ * between them separates the two hulls. */
+static inline double axis_gap(const double *va, int na, const double *vb, int nb, const double *d, const double *u) {
+    return support_min(vb, nb, u, NULL) + dot3(d, u) - support_max(va, na, u, NULL);
+}
+
+/* Search for a separating axis of the hulls of A's vertices va and B's
+ * vertices vb + d, from a guess (any non-zero vector, from A to B). It is
+ * Gilbert's iteration on the Minkowski difference C = A - B: v is a point of
+ * C, the support point w of C along -v is found, and v moves to the point of
+ * the segment [v, w] closest to the origin. Each direction is tried as an
+ * axis on the way: the answer is a proof (the gap is measured over every
+ * vertex), never a guess. Returns 1 with the unit axis and its gap > margin,
+ * or 0 (touching, or too close to prove within maxit iterations: the
+ * clipping decides). */
+static int find_axis(const double *va, int na, const double *vb, int nb, const double *d, const double *guess,
+                     double margin, int maxit, double *axis, double *gap) {
+    double u[3] = {guess[0], guess[1], guess[2]}, v[3] = {0, 0, 0};
+    for (int it = 0; it < maxit; it++) {
+        double l = sqrt(dot3(u, u));
+        if (!(l > 0)) return 0;
+        u[0] /= l; u[1] /= l; u[2] /= l;
+        int ia, ib;
+        double ma = support_max(va, na, u, &ia), mb = support_min(vb, nb, u, &ib) + dot3(d, u);
+        if (mb - ma > margin) {
+            axis[0] = u[0]; axis[1] = u[1]; axis[2] = u[2];
+            *gap = mb - ma;
+            return 1;
+        }
+        /* w: the point of C farthest along u (a_ia - b_ib), the support along -v */
+        const double *pa = va + 3 * ia, *pb = vb + 3 * ib;
+        double w[3] = {pa[0] - pb[0] - d[0], pa[1] - pb[1] - d[1], pa[2] - pb[2] - d[2]};
+        if (it == 0) {
+            v[0] = w[0]; v[1] = w[1]; v[2] = w[2];
+        } else {
+            double e[3] = {w[0] - v[0], w[1] - v[1], w[2] - v[2]}, ee = dot3(e, e);
+            if (!(ee > 0)) return 0;
+            double t = -dot3(v, e) / ee;
+            if (!(t > 0)) return 0;                    /* no progress: v is (nearly) the closest point */
+            if (t > 1) t = 1;
+            v[0] += t * e[0]; v[1] += t * e[1]; v[2] += t * e[2];
+        }
+        if (dot3(v, v) <= margin * margin) return 0;   /* C reaches the origin: touching */
+        u[0] = -v[0]; u[1] = -v[1]; u[2] = -v[2];
     }
-    if (!E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
-    /* Threads only when a step has enough work: a parallel region costs a
-     * wake-up and a barrier (about 10-50 us with OMP_WAIT_POLICY=PASSIVE),
-     * more than a small scene's whole step. */
-    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
-    /* rotated vertices and normals (body-centred) */
+    return 0;
+}
+
+/* ------------------------------------------------------------------ one pair, one step */
+/* B (body j) posed relative to A (body i): vertices + d and plane offsets
+ * + n.d, in the thread's scratch w->dA (sized max_v * (max_t + 1)). */
+static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *w, posed_t *A, posed_t *B) {
+    const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
+    int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
+    int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
+    double *vjr = w->dA, *hj = w->dA + 3 * E->T.max_v;
+    for (int a = 0; a < nvj; a++) {
+        vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
+    }
+    const double *nj = E->rn + 3 * E->toffb[j];
+    for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+    posed_t pa = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
+                  E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0}};
+    posed_t pb = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
+                  E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]}};
+    *A = pa; *B = pb;
+}
+
+/* Keep a proof of separation for the next steps: the axis, its gap and the
+ * two bodies' motion bounds now. */
+static inline void keep_axis(const engine_t *E, pair_t *p, const double *u, double gap) {
+    p->axis[0] = u[0]; p->axis[1] = u[1]; p->axis[2] = u[2];
+    p->gap = gap; p->mi0 = E->motion[p->i]; p->mj0 = E->motion[p->j];
+}
+
+static inline void drop_axis(pair_t *p) { p->axis[0] = p->axis[1] = p->axis[2] = 0; p->gap = 0; }
+
+/* One listed pair: proofs of separation, else the overlap and the contact
+ * law. cnt: the thread's counters (PC_STAT_*). */
+static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
+    int i = p->i, j = p->j;
+    int hot = p->touching;
+    p->touching = 0;
+    double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+    double reach = body_radius(E, i) + body_radius(E, j);
+    if (dot3(d, d) >= reach * reach) { memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_SPHERES]++; return; }
+    const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
+    int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
+    /* a gap is trusted above the round-off of the posed vertices and of d */
+    double margin = 1e-12 * (reach + fabs(d[0]) + fabs(d[1]) + fabs(d[2]));
+    int has_axis = p->axis[0] != 0 || p->axis[1] != 0 || p->axis[2] != 0;
+    if (has_axis && E->fast) {
+        /* No vertex of i moved by more than motion[i] - mi0 since the gap was
+         * measured (likewise j): a gap larger than both still separates. */
+        double moved = (E->motion[i] - p->mi0) + (E->motion[j] - p->mj0);
+        if (moved + margin < p->gap) { memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_MOTION]++; return; }
+        double g = axis_gap(vi, nvi, vj, nvj, d, p->axis);
+        if (g > margin) { keep_axis(E, p, p->axis, g); memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_AXIS]++; return; }
+    } else if (has_axis) {
+        /* the plain path: max over i of u.v < min over j of u.(v + d) */
+        double mi = -INFINITY, mj = INFINITY;
+        for (int a = 0; a < nvi; a++) { double s = dot3(vi + 3 * a, p->axis); if (s > mi) mi = s; }
+        double od = dot3(d, p->axis);
+        for (int a = 0; a < nvj && mj > mi; a++) { double s = dot3(vj + 3 * a, p->axis) + od; if (s < mj) mj = s; }
+        if (mi < mj) { memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_AXIS]++; return; }
+    }
+    if (E->fast && !hot) {
+        double u[3], g;
+        if (find_axis(vi, nvi, vj, nvj, d, has_axis ? p->axis : d, margin, PC_SEARCH_ITERATIONS, u, &g)) {
+            keep_axis(E, p, u, g); memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_SEARCH]++; return;
+        }
+    }
+    posed_t A, B;
+    pose_pair(E, i, j, d, w, &A, &B);
+    overlap_t r;
+    double sep[3];
+    cnt[PC_STAT_CLIPPED]++;
+    overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast);
+    p->hot_used = hot;
+    if (r.status == PC_WORKSPACE) { cnt[PC_STAT_OVERFLOWS]++; p->vol = 0; memset(p->ft, 0, sizeof(p->ft)); return; }
+    if (!(r.volume > 0)) {
+        memset(p->ft, 0, sizeof(p->ft));
+        if (!E->fast) { memcpy(p->axis, sep, sizeof(sep)); return; }
+        /* apart: keep a proof for the next steps, from the separating face if
+         * the tests found one, else a search from the last normal */
+        double u[3], g;
+        drop_axis(p);
+        if (sep[0] != 0 || sep[1] != 0 || sep[2] != 0) {
+            g = axis_gap(vi, nvi, vj, nvj, d, sep);
+            if (g > margin) keep_axis(E, p, sep, g);
+        } else if (find_axis(vi, nvi, vj, nvj, d, hot ? p->n : d, margin, PC_SEARCH_ITERATIONS, u, &g)) {
+            keep_axis(E, p, u, g);
+        }
+        return;
+    }
+    drop_axis(p);
+    p->touching = 1;
+    p->vol = r.volume; p->area = r.area; p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1];
+    for (int c = 0; c < 3; c++) { p->c[c] = r.centroid[c] + E->x[3 * i + c]; p->n[c] = r.normal[c]; }
+    double fn = E->kv * r.volume;
+    p->fn[0] = fn * p->n[0]; p->fn[1] = fn * p->n[1]; p->fn[2] = fn * p->n[2];
+    /* tangential */
+    double dui[3], duj[3], du[3];
+    point_disp(E, i, p->c, dui); point_disp(E, j, p->c, duj);
+    du[0] = duj[0] - dui[0]; du[1] = duj[1] - dui[1]; du[2] = duj[2] - dui[2];
+    double twist = 0.5 * (spin_about(E, i, p->n) + spin_about(E, j, p->n));
+    double di = E->size[i], dj = E->size[j];
+    double dp = (di + dj > 0) ? 2 * di * dj / (di + dj) : 0;
+    double kt = E->ct * dp * dp;
+    if (!hot) { du[0] = du[1] = du[2] = 0; twist = 0; }   /* a new contact starts unloaded */
+    tangential(p->ft, p->n, twist, du, kt, E->mu, fn);
+}
+
+/* The overlap of body b with wall k at the last step's poses (r), and the
+ * wall's inward normal n and the half-space offset used. */
+static void wall_overlap(const engine_t *E, int b, int k, work_t *w, int want_shadow, overlap_t *r, double *n) {
+    int ax = E->wall_axis[k];
+    double gap = E->wall_sign[k] * (E->x[3 * b + ax] - E->wall_pos[k]);
+    posed_t A = {E->voffb[b + 1] - E->voffb[b], E->toffb[b + 1] - E->toffb[b], E->rv + 3 * E->voffb[b],
+                 E->T.t + 3 * E->T.toff[E->shape[b]], E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, NULL,
+                 {0, 0, 0}};
+    n[0] = n[1] = n[2] = 0;
+    n[ax] = E->wall_sign[k];              /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
+    overlap_halfspace(&A, n, -gap, w, want_shadow, r);
+}
+
+/* One body against every wall. cnt: the thread's counters. */
+static void walls_step(engine_t *E, int b, work_t *w, int *cnt) {
+    int nw = E->nw;
+    for (int k = 0; k < nw; k++) {
+        int idx = b * nw + k;
+        int whot = E->wtouch[idx];
+        E->wtouch[idx] = 0;
+        int ax = E->wall_axis[k];
+        double sg = E->wall_sign[k];
+        /* inward normal m = sg e_ax; body side: sg (x - wall) >= 0 */
+        double gap = sg * (E->x[3 * b + ax] - E->wall_pos[k]);
+        if (gap >= body_radius(E, b)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+        const double *vb = E->rv + 3 * E->voffb[b];
+        int nvb = E->voffb[b + 1] - E->voffb[b];
+        double mn = INFINITY;
+        for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
+        if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+        double n[3];
+        overlap_t r;
+        wall_overlap(E, b, k, w, !E->fast, &r, n);
+        if (r.status == PC_WORKSPACE) { cnt[PC_STAT_OVERFLOWS]++; memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+        if (!(r.volume > 0)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
+        E->wtouch[idx] = 1;
+        double *res = E->wres + PC_WALL_DOUBLES * idx;
+        double fn = E->kv * r.volume;
+        res[0] = r.volume;
+        for (int c = 0; c < 3; c++) res[1 + c] = r.centroid[c] + E->x[3 * b + c];
+        res[4] = r.footprint[0]; res[5] = r.footprint[1]; res[6] = r.area;
+        /* force on the body by the wall: along m */
+        for (int c = 0; c < 3; c++) res[7 + c] = fn * n[c];
+        if (E->mu_wall > 0) {
+            double du[3];
+            point_disp(E, b, res + 1, du);      /* the wall's own motion is normal to it */
+            if (!whot) { du[0] = du[1] = du[2] = 0; }
+            double twist = spin_about(E, b, n) * 0.5;
+            double kt = E->ct * E->size[b] * E->size[b];
+            tangential(E->wft + 3 * idx, n, twist, du, kt, E->mu_wall, fn);
+        } else {
+            memset(E->wft + 3 * idx, 0, 3 * sizeof(double));
+        }
+    }
+}
+
+/* rotated vertices and normals of every body (body-centred), its spin and
+ * its motion bound over the last step */
+static void pose_all(engine_t *E, int par) {
+    int nb = E->nb;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(E->nthreads) schedule(static) if (par)
 #endif
@@ -981,6 +1323,31 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         pose_shape(&E->T, E->shape[b], E->R + 9 * b, zero, E->rv + 3 * E->voffb[b], E->rn + 3 * E->toffb[b],
                    E->rh + E->toffb[b], &P);
     }
+}
+
+/* One step. pos (nb,3), quat (nb,4) w,x,y,z; wall_pos (nw) coordinate of each
+ * wall plane along its axis. Outputs: force, torque (nb,3) on the bodies,
+ * wall_force (nw,3) on the walls; stat (PC_NSTAT): the step's counters,
+ * named by pc_engine_stat_name. Returns 0, -1 (memory), -2 (non-finite
+ * positions), -4 (a contact overflowed the clipping workspace: it would have
+ * been lost; stat[PC_STAT_OVERFLOWS] counts them). */
+int pc_engine_step(engine_t *E, const double *pos, const double *quat, const double *wall_pos,
+                   double *force, double *torque, double *wall_force, double *stat) {
+    int nb = E->nb, nw = E->nw;
+    for (int b = 0; b < 3 * nb; b++) if (!isfinite(pos[b])) return -2;
+    /* poses */
+    if (E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
+    memcpy(E->x, pos, sizeof(double) * 3 * nb);
+    for (int b = 0; b < nb; b++) quat_to_mat(quat + 4 * b, E->R + 9 * b);
+    if (!E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
+    for (int k = 0; k < nw; k++) E->wall_pos[k] = wall_pos[k];
+    E->shadows_ready = 0;
+    /* Threads only when a step has enough work: a parallel region costs a
+     * wake-up and a barrier (about 10-50 us with OMP_WAIT_POLICY=PASSIVE),
+     * more than a small scene's whole step. */
+    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
+    pose_all(E, par);
+    for (int b = 0; b < nb; b++) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
     /* neighbour list: rebuild when a body moved more than skin/2 */
     int need = E->npairs == 0 && E->nbuild == 0;
     double lim = 0.25 * E->skin * E->skin;
@@ -989,128 +1356,36 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         if (dot3(d, d) > lim) need = 1;
     }
     if (need) { int e = rebuild(E); if (e) return e; }
-    int nwork = 0;
+    int cnt[PC_NSTAT];
+    memset(cnt, 0, sizeof(cnt));
     par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
-    /* pairs */
 #ifdef _OPENMP
-#pragma omp parallel num_threads(E->nthreads) reduction(+:nwork) if (par)
+#pragma omp parallel num_threads(E->nthreads) if (par)
 #endif
     {
-        int tid = 0;
+        int tid = 0, mine[PC_NSTAT];
+        memset(mine, 0, sizeof(mine));
 #ifdef _OPENMP
         tid = omp_get_thread_num();
 #endif
         work_t *w = &E->work[tid];
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 16) nowait
 #endif
-        for (int k = 0; k < E->npairs; k++) {
-            pair_t *p = E->pairs + k;
-            int i = p->i, j = p->j;
-            int hot = p->touching;
-            p->touching = 0;
-            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
-            double reach = body_radius(E, i) + body_radius(E, j);
-            if (dot3(d, d) >= reach * reach) { memset(p->ft, 0, sizeof(p->ft)); continue; }
-            const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
-            int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
-            /* cached separating axis: max over i of u.v < min over j of u.(v + d) */
-            if (p->axis[0] != 0 || p->axis[1] != 0 || p->axis[2] != 0) {
-                double mi = -INFINITY, mj = INFINITY;
-                for (int a = 0; a < nvi; a++) { double s = dot3(vi + 3 * a, p->axis); if (s > mi) mi = s; }
-                double od = dot3(d, p->axis);
-                for (int a = 0; a < nvj && mj > mi; a++) { double s = dot3(vj + 3 * a, p->axis) + od; if (s < mj) mj = s; }
-                if (mi < mj) { memset(p->ft, 0, sizeof(p->ft)); continue; }
-            }
-            /* pose j relative to i: vertices + d, offsets + n.d; workspace scratch in w->dist region is in use
-             * during clipping, so use a per-thread copy area: w->dA (sized max_v*(max_t+1)) */
-            double *vjr = w->dA;                                  /* 3*max_v doubles */
-            double *hj = w->dA + 3 * E->T.max_v;                  /* max_t doubles */
-            for (int a = 0; a < nvj; a++) { vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2]; }
-            int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
-            const double *nj = E->rn + 3 * E->toffb[j];
-            for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
-            posed_t A = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
-                         E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0}};
-            posed_t B = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
-                         E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]}};
-            overlap_t r;
-            double sep[3];
-            nwork++;
-            overlap_pair(&A, &B, d, w, &r, sep, hot);
-            if (r.status == PC_WORKSPACE) { p->vol = 0; continue; }
-            if (!(r.volume > 0)) {
-                /* apart: cache the separating face normal if there is one
-                 * (none when they are apart across an edge-edge axis) */
-                memcpy(p->axis, sep, sizeof(sep));
-                memset(p->ft, 0, sizeof(p->ft));
-                continue;
-            }
-            p->axis[0] = p->axis[1] = p->axis[2] = 0;
-            p->touching = 1;
-            p->vol = r.volume; p->area = r.area; p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1];
-            for (int c = 0; c < 3; c++) { p->c[c] = r.centroid[c] + E->x[3 * i + c]; p->n[c] = r.normal[c]; }
-            double fn = E->kv * r.volume;
-            p->fn[0] = fn * p->n[0]; p->fn[1] = fn * p->n[1]; p->fn[2] = fn * p->n[2];
-            /* tangential */
-            double dui[3], duj[3], du[3];
-            point_disp(E, i, p->c, dui); point_disp(E, j, p->c, duj);
-            du[0] = duj[0] - dui[0]; du[1] = duj[1] - dui[1]; du[2] = duj[2] - dui[2];
-            double twist = 0.5 * (spin_about(E, i, p->n) + spin_about(E, j, p->n));
-            double di = E->size[i], dj = E->size[j];
-            double dp = (di + dj > 0) ? 2 * di * dj / (di + dj) : 0;
-            double kt = E->ct * dp * dp;
-            if (!hot) { du[0] = du[1] = du[2] = 0; twist = 0; }   /* a new contact starts unloaded */
-            tangential(p->ft, p->n, twist, du, kt, E->mu, fn);
-        }
-        /* walls */
+        for (int k = 0; k < E->npairs; k++) pair_step(E, E->pairs + k, w, mine);
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
 #endif
-        for (int b = 0; b < nb; b++) {
-            for (int k = 0; k < nw; k++) {
-                int idx = b * nw + k;
-                int whot = E->wtouch[idx];
-                E->wtouch[idx] = 0;
-                int ax = E->wall_axis[k];
-                double sg = E->wall_sign[k];
-                /* inward normal m = sg e_ax; body side: sg (x - wall) >= 0 */
-                double gap = sg * (E->x[3 * b + ax] - wall_pos[k]);
-                if (gap >= body_radius(E, b)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
-                const double *vb = E->rv + 3 * E->voffb[b];
-                int nvb = E->voffb[b + 1] - E->voffb[b];
-                double mn = INFINITY;
-                for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
-                if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
-                posed_t A = {nvb, E->toffb[b + 1] - E->toffb[b], vb, E->T.t + 3 * E->T.toff[E->shape[b]],
-                             E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, NULL, {0, 0, 0}};
-                double n[3] = {0, 0, 0};
-                n[ax] = sg;                       /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
-                overlap_t r;
-                overlap_halfspace(&A, n, -gap, w, &r);
-                if (!(r.volume > 0)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
-                E->wtouch[idx] = 1;
-                double *res = E->wres + 10 * idx;
-                double fn = E->kv * r.volume;
-                res[0] = r.volume;
-                for (int c = 0; c < 3; c++) res[1 + c] = r.centroid[c] + E->x[3 * b + c];
-                res[4] = r.footprint[0]; res[5] = r.footprint[1]; res[6] = r.area;
-                /* force on the body by the wall: along m */
-                for (int c = 0; c < 3; c++) res[7 + c] = fn * n[c];
-                if (E->mu_wall > 0) {
-                    double du[3];
-                    point_disp(E, b, res + 1, du);      /* the wall's own motion is normal to it */
-                    if (!whot) { du[0] = du[1] = du[2] = 0; }
-                    double twist = spin_about(E, b, n) * 0.5;
-                    double kt = E->ct * E->size[b] * E->size[b];
-                    tangential(E->wft + 3 * idx, n, twist, du, kt, E->mu_wall, fn);
-                } else {
-                    memset(E->wft + 3 * idx, 0, 3 * sizeof(double));
-                }
-            }
+        for (int b = 0; b < nb; b++) walls_step(E, b, w, mine);
+        for (int k = 0; k < PC_NSTAT; k++) {
+            if (!mine[k]) continue;
+#ifdef _OPENMP
+#pragma omp atomic
+#endif
+            cnt[k] += mine[k];
         }
     }
-    /* forces and torques (serial: a sum per body) */
+    /* forces and torques (serial: a sum per body, in a fixed order) */
     memset(force, 0, sizeof(double) * 3 * nb);
     memset(torque, 0, sizeof(double) * 3 * nb);
     memset(wall_force, 0, sizeof(double) * 3 * nw);
@@ -1137,7 +1412,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
         int idx = b * nw + k;
         if (!E->wtouch[idx]) continue;
         nwall++;
-        double *res = E->wres + 10 * idx, *ft = E->wft + 3 * idx;
+        double *res = E->wres + PC_WALL_DOUBLES * idx, *ft = E->wft + 3 * idx;
         double F[3] = {res[7] + ft[0], res[8] + ft[1], res[9] + ft[2]};
         sumF += sqrt(dot3(F, F));
         double r[3] = {res[1] - E->x[3 * b], res[2] - E->x[3 * b + 1], res[3] - E->x[3 * b + 2]}, t[3];
@@ -1147,10 +1422,59 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
     double sumB = 0;
     for (int b = 0; b < nb; b++) sumB += sqrt(dot3(force + 3 * b, force + 3 * b));
     E->have_prev = 1;
-    E->stat[0] = ntouch; E->stat[1] = nwall; E->stat[2] = E->npairs; E->stat[3] = nslide; E->stat[4] = sumF;
-    E->stat[5] = (double)E->nbuild; E->stat[6] = sumB; E->stat[7] = nwork;
+    E->shadows_ready = !E->fast;
+    for (int k = 0; k < PC_NSTAT; k++) E->stat[k] = cnt[k];
+    E->stat[PC_STAT_TOUCHING_PAIRS] = ntouch; E->stat[PC_STAT_WALL_CONTACTS] = nwall;
+    E->stat[PC_STAT_LISTED_PAIRS] = E->npairs; E->stat[PC_STAT_SLIDING] = nslide;
+    E->stat[PC_STAT_SUM_CONTACT_FORCE] = sumF; E->stat[PC_STAT_REBUILDS] = (double)E->nbuild;
+    E->stat[PC_STAT_SUM_BODY_FORCE] = sumB;
     if (stat) memcpy(stat, E->stat, sizeof(E->stat));
-    return 0;
+    return cnt[PC_STAT_OVERFLOWS] ? -4 : 0;
+}
+
+/* The shadows (footprint, area) of the last step's contacts, if not yet
+ * computed: the same clipping again on the same poses, path and plane order,
+ * so the polygons are those the step's volumes came from. */
+static void ensure_shadows(engine_t *E) {
+    if (E->shadows_ready) return;
+    int nb = E->nb, nw = E->nw;
+    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
+#ifdef _OPENMP
+#pragma omp parallel num_threads(E->nthreads) if (par)
+#endif
+    {
+        int tid = 0;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+#endif
+        work_t *w = &E->work[tid];
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16) nowait
+#endif
+        for (int k = 0; k < E->npairs; k++) {
+            pair_t *p = E->pairs + k;
+            if (!p->touching) continue;
+            int i = p->i, j = p->j;
+            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+            posed_t A, B;
+            pose_pair(E, i, j, d, w, &A, &B);
+            overlap_t r;
+            overlap_pair(&A, &B, d, w, &r, NULL, p->hot_used, E->fast, 1);
+            p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1]; p->area = r.area;
+        }
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 16)
+#endif
+        for (int b = 0; b < nb; b++) for (int k = 0; k < nw; k++) {
+            int idx = b * nw + k;
+            if (!E->wtouch[idx]) continue;
+            double n[3], *res = E->wres + PC_WALL_DOUBLES * idx;
+            overlap_t r;
+            wall_overlap(E, b, k, w, 1, &r, n);
+            res[4] = r.footprint[0]; res[5] = r.footprint[1]; res[6] = r.area;
+        }
+    }
+    E->shadows_ready = 1;
 }
 
 /* number of touching contacts (particle pairs, then body-wall) of the last step */
@@ -1161,14 +1485,14 @@ int pc_engine_count(const engine_t *E) {
     return n;
 }
 
-/* The contacts of the last step, at most cap: body rows i, j (j = -1 - wall
- * index for walls; i is then the wall side, j the body ... see below),
- * point (3), normal (3, from i to j), normal force on j (3), tangential force
- * on j (3), volume, footprint (2), area. For a wall contact: i1 = -1 - k
- * (the wall), i2 = the body row; the normal points from the wall into the box.
+/* The contacts of the last step, at most cap: body rows i1, i2, point (3),
+ * normal (3, from i1 to i2), normal force on i2 (3), tangential force on i2
+ * (3), volume, footprint (2), area. For a wall contact i1 = -1 - k (wall k)
+ * and i2 = the body row; the normal points from the wall into the box.
  * Returns the number written. */
-int pc_engine_contacts(const engine_t *E, int cap, int *i1, int *i2, double *point, double *normal,
+int pc_engine_contacts(engine_t *E, int cap, int *i1, int *i2, double *point, double *normal,
                        double *fnrm, double *ftan, double *vol, double *fp, double *area) {
+    ensure_shadows(E);
     int m = 0;
     for (int k = 0; k < E->npairs && m < cap; k++) {
         const pair_t *p = E->pairs + k;
@@ -1181,7 +1505,7 @@ int pc_engine_contacts(const engine_t *E, int cap, int *i1, int *i2, double *poi
     for (int b = 0; b < E->nb; b++) for (int k = 0; k < E->nw && m < cap; k++) {
         int idx = b * E->nw + k;
         if (!E->wtouch[idx]) continue;
-        const double *res = E->wres + 10 * idx, *ft = E->wft + 3 * idx;
+        const double *res = E->wres + PC_WALL_DOUBLES * idx, *ft = E->wft + 3 * idx;
         i1[m] = -1 - k; i2[m] = b;
         double n[3] = {0, 0, 0};
         n[E->wall_axis[k]] = E->wall_sign[k];
@@ -1196,12 +1520,12 @@ int pc_engine_contacts(const engine_t *E, int cap, int *i1, int *i2, double *poi
 long pc_engine_memory(const engine_t *E) {
     long b = sizeof(engine_t);
     b += (long)E->cap_pairs * sizeof(pair_t) + (long)E->cap_spare * sizeof(pair_t);
-    b += (long)E->nb * (9 * 2 + 3 * 3) * sizeof(double);
+    b += (long)E->nb * (9 * 2 + 3 * 3 + 4) * sizeof(double);
     b += (long)(E->voffb[E->nb] * 3 + E->toffb[E->nb] * 4) * sizeof(double);
-    b += (long)E->nb * E->nw * 14 * sizeof(double);
+    b += (long)E->nb * E->nw * (PC_WALL_DOUBLES + 4) * sizeof(double);
     for (int k = 0; k < E->nthreads; k++) {
         const work_t *w = &E->work[k];
-        b += 2L * w->cap_pts * 3 * sizeof(double) + 6L * w->cap_poly * sizeof(int) + w->cap_pts * 3L * sizeof(double);
+        b += 2L * w->alloc_pts * 3 * sizeof(double) + 6L * w->cap_poly * sizeof(int) + w->alloc_pts * 3L * sizeof(double);
     }
     return b;
 }
@@ -1224,23 +1548,52 @@ int pc_engine_set_friction(engine_t *E, double mu, double mu_wall) {
 
 void pc_engine_get_friction(const engine_t *E, double *mu) { mu[0] = E->mu; mu[1] = E->mu_wall; }
 
+/* The path of the next steps: 1 (default) proofs of separation, culled
+ * clipping and shadows on demand; 0 the plain path (every listed pair
+ * tested by faces and clipped, shadows every step), kept to check the fast
+ * one against. Both give the same contacts and forces (tested). */
+void pc_engine_set_mode(engine_t *E, int fast) {
+    E->fast = fast ? 1 : 0;
+    if (!E->fast) for (int k = 0; k < E->npairs; k++) drop_axis(E->pairs + k);   /* the plain path's axes are face normals */
+}
+
+/* Shrink the clipping workspace to npts points (tests: force an overflow).
+ * Returns 0, or -1 for more than was allocated or fewer than 16. */
+int pc_engine_set_workspace_points(engine_t *E, int npts) {
+    for (int k = 0; k < E->nthreads; k++) if (npts > E->work[k].alloc_pts || npts < 16) return -1;
+    for (int k = 0; k < E->nthreads; k++) E->work[k].cap_pts = npts;
+    return 0;
+}
+
+/* The sizes of the records the Python side allocates: [0] doubles per pair
+ * record of the state, [1] doubles per wall contact's results, [2] step
+ * counters, [3] state scalars, [4] walls at most. */
+void pc_engine_layout(int *out) {
+    out[0] = PC_PAIR_DOUBLES; out[1] = PC_WALL_DOUBLES; out[2] = PC_NSTAT; out[3] = PC_SCALARS; out[4] = PC_MAX_WALLS;
+}
+
+/* The name of step counter k (see PC_STAT_*), or NULL. */
+const char *pc_engine_stat_name(int k) { return k >= 0 && k < PC_NSTAT ? PC_STAT_NAMES[k] : NULL; }
+
 /* ================================================================== engine state (checkpoints) */
 /* Everything a later step depends on, so that an engine restored from it
  * continues bit for bit like the original: the last poses (x, R), the
- * neighbour list's reference positions, every listed pair (ids, shear history,
- * cached separating axis, touched flag, last results), the wall contacts'
- * histories, flags and results, and the counters. Pair records are 20
- * doubles: ft(3) axis(3) vol c(3) n(3) fp(2) area fn(3) touching. */
-#define PC_PAIR_DOUBLES 20
-
+ * neighbour list's reference positions, every body's motion bound, every
+ * listed pair (ids, shear history, cached separating axis with its gap and
+ * motion bounds, touched flag, clipping path, last results), the wall
+ * contacts' histories, flags and results, and the counters and wall
+ * positions. Pair records are PC_PAIR_DOUBLES doubles:
+ * ft(3) axis(3) vol c(3) n(3) fp(2) area fn(3) touching gap mi0 mj0 hot_used. */
 int pc_engine_npairs(const engine_t *E) { return E->npairs; }
 
-void pc_engine_get_state(const engine_t *E, double *x, double *R, double *xbuild, int *ij, double *prec,
+void pc_engine_get_state(engine_t *E, double *x, double *R, double *xbuild, double *motion, int *ij, double *prec,
                          double *wft, double *wres, int *wtouch, double *scalars) {
     int nb = E->nb, nw = E->nw;
+    if (E->have_prev) ensure_shadows(E);
     memcpy(x, E->x, sizeof(double) * 3 * nb);
     memcpy(R, E->R, sizeof(double) * 9 * nb);
     memcpy(xbuild, E->xbuild, sizeof(double) * 3 * nb);
+    memcpy(motion, E->motion, sizeof(double) * nb);
     for (int k = 0; k < E->npairs; k++) {
         const pair_t *p = E->pairs + k;
         double *r = prec + PC_PAIR_DOUBLES * k;
@@ -1248,20 +1601,22 @@ void pc_engine_get_state(const engine_t *E, double *x, double *R, double *xbuild
         memcpy(r, p->ft, 3 * sizeof(double)); memcpy(r + 3, p->axis, 3 * sizeof(double));
         r[6] = p->vol; memcpy(r + 7, p->c, 3 * sizeof(double)); memcpy(r + 10, p->n, 3 * sizeof(double));
         memcpy(r + 13, p->fp, 2 * sizeof(double)); r[15] = p->area; memcpy(r + 16, p->fn, 3 * sizeof(double));
-        r[19] = p->touching;
+        r[19] = p->touching; r[20] = p->gap; r[21] = p->mi0; r[22] = p->mj0; r[23] = p->hot_used;
     }
     memcpy(wft, E->wft, sizeof(double) * 3 * nb * nw);
-    memcpy(wres, E->wres, sizeof(double) * 10 * nb * nw);
+    memcpy(wres, E->wres, sizeof(double) * PC_WALL_DOUBLES * nb * nw);
     memcpy(wtouch, E->wtouch, sizeof(int) * nb * nw);
+    memset(scalars, 0, sizeof(double) * PC_SCALARS);
     scalars[0] = E->have_prev; scalars[1] = (double)E->nbuild;
+    for (int k = 0; k < nw; k++) scalars[2 + k] = E->wall_pos[k];
 }
 
 /* Restore a state taken by pc_engine_get_state from an engine built with the
  * same shapes, bodies and walls. Returns 0, -1 (memory) or -3 (a pair id out
  * of range or not sorted: not a state of this engine). */
-int pc_engine_set_state(engine_t *E, const double *x, const double *R, const double *xbuild, int npairs,
-                        const int *ij, const double *prec, const double *wft, const double *wres, const int *wtouch,
-                        const double *scalars) {
+int pc_engine_set_state(engine_t *E, const double *x, const double *R, const double *xbuild, const double *motion,
+                        int npairs, const int *ij, const double *prec, const double *wft, const double *wres,
+                        const int *wtouch, const double *scalars) {
     int nb = E->nb, nw = E->nw;
     for (int k = 0; k < npairs; k++) {
         int i = ij[2 * k], j = ij[2 * k + 1];
@@ -1276,6 +1631,7 @@ int pc_engine_set_state(engine_t *E, const double *x, const double *R, const dou
     memcpy(E->x, x, sizeof(double) * 3 * nb);
     memcpy(E->R, R, sizeof(double) * 9 * nb);
     memcpy(E->xbuild, xbuild, sizeof(double) * 3 * nb);
+    memcpy(E->motion, motion, sizeof(double) * nb);
     E->npairs = npairs;
     for (int k = 0; k < npairs; k++) {
         pair_t *p = E->pairs + k;
@@ -1285,12 +1641,15 @@ int pc_engine_set_state(engine_t *E, const double *x, const double *R, const dou
         memcpy(p->ft, r, 3 * sizeof(double)); memcpy(p->axis, r + 3, 3 * sizeof(double));
         p->vol = r[6]; memcpy(p->c, r + 7, 3 * sizeof(double)); memcpy(p->n, r + 10, 3 * sizeof(double));
         memcpy(p->fp, r + 13, 2 * sizeof(double)); p->area = r[15]; memcpy(p->fn, r + 16, 3 * sizeof(double));
-        p->touching = r[19] != 0;
+        p->touching = r[19] != 0; p->gap = r[20]; p->mi0 = r[21]; p->mj0 = r[22]; p->hot_used = r[23] != 0;
     }
     memcpy(E->wft, wft, sizeof(double) * 3 * nb * nw);
-    memcpy(E->wres, wres, sizeof(double) * 10 * nb * nw);
+    memcpy(E->wres, wres, sizeof(double) * PC_WALL_DOUBLES * nb * nw);
     memcpy(E->wtouch, wtouch, sizeof(int) * nb * nw);
     E->have_prev = scalars[0] != 0;
     E->nbuild = (long)scalars[1];
+    for (int k = 0; k < nw; k++) E->wall_pos[k] = scalars[2 + k];
+    pose_all(E, 0);                 /* the posed vertices of these poses (contacts can be asked for at once) */
+    E->shadows_ready = 1;           /* the records carry the shadows */
     return 0;
 }
