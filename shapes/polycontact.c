@@ -42,6 +42,7 @@
 #define PC_OK 0
 #define PC_DEGENERATE_NORMAL 1   /* |S_A| ~ 0: normal from the centres (or z) */
 #define PC_WORKSPACE 2           /* workspace overflow (should not happen)    */
+#define PC_HASH 256              /* slots of a cut's crossing-edge table (a power of two) */
 #define PC_PARALLEL_MIN 400      /* pairs + body-wall tests below which a step runs on one thread */
 
 /* ------------------------------------------------------------------ small vector helpers */
@@ -102,12 +103,26 @@ typedef struct {
     double *key;        /* per plane of B: how much it faces A (hot path) */
     double *vdist;      /* per vertex of A: distance to the first plane (hot path) */
     int alloc_pts;      /* points allocated (cap_pts may be set lower, for tests) */
+    /* the same polyhedron with shared vertices (the fast path): two meshes
+     * (double buffering), each vertices (x, y, z) and faces as cycles of
+     * vertex indices; scratch for one cut */
+    int cap_mv, cap_mf, cap_mi, alloc_mv;
+    double *mv[2];
+    int *mfs[2], *mfc[2], *mft[2], *mfi[2];
+    int mnv[2], mnf[2];
+    double *md;         /* per vertex: distance to the cutting plane */
+    int *mmap;          /* per vertex: its index in the cut mesh, or -1 */
+    int *mlink;         /* per new vertex: the next one along the cap */
+    int *medge;         /* crossing edges: (a, b, new vertex) */
+    int hslot[PC_HASH], hstamp[PC_HASH], stamp;   /* crossing edge -> its row in medge, for the cut `stamp` */
 } work_t;
 
 static void work_free(work_t *w) {
     for (int k = 0; k < 2; k++) { free(w->start[k]); free(w->count[k]); free(w->tag[k]); free(w->pts[k]); }
     free(w->capp); free(w->dist); free(w->order); free(w->proj); free(w->hull); free(w->dA); free(w->nout);
     free(w->key); free(w->vdist);
+    for (int k = 0; k < 2; k++) { free(w->mv[k]); free(w->mfs[k]); free(w->mfc[k]); free(w->mft[k]); free(w->mfi[k]); }
+    free(w->md); free(w->mmap); free(w->mlink); free(w->medge);
     memset(w, 0, sizeof(*w));
 }
 
@@ -135,6 +150,20 @@ static int work_init(work_t *w, int max_t, int max_v) {
     if (!w->capp || !w->dist || !w->order || !w->proj || !w->hull || !w->dA || !w->nout || !w->key || !w->vdist) {
         work_free(w); return -1;
     }
+    /* a convex polyhedron with V vertices has at most 2V - 4 faces and 3V - 6
+     * edges; a cut adds at most one vertex per edge and one face */
+    w->cap_mv = w->alloc_mv = 4 * (max_v + 2 * max_t) + 64;
+    w->cap_mf = 3 * max_t + 32;
+    w->cap_mi = 6 * w->cap_mv + 64;
+    for (int k = 0; k < 2; k++) {
+        w->mv[k] = malloc(sizeof(double) * 3 * w->cap_mv);
+        w->mfs[k] = malloc(sizeof(int) * w->cap_mf); w->mfc[k] = malloc(sizeof(int) * w->cap_mf);
+        w->mft[k] = malloc(sizeof(int) * w->cap_mf); w->mfi[k] = malloc(sizeof(int) * w->cap_mi);
+        if (!w->mv[k] || !w->mfs[k] || !w->mfc[k] || !w->mft[k] || !w->mfi[k]) { work_free(w); return -1; }
+    }
+    w->md = malloc(sizeof(double) * w->cap_mv); w->mmap = malloc(sizeof(int) * w->cap_mv);
+    w->mlink = malloc(sizeof(int) * w->cap_mv); w->medge = malloc(sizeof(int) * 3 * w->cap_mv);
+    if (!w->md || !w->mmap || !w->mlink || !w->medge) { work_free(w); return -1; }
     return 0;
 }
 
@@ -142,10 +171,13 @@ static int work_init(work_t *w, int max_t, int max_v) {
 typedef struct {
     double volume, centroid[3], normal[3], footprint[2], area;
     int status;
+    int fallback;       /* the shared-vertex cut gave up and polygons were clipped */
 } overlap_t;
 
 static void overlap_zero(overlap_t *r) {
+    int fb = r->fallback;
     memset(r, 0, sizeof(*r));
+    r->fallback = fb;
     r->centroid[0] = r->centroid[1] = r->centroid[2] = NAN;
     r->normal[0] = r->normal[1] = r->normal[2] = NAN;
 }
@@ -258,6 +290,37 @@ static void shadow(const double *pts, int npts, const double *n, work_t *w, doub
     if (w1 >= w2) { fp[0] = w1; fp[1] = w2; } else { fp[0] = w2; fp[1] = w1; }
 }
 
+/* From the sums over the faces (6 V, the centroid moments about o, S_A and
+ * the total face area): volume, centroid, normal, and the shadow of the
+ * npts points. */
+static void finish_overlap(work_t *w, double V6, const double *C, const double *o, const double *SA, double Stot,
+                           const double *xB_minus_xA, const double *spts, int npts, int want_shadow, overlap_t *r) {
+    double V = V6 / 6.0;
+    if (!(V > 0)) { overlap_zero(r); return; }
+    r->volume = V;
+    r->centroid[0] = o[0] + C[0] / (4 * V6); r->centroid[1] = o[1] + C[1] / (4 * V6); r->centroid[2] = o[2] + C[2] / (4 * V6);
+    double s = sqrt(dot3(SA, SA));
+    r->status = PC_OK;
+    if (s > 1e-9 * Stot && s > 0) {
+        r->normal[0] = SA[0] / s; r->normal[1] = SA[1] / s; r->normal[2] = SA[2] / s;
+    } else {
+        /* B inside A or identical poses: no net area on A's side; fall back
+         * to the line of centres, else +z */
+        r->status = PC_DEGENERATE_NORMAL;
+        double l = xB_minus_xA ? sqrt(dot3(xB_minus_xA, xB_minus_xA)) : 0;
+        if (l > 0) { r->normal[0] = xB_minus_xA[0] / l; r->normal[1] = xB_minus_xA[1] / l; r->normal[2] = xB_minus_xA[2] / l; }
+        else { r->normal[0] = 0; r->normal[1] = 0; r->normal[2] = 1; }
+    }
+    /* the shadow, from the points; it does not enter the contact law, so the
+     * engine computes it only for the contacts it reports (NaN until then) */
+    if (!want_shadow) {
+        r->area = NAN; r->footprint[0] = r->footprint[1] = NAN;
+        return;
+    }
+    shadow(spts, npts, r->normal, w, &r->area, r->footprint);
+}
+
+
 /* Finish: volume, centroid, S_A and the shadow from the polygon set. */
 static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, const double *xB_minus_xA,
                       int want_shadow, overlap_t *r) {
@@ -266,7 +329,6 @@ static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, con
     if (np == 0) { overlap_zero(r); return; }
     const double *o = pts + 3 * start[0];
     double V6 = 0, C[3] = {0, 0, 0}, SA[3] = {0, 0, 0}, Stot = 0;
-    int npts = 0;
     for (int f = 0; f < np; f++) {
         const double *p0 = pts + 3 * start[f];
         double av[3] = {0, 0, 0};
@@ -292,34 +354,10 @@ static void integrate(work_t *w, int buf, int np, int ntA, const double *nA, con
             double a = dot3(av, nf);
             SA[0] += a * nf[0]; SA[1] += a * nf[1]; SA[2] += a * nf[2];
         }
-        npts += count[f];
-    }
-    double V = V6 / 6.0;
-    if (!(V > 0)) { overlap_zero(r); return; }
-    r->volume = V;
-    r->centroid[0] = o[0] + C[0] / (4 * V6); r->centroid[1] = o[1] + C[1] / (4 * V6); r->centroid[2] = o[2] + C[2] / (4 * V6);
-    double s = sqrt(dot3(SA, SA));
-    r->status = PC_OK;
-    if (s > 1e-9 * Stot && s > 0) {
-        r->normal[0] = SA[0] / s; r->normal[1] = SA[1] / s; r->normal[2] = SA[2] / s;
-    } else {
-        /* B inside A or identical poses: no net area on A's side; fall back
-         * to the line of centres, else +z */
-        r->status = PC_DEGENERATE_NORMAL;
-        double l = xB_minus_xA ? sqrt(dot3(xB_minus_xA, xB_minus_xA)) : 0;
-        if (l > 0) { r->normal[0] = xB_minus_xA[0] / l; r->normal[1] = xB_minus_xA[1] / l; r->normal[2] = xB_minus_xA[2] / l; }
-        else { r->normal[0] = 0; r->normal[1] = 0; r->normal[2] = 1; }
-    }
-    /* the shadow, from the polygon vertices (contiguous in the buffer); it
-     * does not enter the contact law, so the engine computes it only for the
-     * contacts it reports (NaN until then) */
-    if (!want_shadow) {
-        r->area = NAN; r->footprint[0] = r->footprint[1] = NAN;
-        return;
     }
     int first = start[0];
     int last = start[np - 1] + count[np - 1];
-    shadow(pts + 3 * first, last - first, r->normal, w, &r->area, r->footprint);
+    finish_overlap(w, V6, C, o, SA, Stot, xB_minus_xA, pts + 3 * first, last - first, want_shadow, r);
 }
 
 /* Clip the current polygon set (buffer buf, np polygons) by the plane
@@ -415,6 +453,248 @@ static void bounding_sphere(const work_t *w, int buf, int np, double *c, double 
     *r = sqrt(m) * (1 + 1e-12) + 1e-300;
 }
 
+/* ------------------------------------------------------------------ shared-vertex clipping (fast path) */
+/* The polyhedron A (its vertices and triangles) as mesh 0. */
+static void mesh_start(work_t *w, const posed_t *A) {
+    memcpy(w->mv[0], A->v, sizeof(double) * 3 * A->nv);
+    for (int f = 0; f < A->nt; f++) {
+        w->mfs[0][f] = 3 * f; w->mfc[0][f] = 3; w->mft[0][f] = f;
+        w->mfi[0][3 * f] = A->t[3 * f]; w->mfi[0][3 * f + 1] = A->t[3 * f + 1]; w->mfi[0][3 * f + 2] = A->t[3 * f + 2];
+    }
+    w->mnv[0] = A->nv; w->mnf[0] = A->nt;
+}
+
+/* Cut mesh buf by the plane n.x <= h (outside: n.x - h > eps, as
+ * clip_plane). Each vertex's distance is computed once; a crossing edge gets
+ * one new vertex, cut from its inside end as clip_plane does (the same
+ * bits), shared by its two faces; the cap is traced, not sorted: a cut face
+ * runs inside ... X (leaves) ... Y (re-enters) ..., and the cap, which
+ * shares the segment X-Y, runs Y -> X. Returns -1 when nothing is outside
+ * (unchanged), else the face count of mesh 1 - buf (0: nothing left), or -2
+ * when the cut does not look like a convex one (a face crossed other than
+ * twice, a cap that does not close, a full workspace): the caller then
+ * clips by polygons. */
+static int mesh_clip(work_t *w, int buf, const double *n, double h, int captag, double eps) {
+    int nv = w->mnv[buf], nf = w->mnf[buf];
+    const double *V = w->mv[buf];
+    const int *fs = w->mfs[buf], *fc = w->mfc[buf], *ft = w->mft[buf], *fi = w->mfi[buf];
+    double *d = w->md;
+    int *map = w->mmap, any = 0, nin = 0;
+    for (int i = 0; i < nv; i++) { d[i] = dot3(V + 3 * i, n) - h; int out = d[i] > eps; any |= out; nin += !out; }
+    if (!any) return -1;
+    int o = 1 - buf;
+    double *V2 = w->mv[o];
+    int *fs2 = w->mfs[o], *fc2 = w->mfc[o], *ft2 = w->mft[o], *fi2 = w->mfi[o];
+    if (nin == 0) { w->mnv[o] = 0; w->mnf[o] = 0; return 0; }
+    int nv2 = 0;
+    for (int i = 0; i < nv; i++) {
+        if (d[i] > eps) { map[i] = -1; continue; }
+        memcpy(V2 + 3 * nv2, V + 3 * i, 3 * sizeof(double));
+        map[i] = nv2++;
+    }
+    int first_new = nv2, ne = 0, nf2 = 0, ni2 = 0, *E = w->medge, *link = w->mlink;
+    int stamp = ++w->stamp;
+    if (stamp == 0x7fffffff) { memset(w->hstamp, 0, sizeof(w->hstamp)); w->stamp = stamp = 1; }
+    for (int f = 0; f < nf; f++) {
+        int st = fs[f], cn = fc[f], kin = 0;
+        for (int i = 0; i < cn; i++) kin += map[fi[st + i]] >= 0;
+        if (kin == 0) continue;                                     /* wholly outside */
+        if (nf2 + 2 > w->cap_mf || ni2 + cn + 2 > w->cap_mi) return -2;
+        fs2[nf2] = ni2; ft2[nf2] = ft[f];
+        if (kin == cn) {                                            /* wholly inside */
+            for (int i = 0; i < cn; i++) fi2[ni2++] = map[fi[st + i]];
+            fc2[nf2++] = cn;
+            continue;
+        }
+        int X = -1, Y = -1, cross = 0, m = 0;
+        for (int i = 0; i < cn; i++) {
+            int a = fi[st + i], b = fi[st + (i + 1 == cn ? 0 : i + 1)];
+            int ina = map[a] >= 0, inb = map[b] >= 0;
+            if (ina) { fi2[ni2 + m++] = map[a]; }
+            if (ina == inb) continue;
+            int lo = a < b ? a : b, hi = a < b ? b : a, k = -1;
+            unsigned slot = ((unsigned)lo * 2654435761u ^ (unsigned)hi * 40503u) & (PC_HASH - 1);
+            while (w->hstamp[slot] == stamp) {             /* open addressing: a filled slot of this cut */
+                const int *e = E + 3 * w->hslot[slot];
+                if (e[0] == lo && e[1] == hi) { k = e[2]; break; }
+                slot = (slot + 1) & (PC_HASH - 1);
+            }
+            if (k < 0) {
+                if (nv2 + 1 > w->cap_mv || ne + 1 >= PC_HASH / 2) return -2;
+                w->hstamp[slot] = stamp; w->hslot[slot] = ne;
+                int pi = ina ? a : b, po = ina ? b : a;               /* from the inside end, as clip_plane */
+                double di = d[pi], dout = d[po];
+                double t = di / (di - dout);
+                t = t < 0 ? 0 : (t > 1 ? 1 : t);
+                const double *P = V + 3 * pi, *Q = V + 3 * po;
+                double *x = V2 + 3 * nv2;
+                x[0] = P[0] + t * (Q[0] - P[0]); x[1] = P[1] + t * (Q[1] - P[1]); x[2] = P[2] + t * (Q[2] - P[2]);
+                link[nv2 - first_new] = -1;
+                k = nv2++;
+                E[3 * ne] = lo; E[3 * ne + 1] = hi; E[3 * ne + 2] = k; ne++;
+            }
+            fi2[ni2 + m++] = k;
+            if (ina) X = k; else Y = k;
+            cross++;
+        }
+        if (cross != 2 || X < 0 || Y < 0) return -2;
+        if (link[Y - first_new] >= 0) return -2;                   /* two faces re-enter at one point */
+        link[Y - first_new] = X;
+        if (m >= 3) { fc2[nf2++] = m; ni2 += m; }
+    }
+    int nnew = nv2 - first_new;
+    if (nnew >= 3) {                                                /* the cap, traced */
+        if (nf2 + 1 > w->cap_mf || ni2 + nnew > w->cap_mi) return -2;
+        int v = first_new, m = 0;
+        do {
+            fi2[ni2 + m++] = v;
+            v = link[v - first_new];
+            if (v < 0 || m > nnew) return -2;
+        } while (v != first_new);
+        if (m != nnew) return -2;                                  /* more than one loop */
+        fs2[nf2] = ni2; fc2[nf2] = m; ft2[nf2] = captag; nf2++; ni2 += m;
+    }
+    w->mnv[o] = nv2; w->mnf[o] = nf2;
+    return nf2;
+}
+
+/* centre (mean of the vertices) and radius of a sphere holding mesh buf */
+static void mesh_sphere(const work_t *w, int buf, double *c, double *r) {
+    const double *V = w->mv[buf];
+    int nv = w->mnv[buf];
+    c[0] = c[1] = c[2] = 0;
+    for (int i = 0; i < nv; i++) { c[0] += V[3 * i]; c[1] += V[3 * i + 1]; c[2] += V[3 * i + 2]; }
+    c[0] /= nv; c[1] /= nv; c[2] /= nv;
+    double m = 0;
+    for (int i = 0; i < nv; i++) {
+        double e[3] = {V[3 * i] - c[0], V[3 * i + 1] - c[1], V[3 * i + 2] - c[2]};
+        double l = dot3(e, e);
+        if (l > m) m = l;
+    }
+    *r = sqrt(m) * (1 + 1e-12) + 1e-300;
+}
+
+/* integrate() for mesh buf: volume, centroid, S_A and normal, the shadow
+ * from the (unique) vertices */
+static void mesh_integrate(work_t *w, int buf, int ntA, const double *nA, const double *xB_minus_xA,
+                           int want_shadow, overlap_t *r) {
+    int nf = w->mnf[buf];
+    const double *V = w->mv[buf];
+    const int *fs = w->mfs[buf], *fc = w->mfc[buf], *ft = w->mft[buf], *fi = w->mfi[buf];
+    if (nf == 0) { overlap_zero(r); return; }
+    const double *o = V + 3 * fi[fs[0]];
+    double V6 = 0, C[3] = {0, 0, 0}, SA[3] = {0, 0, 0}, Stot = 0;
+    for (int f = 0; f < nf; f++) {
+        const int *ix = fi + fs[f];
+        const double *p0 = V + 3 * ix[0];
+        double av[3] = {0, 0, 0};
+        for (int i = 1; i + 1 < fc[f]; i++) {
+            const double *p1 = V + 3 * ix[i], *p2 = V + 3 * ix[i + 1];
+            double a[3] = {p0[0] - o[0], p0[1] - o[1], p0[2] - o[2]};
+            double b[3] = {p1[0] - o[0], p1[1] - o[1], p1[2] - o[2]};
+            double c[3] = {p2[0] - o[0], p2[1] - o[1], p2[2] - o[2]};
+            double bc[3];
+            cross3(b, c, bc);
+            double v6 = dot3(a, bc);
+            V6 += v6;
+            C[0] += v6 * (a[0] + b[0] + c[0]); C[1] += v6 * (a[1] + b[1] + c[1]); C[2] += v6 * (a[2] + b[2] + c[2]);
+            double e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+            double e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+            double t[3];
+            cross3(e1, e2, t);
+            av[0] += 0.5 * t[0]; av[1] += 0.5 * t[1]; av[2] += 0.5 * t[2];
+        }
+        Stot += sqrt(dot3(av, av));
+        if (ft[f] >= 0 && ft[f] < ntA) {
+            const double *nn = nA + 3 * ft[f];
+            double a = dot3(av, nn);
+            SA[0] += a * nn[0]; SA[1] += a * nn[1]; SA[2] += a * nn[2];
+        }
+    }
+    finish_overlap(w, V6, C, o, SA, Stot, xB_minus_xA, V, w->mnv[buf], want_shadow, r);
+}
+
+/* The overlap by shared-vertex cuts (the fast path): the same planes in the
+ * same order as overlap_pair's culled path, each vertex and each crossing
+ * point computed once. The vertices are those of the polygon path to the bit
+ * (same formulas, same inputs); the faces are cut into the same polygons but
+ * the caps start at another vertex, so volumes agree to round-off. Returns
+ * 0, or -2 when a cut gave up (the caller clips polygons). */
+static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
+                        double *sep_axis, int hot, int want_shadow, double eps) {
+    int ntB = B->nt, *ord = w->order, m = 0, buf = 0, nf;
+    double sc[3] = {0, 0, 0}, sr = INFINITY;
+    mesh_start(w, A);
+    nf = A->nt;
+    if (hot && dAB) {
+        double *key = w->key;
+        int k0 = -1;
+        for (int k = 0; k < ntB; k++) {
+            key[k] = -dot3(B->n + 3 * k, dAB);
+            if (!(B->dup && B->dup[k]) && (k0 < 0 || key[k] > key[k0])) k0 = k;
+        }
+        if (k0 < 0) { overlap_zero(r); return 0; }
+        int q = mesh_clip(w, 0, B->n + 3 * k0, B->h[k0], A->nt + k0, eps);
+        if (q == -2) return -2;
+        if (q >= 0) {
+            nf = q; buf = 1;
+            if (nf > 0) mesh_sphere(w, buf, sc, &sr);
+        }
+        for (int k = 0; k < ntB && nf > 0; k++) {
+            if (k == k0 || (B->dup && B->dup[k])) continue;
+            if (dot3(B->n + 3 * k, sc) - B->h[k] + sr <= 0) continue;
+            int j = m++;
+            while (j > 0 && key[ord[j - 1]] < key[k]) { ord[j] = ord[j - 1]; j--; }
+            ord[j] = k;
+        }
+    } else {
+        int *nout = w->nout;
+        for (int k = 0; k < ntB; k++) {
+            const double *n = B->n + 3 * k;
+            double h = B->h[k];
+            int c = 0;
+            for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
+            if (c == A->nv) {
+                overlap_zero(r);
+                if (sep_axis) { sep_axis[0] = -n[0]; sep_axis[1] = -n[1]; sep_axis[2] = -n[2]; }
+                return 0;
+            }
+            nout[k] = c;
+        }
+        for (int k = 0; k < A->nt; k++) {
+            const double *n = A->n + 3 * k;
+            double h = A->h[k];
+            int c = 0;
+            for (int i = 0; i < B->nv; i++) c += dot3(B->v + 3 * i, n) - h > 0;
+            if (c == B->nv) {
+                overlap_zero(r);
+                if (sep_axis) memcpy(sep_axis, n, 3 * sizeof(double));
+                return 0;
+            }
+        }
+        for (int k = 0; k < ntB; k++) {
+            if (nout[k] == 0) continue;
+            int j = m++;
+            while (j > 0 && nout[ord[j - 1]] < nout[k]) { ord[j] = ord[j - 1]; j--; }
+            ord[j] = k;
+        }
+    }
+    for (int i = 0; i < m && nf > 0; i++) {
+        int k = ord[i];
+        if (B->dup && B->dup[k]) continue;
+        if (dot3(B->n + 3 * k, sc) - B->h[k] + sr <= 0) continue;
+        int q = mesh_clip(w, buf, B->n + 3 * k, B->h[k], A->nt + k, eps);
+        if (q == -2) return -2;
+        if (q >= 0) {
+            nf = q; buf = 1 - buf;
+            if (nf > 0) mesh_sphere(w, buf, sc, &sr);
+        }
+    }
+    if (nf == 0) { overlap_zero(r); return 0; }
+    mesh_integrate(w, buf, A->nt, A->n, dAB, want_shadow, r);
+    return 0;
+}
+
 /* Overlap of A and B posed in the same frame. A's triangles are clipped by
  * B's planes (those that cut A, most cutting first). dAB is an optional
  * centre difference for the degenerate-normal fallback.
@@ -450,6 +730,12 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
         ra = q > ra ? q : ra;
     }
     double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
+    r->fallback = 0;
+    if (cull) {
+        if (overlap_mesh(A, B, dAB, w, r, sep_axis, hot, want_shadow, eps) == 0) { r->fallback = 0; return; }
+        r->fallback = 1;
+        if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
+    }
     if (hot && dAB && cull) {
         double *key = w->key;
         int k0 = -1;
@@ -702,7 +988,7 @@ int pc_batch_overlap(int ns, const int *voff, const double *v, const int *toff, 
             posed_t A, B;
             pose_shape(&T, sa[p], RA, zero, va, na, ha, &A);
             pose_shape(&T, sb[p], RB, d, vb, nb, hb, &B);
-            overlap_t r;
+            overlap_t r = {0};
             overlap_pair(&A, &B, d, &w, &r, NULL, 0, 0, 1);
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
             for (int c = 0; c < 3; c++) {
@@ -758,7 +1044,7 @@ int pc_batch_wall(int ns, const int *voff, const double *v, const int *toff, con
             double nn[3] = {m[0], m[1], m[2]};
             double h = dot3(m, rel);
             /* the overlap is where m.x < h: clip with plane n = m, keep n.x <= h */
-            overlap_t r;
+            overlap_t r = {0};
             overlap_halfspace(&A, nn, h, &w, 1, &r);
             /* overlap_halfspace returns normal -n = -m; from the wall to the body is +m */
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
@@ -791,12 +1077,13 @@ enum {
     PC_STAT_APART_AXIS,          /* apart: cached axis re-measured with support functions */
     PC_STAT_APART_SEARCH,        /* apart: a separating axis found by the search */
     PC_STAT_OVERFLOWS,           /* pairs or wall contacts that overflowed the clipping workspace */
+    PC_STAT_CLIP_FALLBACKS,      /* pairs the shared-vertex cuts gave up on (clipped as polygons) */
     PC_NSTAT
 };
 static const char *PC_STAT_NAMES[PC_NSTAT] = {
     "touching_pairs", "wall_contacts", "listed_pairs", "sliding_contacts", "sum_contact_force", "rebuilds",
     "sum_body_force", "clipped_pairs", "apart_by_spheres", "apart_by_motion_bound", "apart_by_cached_axis",
-    "apart_by_axis_search", "workspace_overflows"};
+    "apart_by_axis_search", "workspace_overflows", "clip_fallbacks"};
 
 #define PC_MAX_WALLS 16
 #define PC_PAIR_DOUBLES 24       /* a pair's record in the engine state (see pc_engine_get_state) */
@@ -1215,11 +1502,12 @@ static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
     }
     posed_t A, B;
     pose_pair(E, i, j, d, w, &A, &B);
-    overlap_t r;
+    overlap_t r = {0};
     double sep[3];
     cnt[PC_STAT_CLIPPED]++;
     overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast);
     p->hot_used = hot;
+    cnt[PC_STAT_CLIP_FALLBACKS] += r.fallback;
     if (r.status == PC_WORKSPACE) { cnt[PC_STAT_OVERFLOWS]++; p->vol = 0; memset(p->ft, 0, sizeof(p->ft)); return; }
     if (!(r.volume > 0)) {
         memset(p->ft, 0, sizeof(p->ft));
@@ -1285,7 +1573,7 @@ static void walls_step(engine_t *E, int b, work_t *w, int *cnt) {
         for (int a = 0; a < nvb; a++) { double s = sg * vb[3 * a + ax]; if (s < mn) mn = s; }
         if (gap + mn >= 0) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
         double n[3];
-        overlap_t r;
+        overlap_t r = {0};
         wall_overlap(E, b, k, w, !E->fast, &r, n);
         if (r.status == PC_WORKSPACE) { cnt[PC_STAT_OVERFLOWS]++; memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
         if (!(r.volume > 0)) { memset(E->wft + 3 * idx, 0, 3 * sizeof(double)); continue; }
@@ -1458,7 +1746,7 @@ static void ensure_shadows(engine_t *E) {
             double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
             posed_t A, B;
             pose_pair(E, i, j, d, w, &A, &B);
-            overlap_t r;
+            overlap_t r = {0};
             overlap_pair(&A, &B, d, w, &r, NULL, p->hot_used, E->fast, 1);
             p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1]; p->area = r.area;
         }
@@ -1469,7 +1757,7 @@ static void ensure_shadows(engine_t *E) {
             int idx = b * nw + k;
             if (!E->wtouch[idx]) continue;
             double n[3], *res = E->wres + PC_WALL_DOUBLES * idx;
-            overlap_t r;
+            overlap_t r = {0};
             wall_overlap(E, b, k, w, 1, &r, n);
             res[4] = r.footprint[0]; res[5] = r.footprint[1]; res[6] = r.area;
         }
@@ -1557,11 +1845,16 @@ void pc_engine_set_mode(engine_t *E, int fast) {
     if (!E->fast) for (int k = 0; k < E->npairs; k++) drop_axis(E->pairs + k);   /* the plain path's axes are face normals */
 }
 
-/* Shrink the clipping workspace to npts points (tests: force an overflow).
- * Returns 0, or -1 for more than was allocated or fewer than 16. */
+/* Shrink the clipping workspaces to npts points (tests: force an
+ * overflow; the shared-vertex cuts then give up and the polygon clipping
+ * overflows). Returns 0, or -1 for more than was allocated or fewer than 16. */
 int pc_engine_set_workspace_points(engine_t *E, int npts) {
     for (int k = 0; k < E->nthreads; k++) if (npts > E->work[k].alloc_pts || npts < 16) return -1;
-    for (int k = 0; k < E->nthreads; k++) E->work[k].cap_pts = npts;
+    for (int k = 0; k < E->nthreads; k++) {
+        work_t *w = &E->work[k];
+        w->cap_pts = npts;
+        w->cap_mv = npts < w->alloc_mv ? npts : w->alloc_mv;
+    }
     return 0;
 }
 

@@ -231,8 +231,11 @@ def test_bad_input_is_refused_clearly(grains):
         eng.step(pos[:-1], quat)
     with pytest.raises(ValueError, match="shape index out of range"):
         ContactEngine(verts, tris, np.arange(len(verts)) + 1, sizes, K_V, KT_COEF, MU, 0, 0.05)
-    eng.step(pos, quat)                                # a refused step leaves the engine usable
-    assert eng.n_pair_contacts >= 0
+    F, T, _ = eng.step(pos, quat)                      # a refused step leaves the engine usable
+    ref = engine_for(verts, tris, sizes, walls=False)
+    F2, T2, _ = ref.step(pos, quat)
+    np.testing.assert_array_equal(F, F2)
+    np.testing.assert_array_equal(T, T2)
 
 
 def test_a_restored_state_continues_bit_for_bit(grains):
@@ -273,3 +276,212 @@ def test_a_restored_state_continues_bit_for_bit(grains):
     bad = dict(saved, pair_ids=saved["pair_ids"][:, ::-1].copy())
     with pytest.raises(ValueError, match="pair ids"):
         b.set_state(bad)
+
+
+# ---------------------------------------------------------------- the fast path against the plain one
+# The fast path (proofs of separation, shared-vertex cuts) and the plain one
+# (face tests and polygon clipping for every listed pair) compute the same
+# overlap vertices bit for bit; only the order in which the cap polygons are
+# summed differs, so volumes, centroids and normals differ by a few ulps of
+# the overlap's own size, and so do forces and (through the tangential
+# history) the forces of later steps. REL: 1e-12 of the largest force, about
+# 5000 ulps, covers that after tens of steps; contact sets must be equal.
+REL = 1e-12
+
+
+def contact_rows(eng):
+    c = eng.contacts()
+    key = c["i"] * (eng.n + 1) + c["j"]
+    o = np.argsort(key)
+    return key[o], {k: v[o] for k, v in c.items()}
+
+
+def step_both(fast, plain, pos, quat, walls=None):
+    """One step of both engines; asserts they agree; returns the fast one's contacts."""
+    out_f = [x.copy() for x in fast.step(pos, quat, walls)]
+    out_p = [x.copy() for x in plain.step(pos, quat, walls)]
+    kf, cf = contact_rows(fast)
+    kp, cp = contact_rows(plain)
+    np.testing.assert_array_equal(kf, kp)              # no contact missed, none added
+    scale = max(np.abs(out_p[0]).max(), 1e-300)
+    for a, b in zip(out_f, out_p):
+        assert a.size == 0 or np.abs(a - b).max() <= REL * scale
+    if len(kf):
+        vmax = cp["volume"].max()
+        assert np.abs(cf["volume"] - cp["volume"]).max() <= REL * vmax
+        np.testing.assert_allclose(cf["normal"], cp["normal"], rtol=0, atol=1e-9)
+        np.testing.assert_allclose(cf["area"], cp["area"], rtol=1e-9, atol=1e-12 * np.nanmax(cp["area"]))
+    return cf
+
+
+def pair_engines(verts, tris, sizes, skin=0.05):
+    mk = lambda fast: ContactEngine(verts, tris, np.arange(len(verts)), sizes, K_V, KT_COEF, MU, 0.0, skin,
+                                    walls=False, threads=1, fast=fast)
+    return mk(True), mk(False)
+
+
+def test_fast_path_equals_plain_path_on_a_moving_packing(grains):
+    """64 grains jostled for 40 steps (contacts form, slide and break, the
+    list is rebuilt): at every step the fast and plain engines find the same
+    contacts, and the same forces and torques to REL; both also match the
+    one-pair geometry (batch_overlap) of the step's poses; the separation
+    proofs do most of the work."""
+    verts, tris, pos, quat, sizes = packing(grains, 4, seed=21)
+    fast, plain = pair_engines(verts, tris, sizes)
+    rng = np.random.default_rng(22)
+    proved = clipped = 0
+    q = quat.copy()
+    for k in range(40):
+        pos = pos + rng.normal(scale=4e-3, size=pos.shape)
+        dq = np.roll(Rotation.from_rotvec(rng.normal(scale=2e-2, size=(len(pos), 3))).as_quat(), 1, axis=1)
+        q = np.roll((Rotation.from_quat(np.roll(dq, -1, axis=1)) * Rotation.from_quat(np.roll(q, -1, axis=1)))
+                    .as_quat(), 1, axis=1)
+        c = step_both(fast, plain, pos, q)
+        st = fast.stats
+        proved += st["apart_by_motion_bound"] + st["apart_by_cached_axis"] + st["apart_by_axis_search"]
+        clipped += st["clipped_pairs"]
+        assert st["clip_fallbacks"] == 0 and plain.stats["apart_by_motion_bound"] == 0
+        if k % 10 == 9:
+            i, j, ref = reference_pairs(verts, tris, pos, q)
+            np.testing.assert_array_equal(c["i"], i)
+            np.testing.assert_array_equal(c["j"], j)
+            np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
+    assert proved > clipped > 0
+
+
+@pytest.mark.parametrize("depth", [1e-9, 1e-6, 1e-3, 0.1])
+def test_hard_cases_exact_volumes_on_both_paths(depth):
+    """Unit cubes (d = sqrt 3) at depths 1e-9 d to 0.1 d, each pose stepped
+    twice (a new contact, then a hot one): face on face V = h, parallel edges
+    on edges (both turned 45 deg about y) V = h^2/2, a vertex on a face
+    V = sqrt(3) h^3 / 2; fast and plain agree, and the volumes are exact to
+    the round-off of unit coordinates (1e-15 absolute per unit area)."""
+    v, t = cube()
+    d = np.sqrt(3.0)
+    h = depth * d
+    up = Rotation.align_vectors([[0, 0, 1]], [[1, 1, 1]])[0]           # a vertex along z
+    turn = Rotation.from_euler("y", 45, degrees=True)
+    cases = [(Rotation.identity(), Rotation.identity(), 1.0 - h, h),
+             (turn, turn, np.sqrt(2.0) - h, h * h / 2),
+             (up, Rotation.identity(), np.sqrt(3.0) / 2 + 0.5 - h, np.sqrt(3.0) * h ** 3 / 2)]
+    for ra, rb, z, exact in cases:
+        fast, plain = pair_engines([v, v], [t, t], np.array([d, d]))
+        pos = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, z]])
+        quat = np.roll(np.stack([ra.as_quat(), rb.as_quat()]), 1, axis=1)
+        for _ in range(2):
+            c = step_both(fast, plain, pos, quat)
+            if exact < 1e-300:
+                continue
+            assert len(c["volume"]) == 1
+            assert abs(c["volume"][0] - exact) <= 4e-15 * max(1.0, exact ** (2 / 3)) + 1e-12 * exact
+
+
+def test_a_grain_almost_inside_another(grains):
+    """A grain scaled by 0.3 inside a full one, pushed until one vertex pokes
+    out of it: both paths agree and give the one-pair geometry's volume."""
+    v, t = grains[0][0], grains[1][0]
+    small = v * 0.3
+    sizes = np.array([2 * np.linalg.norm(v, axis=1).max(), 2 * np.linalg.norm(small, axis=1).max()])
+    fast, plain = pair_engines([v, small], [t, t], sizes)
+    quat = np.array([[1.0, 0, 0, 0], [0.9, 0.1, 0.3, 0.2]])
+    quat[1] /= np.linalg.norm(quat[1])
+    for x in np.linspace(0.0, 0.4, 9):
+        pos = np.array([[0.0, 0.0, 0.0], [x, 0.0, 0.0]])
+        for _ in range(2):
+            c = step_both(fast, plain, pos, quat)
+        i, j, ref = reference_pairs([v, small], [t, t], pos, quat)
+        np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
+
+
+def test_separate_touch_again_and_turn_fast_the_cache_never_hides_a_contact(grains):
+    """Two grains that touch, separate for a few steps (the fast path keeps a
+    separating axis and its gap), touch again, and then one turns by up to
+    90 degrees in a single step while still apart by less than that turn
+    sweeps: at every step both paths give the same contacts as the one-pair
+    geometry, so no proof ever claimed a false separation."""
+    v, t = grains[0][3], grains[1][3]
+    d = 2 * np.linalg.norm(v, axis=1).max()
+    fast, plain = pair_engines([v, v], [t, t], np.array([d, d]), skin=0.5 * d)
+    quat = np.array([[1.0, 0, 0, 0], [1.0, 0, 0, 0]])
+    touching = []
+    xs = list(np.linspace(0.6 * d, 1.05 * d, 10)) + list(np.linspace(1.05 * d, 0.6 * d, 10))
+    for x in xs:
+        pos = np.array([[0.0, 0.0, 0.0], [x, 0.0, 0.0]])
+        c = step_both(fast, plain, pos, quat)
+        i, j, ref = reference_pairs([v, v], [t, t], pos, quat)
+        assert len(c["i"]) == len(i)
+        touching.append(len(i))
+    assert 0 in touching and max(touching) == 1                # it did separate and touch again
+    # B's long axis (x) across the line of centres, apart by a small gap;
+    # then B turns its long axis towards A by large angles in single steps
+    across = lambda angle: np.array([[1.0, 0, 0, 0], np.roll(Rotation.from_euler("z", angle, degrees=True)
+                                                                 .as_quat(), 1)])
+    x_apart = None
+    for x in np.linspace(0.4 * d, 1.1 * d, 300):
+        pos = np.array([[0.0, 0.0, 0.0], [x, 0.0, 0.0]])
+        if len(reference_pairs([v, v], [t, t], pos, across(90))[0]) == 0:
+            x_apart = x
+            break
+    assert x_apart is not None
+    pos = np.array([[0.0, 0.0, 0.0], [x_apart, 0.0, 0.0]])
+    hits = 0
+    for angle in (90, 90, 85, 60, 60, 0, 0, 90, 45):
+        q = across(angle)
+        c = step_both(fast, plain, pos, q)
+        ref = reference_pairs([v, v], [t, t], pos, q)[0]
+        assert len(c["i"]) == len(ref)
+        hits += len(ref)
+    assert hits > 0                                           # some turn brought them into contact
+
+
+@pytest.mark.parametrize("fast", [True, False])
+def test_a_workspace_overflow_stops_the_step_with_a_message(grains, fast):
+    verts, tris, pos, quat, sizes = packing(grains, 2, seed=8)
+    eng = ContactEngine(verts, tris, np.arange(len(verts)), sizes, K_V, KT_COEF, MU, 0.0, 0.05, walls=False,
+                        threads=1, fast=fast)
+    F, _, _ = eng.step(pos, quat)
+    assert eng.n_pair_contacts > 0
+    eng.set_workspace_points(16)
+    with pytest.raises(EngineError, match=r"\d+ contacts overflowed the clipping workspace"):
+        eng.step(pos, quat)
+    assert eng.stats["workspace_overflows"] >= 1
+    with pytest.raises(ValueError, match="workspace points"):
+        eng.set_workspace_points(10)
+
+
+def test_the_c_side_names_its_counters_and_sizes_its_records(grains):
+    from shapes.engine import layout
+    L = layout()
+    assert L["stat_names"][:3] == ("touching_pairs", "wall_contacts", "listed_pairs")
+    assert len(set(L["stat_names"])) == len(L["stat_names"])
+    verts, tris, pos, quat, sizes = packing(grains, 2, seed=8)
+    eng = engine_for(verts, tris, sizes, walls=False)
+    eng.step(pos, quat)
+    assert set(eng.stats) == set(L["stat_names"])
+    st = eng.state()
+    assert st["pair_records"].shape[1] == L["pair_doubles"] and st["scalars"].shape == (L["scalars"],)
+    old = dict(st, pair_records=st["pair_records"][:, :20].copy())   # an older kernel's 20-double records
+    with pytest.raises(ValueError, match="pair_records has shape"):
+        eng.set_state(old)
+    with pytest.raises(ValueError, match="lacks"):
+        eng.set_state({k: v for k, v in st.items() if k != "motion"})
+
+
+def test_wall_positions_and_triangles_are_validated(grains):
+    verts, tris, pos, quat, sizes = packing(grains, 2, seed=8)
+    eng = engine_for(verts, tris, sizes, walls=True)
+    lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1
+    good = np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
+    with pytest.raises(ValueError, match="give their positions"):
+        eng.step(pos, quat)
+    with pytest.raises(ValueError, match="6 finite numbers"):
+        eng.step(pos, quat, good[:5])
+    with pytest.raises(ValueError, match="6 finite numbers"):
+        eng.step(pos, quat, np.where(np.arange(6) == 2, np.nan, good))
+    with pytest.raises(ValueError, match="below its high wall"):
+        eng.step(pos, quat, good[[1, 0, 2, 3, 4, 5]])
+    eng.step(pos, quat, good)
+    bad = [t.copy() for t in tris]
+    bad[1][4, 2] = len(verts[1])
+    with pytest.raises(ValueError, match="shape 1: triangle index"):
+        engine_for(verts, bad, sizes, walls=False)
