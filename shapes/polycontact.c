@@ -1598,9 +1598,10 @@ static void walls_step(engine_t *E, int b, work_t *w, int *cnt) {
     }
 }
 
-/* rotated vertices and normals of every body (body-centred), its spin and
- * its motion bound over the last step */
-static void pose_all(engine_t *E, int par) {
+/* rotated vertices and normals of every body (body-centred); with motion,
+ * also its spin and its motion bound over the last step (each body its own
+ * entries: no order, no sharing) */
+static void pose_all(engine_t *E, int par, int motion) {
     int nb = E->nb;
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(E->nthreads) schedule(static) if (par)
@@ -1610,6 +1611,7 @@ static void pose_all(engine_t *E, int par) {
         double zero[3] = {0, 0, 0};
         pose_shape(&E->T, E->shape[b], E->R + 9 * b, zero, E->rv + 3 * E->voffb[b], E->rn + 3 * E->toffb[b],
                    E->rh + E->toffb[b], &P);
+        if (motion) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
     }
 }
 
@@ -1634,8 +1636,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
      * wake-up and a barrier (about 10-50 us with OMP_WAIT_POLICY=PASSIVE),
      * more than a small scene's whole step. */
     int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
-    pose_all(E, par);
-    for (int b = 0; b < nb; b++) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
+    pose_all(E, par, 1);
     /* neighbour list: rebuild when a body moved more than skin/2 */
     int need = E->npairs == 0 && E->nbuild == 0;
     double lim = 0.25 * E->skin * E->skin;
@@ -1942,7 +1943,7 @@ int pc_engine_set_state(engine_t *E, const double *x, const double *R, const dou
     E->have_prev = scalars[0] != 0;
     E->nbuild = (long)scalars[1];
     for (int k = 0; k < nw; k++) E->wall_pos[k] = scalars[2 + k];
-    pose_all(E, 0);                 /* the posed vertices of these poses (contacts can be asked for at once) */
+    pose_all(E, 0, 0);              /* the posed vertices of these poses (contacts can be asked for at once) */
     E->shadows_ready = 1;           /* the records carry the shadows */
     return 0;
 }
