@@ -282,7 +282,7 @@ class ContactEngine:
                                            ckernel.dptr(a["wall_results"]), ckernel.iptr(a["wall_touching"]),
                                            ckernel.dptr(a["scalars"]))
         if err == -3:
-            raise ValueError("engine state: pair ids out of range or unsorted (not a state of this engine)")
+            raise ValueError("engine state: pair ids out of range or unsorted, or a malformed pair record (not a state of this engine)")
         if err:
             raise EngineError("could not restore the engine state (out of memory)")
         if "friction" in st:          # states taken before friction was part of them keep the engine's own

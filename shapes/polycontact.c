@@ -172,12 +172,30 @@ typedef struct {
     double volume, centroid[3], normal[3], footprint[2], area;
     int status;
     int fallback;       /* the shared-vertex cut gave up and polygons were clipped */
+    int kept;           /* 1: from the structure kept from the last step; -1: it no longer held */
 } overlap_t;
 
+/* The face structure of a touching pair's overlap, kept for its next step:
+ * each vertex by its definition (an A vertex, a B vertex, an A edge cut by a
+ * B plane, a B edge cut by an A plane: indices into the two shapes), each
+ * face by its plane (tag as in the cuts) and its cycle of vertices. ok = 0:
+ * nothing kept (too large, degenerate, or shapes with 255 or more vertices
+ * or triangles). */
+#define PC_KV 24
+#define PC_KF 16
+#define PC_KI 80
+enum { KV_A = 0, KV_B = 1, KV_AEDGE = 2, KV_BEDGE = 3 };
+typedef struct {
+    unsigned char ok, nv, nf, ni;
+    unsigned char vt[PC_KV], va[PC_KV], vb[PC_KV], vp[PC_KV];   /* type; vertex or edge ends; cutting plane */
+    unsigned char fc[PC_KF], ftag[PC_KF];                      /* face size; plane (A triangle, or ntA + B plane) */
+    unsigned char fi[PC_KI];
+} keep_t;
+
 static void overlap_zero(overlap_t *r) {
-    int fb = r->fallback;
+    int fb = r->fallback, kp = r->kept;
     memset(r, 0, sizeof(*r));
-    r->fallback = fb;
+    r->fallback = fb; r->kept = kp;
     r->centroid[0] = r->centroid[1] = r->centroid[2] = NAN;
     r->normal[0] = r->normal[1] = r->normal[2] = NAN;
 }
@@ -614,6 +632,136 @@ static void mesh_integrate(work_t *w, int buf, int ntA, const double *nA, const 
     finish_overlap(w, V6, C, o, SA, Stot, xB_minus_xA, V, w->mnv[buf], want_shadow, r);
 }
 
+/* The vertex shared by every triangle in tri[0..n) of shape S (triangles
+ * t as vertex triples), or -1 when none or several. */
+static int common_vertex(const int *t, const int *tri, int n) {
+    int found = -1;
+    for (int c = 0; c < 3; c++) {
+        int v = t[3 * tri[0] + c], all = 1;
+        for (int k = 1; k < n && all; k++) all = t[3 * tri[k]] == v || t[3 * tri[k] + 1] == v || t[3 * tri[k] + 2] == v;
+        if (all) { if (found >= 0) return -1; found = v; }
+    }
+    return found;
+}
+
+/* The edge (two vertices) shared by triangles a and b, or 0 when not one. */
+static int common_edge(const int *t, int a, int b, int *u, int *v) {
+    int m = 0, e[3];
+    for (int c = 0; c < 3; c++) {
+        int x = t[3 * a + c];
+        if (t[3 * b] == x || t[3 * b + 1] == x || t[3 * b + 2] == x) e[m++] = x;
+    }
+    if (m != 2) return 0;
+    *u = e[0]; *v = e[1];
+    return 1;
+}
+
+/* Label mesh buf (A n B after the cuts) for the next step: each vertex by
+ * the planes of the faces around it. */
+static void keep_structure(const work_t *w, int buf, const posed_t *A, const posed_t *B, keep_t *K) {
+    K->ok = 0;
+    int nv = w->mnv[buf], nf = w->mnf[buf], ntA = A->nt;
+    if (nv > PC_KV || nf > PC_KF || A->nv >= 255 || B->nv >= 255 || ntA + B->nt >= 255) return;
+    const int *fs = w->mfs[buf], *fc = w->mfc[buf], *ft = w->mft[buf], *fi = w->mfi[buf];
+    int inc[PC_KV][8], ninc[PC_KV], ni = 0;
+    memset(ninc, 0, sizeof(ninc));
+    for (int f = 0; f < nf; f++) {
+        if (ft[f] < 0 || fc[f] < 3) return;
+        if ((ft[f] < ntA ? A->dup && A->dup[ft[f]] : B->dup && B->dup[ft[f] - ntA])) return;
+        for (int i = 0; i < fc[f]; i++) {
+            int v = fi[fs[f] + i];
+            if (ninc[v] == 8) return;
+            inc[v][ninc[v]++] = ft[f];
+        }
+        ni += fc[f];
+    }
+    if (ni > PC_KI) return;
+    for (int v = 0; v < nv; v++) {
+        int ta[8], tb[8], na = 0, nb = 0;
+        for (int k = 0; k < ninc[v]; k++) { if (inc[v][k] < ntA) ta[na++] = inc[v][k]; else tb[nb++] = inc[v][k] - ntA; }
+        int x, y;
+        if (nb == 0 && na >= 3) {
+            if ((x = common_vertex(A->t, ta, na)) < 0) return;
+            K->vt[v] = KV_A; K->va[v] = (unsigned char)x;
+        } else if (na == 0 && nb >= 3) {
+            if ((x = common_vertex(B->t, tb, nb)) < 0) return;
+            K->vt[v] = KV_B; K->va[v] = (unsigned char)x;
+        } else if (na == 2 && nb == 1) {
+            if (!common_edge(A->t, ta[0], ta[1], &x, &y)) return;
+            K->vt[v] = KV_AEDGE; K->va[v] = (unsigned char)x; K->vb[v] = (unsigned char)y; K->vp[v] = (unsigned char)tb[0];
+        } else if (na == 1 && nb == 2) {
+            if (!common_edge(B->t, tb[0], tb[1], &x, &y)) return;
+            K->vt[v] = KV_BEDGE; K->va[v] = (unsigned char)x; K->vb[v] = (unsigned char)y; K->vp[v] = (unsigned char)ta[0];
+        } else {
+            return;                                               /* four planes or more at a point: degenerate */
+        }
+    }
+    for (int f = 0, q = 0; f < nf; f++) {
+        K->fc[f] = (unsigned char)fc[f]; K->ftag[f] = (unsigned char)ft[f];
+        for (int i = 0; i < fc[f]; i++) K->fi[q++] = (unsigned char)fi[fs[f] + i];
+    }
+    K->nv = (unsigned char)nv; K->nf = (unsigned char)nf; K->ni = (unsigned char)ni;
+    K->ok = 1;
+}
+
+/* The point where the segment p (inside, distance dp) - q (outside, dq)
+ * meets the plane, from the inside end as clip_plane. */
+static inline void cut_point(const double *p, double dp, const double *q, double dq, double *x) {
+    double t = dp / (dp - dq);
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    x[0] = p[0] + t * (q[0] - p[0]); x[1] = p[1] + t * (q[1] - p[1]); x[2] = p[2] + t * (q[2] - p[2]);
+}
+
+/* The overlap from the kept structure, when it still holds (see
+ * overlap_pair): its vertices from their definitions, checked (i) each cut
+ * edge still crosses its plane, (ii) every vertex lies inside every plane of
+ * A and B, (iii) every face is still convex and turns the way its plane's
+ * normal says. Then the structure bounds a convex polytope inside A n B
+ * whose faces' half-spaces hold A n B: it is A n B. Returns 0 (r set) or -1
+ * (the structure no longer holds: cut). The vertices and faces go to mesh 0. */
+static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
+                        const keep_t *K, int want_shadow, double eps) {
+    int ntA = A->nt;
+    double *V = w->mv[0];
+    for (int v = 0; v < K->nv; v++) {
+        double *x = V + 3 * v;
+        int t = K->vt[v];
+        if (t == KV_A) { memcpy(x, A->v + 3 * K->va[v], 3 * sizeof(double)); continue; }
+        if (t == KV_B) { memcpy(x, B->v + 3 * K->va[v], 3 * sizeof(double)); continue; }
+        const posed_t *E = t == KV_AEDGE ? A : B, *P = t == KV_AEDGE ? B : A;
+        const double *n = P->n + 3 * K->vp[v], *pu = E->v + 3 * K->va[v], *pv = E->v + 3 * K->vb[v];
+        double h = P->h[K->vp[v]], du = dot3(pu, n) - h, dv = dot3(pv, n) - h;
+        int iu = du <= eps, iv = dv <= eps;
+        if (iu == iv) return -1;                                   /* (i) */
+        if (iu) cut_point(pu, du, pv, dv, x); else cut_point(pv, dv, pu, du, x);
+    }
+    double sc[3], sr;
+    w->mnv[0] = K->nv;
+    mesh_sphere(w, 0, sc, &sr);
+    for (int k = 0; k < ntA + B->nt; k++) {                         /* (ii) */
+        const double *n = k < ntA ? A->n + 3 * k : B->n + 3 * (k - ntA);
+        double h = k < ntA ? A->h[k] : B->h[k - ntA];
+        if (dot3(n, sc) - h + sr <= eps) continue;
+        for (int v = 0; v < K->nv; v++) if (dot3(V + 3 * v, n) - h > eps) return -1;
+    }
+    for (int f = 0, q = 0; f < K->nf; f++) {                        /* (iii), and mesh 0's faces */
+        int m = K->fc[f], tag = K->ftag[f];
+        const double *n = tag < ntA ? A->n + 3 * tag : B->n + 3 * (tag - ntA);
+        w->mfs[0][f] = q; w->mfc[0][f] = m; w->mft[0][f] = tag;
+        for (int i = 0; i < m; i++) {
+            const double *a = V + 3 * K->fi[q + (i + m - 1) % m], *b = V + 3 * K->fi[q + i], *c = V + 3 * K->fi[q + (i + 1) % m];
+            double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - b[0], c[1] - b[1], c[2] - b[2]}, x[3];
+            cross3(e1, e2, x);
+            if (dot3(x, n) < -eps * (sqrt(dot3(e1, e1)) + sqrt(dot3(e2, e2)))) return -1;
+            w->mfi[0][q + i] = K->fi[q + i];
+        }
+        q += m;
+    }
+    w->mnf[0] = K->nf;
+    mesh_integrate(w, 0, ntA, A->n, dAB, want_shadow, r);
+    return 0;
+}
+
 /* The overlap by shared-vertex cuts (the fast path): the same planes in the
  * same order as overlap_pair's culled path, each vertex and each crossing
  * point computed once. The vertices are those of the polygon path to the bit
@@ -621,7 +769,7 @@ static void mesh_integrate(work_t *w, int buf, int ntA, const double *nA, const 
  * the caps start at another vertex, so volumes agree to round-off. Returns
  * 0, or -2 when a cut gave up (the caller clips polygons). */
 static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
-                        double *sep_axis, int hot, int want_shadow, double eps) {
+                        double *sep_axis, int hot, int want_shadow, double eps, keep_t *keep) {
     int ntB = B->nt, *ord = w->order, m = 0, buf = 0, nf;
     double sc[3] = {0, 0, 0}, sr = INFINITY;
     mesh_start(w, A);
@@ -692,6 +840,7 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
     }
     if (nf == 0) { overlap_zero(r); return 0; }
     mesh_integrate(w, buf, A->nt, A->n, dAB, want_shadow, r);
+    if (keep && r->volume > 0) keep_structure(w, buf, A, B, keep);
     return 0;
 }
 
@@ -713,7 +862,7 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
  * Planes that cut nothing change nothing, so the sequence of effective cuts,
  * and every polygon, is the plain path's. */
 static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
-                         double *sep_axis, int hot, int cull, int want_shadow) {
+                         double *sep_axis, int hot, int cull, int want_shadow, keep_t *keep) {
     int ntB = B->nt;
     if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
     int *ord = w->order, m = 0;
@@ -730,9 +879,14 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
         ra = q > ra ? q : ra;
     }
     double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
-    r->fallback = 0;
+    r->fallback = 0; r->kept = 0;
+    if (cull && hot && dAB && keep && keep->ok) {
+        if (overlap_kept(A, B, dAB, w, r, keep, want_shadow, eps) == 0) { r->kept = 1; return; }
+        r->kept = -1;
+    }
+    if (keep) keep->ok = 0;
     if (cull) {
-        if (overlap_mesh(A, B, dAB, w, r, sep_axis, hot, want_shadow, eps) == 0) { r->fallback = 0; return; }
+        if (overlap_mesh(A, B, dAB, w, r, sep_axis, hot, want_shadow, eps, keep) == 0) { r->fallback = 0; return; }
         r->fallback = 1;
         if (sep_axis) sep_axis[0] = sep_axis[1] = sep_axis[2] = 0;
     }
@@ -989,7 +1143,7 @@ int pc_batch_overlap(int ns, const int *voff, const double *v, const int *toff, 
             pose_shape(&T, sa[p], RA, zero, va, na, ha, &A);
             pose_shape(&T, sb[p], RB, d, vb, nb, hb, &B);
             overlap_t r = {0};
-            overlap_pair(&A, &B, d, &w, &r, NULL, 0, 0, 1);
+            overlap_pair(&A, &B, d, &w, &r, NULL, 0, 0, 1, NULL);
             vol[p] = r.volume; area[p] = r.area; status[p] = r.status;
             for (int c = 0; c < 3; c++) {
                 cen[3 * p + c] = r.volume > 0 ? r.centroid[c] + pa[3 * p + c] : NAN;
@@ -1078,15 +1232,18 @@ enum {
     PC_STAT_APART_SEARCH,        /* apart: a separating axis found by the search */
     PC_STAT_OVERFLOWS,           /* pairs or wall contacts that overflowed the clipping workspace */
     PC_STAT_CLIP_FALLBACKS,      /* pairs the shared-vertex cuts gave up on (clipped as polygons) */
+    PC_STAT_KEPT,                /* touching pairs computed from the structure kept from the last step */
+    PC_STAT_KEPT_BROKEN,         /* ... whose structure no longer held (cut again) */
     PC_NSTAT
 };
 static const char *PC_STAT_NAMES[PC_NSTAT] = {
     "touching_pairs", "wall_contacts", "listed_pairs", "sliding_contacts", "sum_contact_force", "rebuilds",
     "sum_body_force", "clipped_pairs", "apart_by_spheres", "apart_by_motion_bound", "apart_by_cached_axis",
-    "apart_by_axis_search", "workspace_overflows", "clip_fallbacks"};
+    "apart_by_axis_search", "workspace_overflows", "clip_fallbacks", "structure_kept", "structure_broken"};
 
 #define PC_MAX_WALLS 16
-#define PC_PAIR_DOUBLES 24       /* a pair's record in the engine state (see pc_engine_get_state) */
+#define PC_KEEP_DOUBLES ((int)((sizeof(keep_t) + 5) / 6))   /* a kept structure, 6 bytes per double */
+#define PC_PAIR_DOUBLES (24 + PC_KEEP_DOUBLES)   /* a pair's record in the engine state (see pc_engine_get_state) */
 #define PC_WALL_DOUBLES 10       /* a wall contact's results: vol c(3) fp(2) area fn(3) */
 #define PC_SCALARS (2 + PC_MAX_WALLS)   /* have_prev, builds, the wall positions of the last step */
 #define PC_SEARCH_ITERATIONS 24  /* iterations of the separating-axis search before clipping decides */
@@ -1101,6 +1258,7 @@ typedef struct {
     double mi0, mj0;          /* the motion bounds of i and j then (engine_t.motion) */
     /* per-step results (fp and area computed when the contacts are asked for) */
     double vol, c[3], n[3], fp[2], area, fn[3];
+    keep_t keep;              /* the overlap's structure, for the next step */
 } pair_t;
 
 typedef struct {
@@ -1296,11 +1454,7 @@ static int rebuild(engine_t *E) {
         pair_t *p = E->spare + k;
         while (a < E->npairs && (E->pairs[a].i < p->i || (E->pairs[a].i == p->i && E->pairs[a].j < p->j))) a++;
         if (a < E->npairs && E->pairs[a].i == p->i && E->pairs[a].j == p->j) {
-            memcpy(p->ft, E->pairs[a].ft, sizeof(p->ft));
-            memcpy(p->axis, E->pairs[a].axis, sizeof(p->axis));
-            p->gap = E->pairs[a].gap; p->mi0 = E->pairs[a].mi0; p->mj0 = E->pairs[a].mj0;
-            p->touching = E->pairs[a].touching;      /* the pair touched at the last step */
-            p->hot_used = E->pairs[a].hot_used;
+            *p = E->pairs[a];                        /* history, proofs, kept structure, last results */
         }
     }
     pair_t *tmp = E->pairs; int tcap = E->cap_pairs;
@@ -1505,9 +1659,11 @@ static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
     overlap_t r = {0};
     double sep[3];
     cnt[PC_STAT_CLIPPED]++;
-    overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast);
+    overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast, &p->keep);
     p->hot_used = hot;
     cnt[PC_STAT_CLIP_FALLBACKS] += r.fallback;
+    cnt[PC_STAT_KEPT] += r.kept == 1;
+    cnt[PC_STAT_KEPT_BROKEN] += r.kept == -1;
     if (r.status == PC_WORKSPACE) { cnt[PC_STAT_OVERFLOWS]++; p->vol = 0; memset(p->ft, 0, sizeof(p->ft)); return; }
     if (!(r.volume > 0)) {
         memset(p->ft, 0, sizeof(p->ft));
@@ -1748,7 +1904,7 @@ static void ensure_shadows(engine_t *E) {
             posed_t A, B;
             pose_pair(E, i, j, d, w, &A, &B);
             overlap_t r = {0};
-            overlap_pair(&A, &B, d, w, &r, NULL, p->hot_used, E->fast, 1);
+            overlap_pair(&A, &B, d, w, &r, NULL, p->hot_used, E->fast, 1, NULL);
             p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1]; p->area = r.area;
         }
 #ifdef _OPENMP
@@ -1877,7 +2033,33 @@ const char *pc_engine_stat_name(int k) { return k >= 0 && k < PC_NSTAT ? PC_STAT
  * motion bounds, touched flag, clipping path, last results), the wall
  * contacts' histories, flags and results, and the counters and wall
  * positions. Pair records are PC_PAIR_DOUBLES doubles:
- * ft(3) axis(3) vol c(3) n(3) fp(2) area fn(3) touching gap mi0 mj0 hot_used. */
+ * ft(3) axis(3) vol c(3) n(3) fp(2) area fn(3) touching gap mi0 mj0 hot_used,
+ * then the kept structure, its bytes 6 to a double (whole numbers below
+ * 2^48, exact in any float64 store). */
+static void keep_pack(const keep_t *K, double *r) {
+    const unsigned char *b = (const unsigned char *)K;
+    for (int k = 0; k < PC_KEEP_DOUBLES; k++) {
+        double x = 0;
+        for (int c = 5; c >= 0; c--) { size_t i = 6 * (size_t)k + c; x = x * 256 + (i < sizeof(keep_t) ? b[i] : 0); }
+        r[k] = x;
+    }
+}
+
+static int keep_unpack(const double *r, keep_t *K) {
+    unsigned char *b = (unsigned char *)K;
+    for (int k = 0; k < PC_KEEP_DOUBLES; k++) {
+        double x = r[k];
+        if (!(x >= 0 && x < 281474976710656.0) || x != floor(x)) return -1;
+        for (int c = 0; c < 6; c++) {
+            size_t i = 6 * (size_t)k + c;
+            double q = floor(x / 256);
+            if (i < sizeof(keep_t)) b[i] = (unsigned char)(x - 256 * q);
+            x = q;
+        }
+    }
+    if (K->ok > 1 || K->nv > PC_KV || K->nf > PC_KF || K->ni > PC_KI) return -1;
+    return 0;
+}
 int pc_engine_npairs(const engine_t *E) { return E->npairs; }
 
 void pc_engine_get_state(engine_t *E, double *x, double *R, double *xbuild, double *motion, int *ij, double *prec,
@@ -1896,6 +2078,7 @@ void pc_engine_get_state(engine_t *E, double *x, double *R, double *xbuild, doub
         r[6] = p->vol; memcpy(r + 7, p->c, 3 * sizeof(double)); memcpy(r + 10, p->n, 3 * sizeof(double));
         memcpy(r + 13, p->fp, 2 * sizeof(double)); r[15] = p->area; memcpy(r + 16, p->fn, 3 * sizeof(double));
         r[19] = p->touching; r[20] = p->gap; r[21] = p->mi0; r[22] = p->mj0; r[23] = p->hot_used;
+        keep_pack(&p->keep, r + 24);
     }
     memcpy(wft, E->wft, sizeof(double) * 3 * nb * nw);
     memcpy(wres, E->wres, sizeof(double) * PC_WALL_DOUBLES * nb * nw);
@@ -1915,6 +2098,8 @@ int pc_engine_set_state(engine_t *E, const double *x, const double *R, const dou
     for (int k = 0; k < npairs; k++) {
         int i = ij[2 * k], j = ij[2 * k + 1];
         if (i < 0 || j <= i || j >= nb) return -3;
+        keep_t K;
+        if (keep_unpack(prec + PC_PAIR_DOUBLES * k + 24, &K)) return -3;
         if (k > 0 && (ij[2 * k - 2] > i || (ij[2 * k - 2] == i && ij[2 * k - 1] >= j))) return -3;
     }
     if (npairs > E->cap_pairs) {
@@ -1936,6 +2121,7 @@ int pc_engine_set_state(engine_t *E, const double *x, const double *R, const dou
         p->vol = r[6]; memcpy(p->c, r + 7, 3 * sizeof(double)); memcpy(p->n, r + 10, 3 * sizeof(double));
         memcpy(p->fp, r + 13, 2 * sizeof(double)); p->area = r[15]; memcpy(p->fn, r + 16, 3 * sizeof(double));
         p->touching = r[19] != 0; p->gap = r[20]; p->mi0 = r[21]; p->mj0 = r[22]; p->hot_used = r[23] != 0;
+        keep_unpack(r + 24, &p->keep);
     }
     memcpy(E->wft, wft, sizeof(double) * 3 * nb * nw);
     memcpy(E->wres, wres, sizeof(double) * PC_WALL_DOUBLES * nb * nw);

@@ -329,7 +329,7 @@ def test_fast_path_equals_plain_path_on_a_moving_packing(grains):
     verts, tris, pos, quat, sizes = packing(grains, 4, seed=21)
     fast, plain = pair_engines(verts, tris, sizes)
     rng = np.random.default_rng(22)
-    proved = clipped = 0
+    proved = clipped = kept = 0
     q = quat.copy()
     for k in range(40):
         pos = pos + rng.normal(scale=4e-3, size=pos.shape)
@@ -340,13 +340,16 @@ def test_fast_path_equals_plain_path_on_a_moving_packing(grains):
         st = fast.stats
         proved += st["apart_by_motion_bound"] + st["apart_by_cached_axis"] + st["apart_by_axis_search"]
         clipped += st["clipped_pairs"]
+        kept += st["structure_kept"]
         assert st["clip_fallbacks"] == 0 and plain.stats["apart_by_motion_bound"] == 0
+        assert plain.stats["structure_kept"] == 0
         if k % 10 == 9:
             i, j, ref = reference_pairs(verts, tris, pos, q)
             np.testing.assert_array_equal(c["i"], i)
             np.testing.assert_array_equal(c["j"], j)
             np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
     assert proved > clipped > 0
+    assert kept > 0                                           # touching pairs reused their structure
 
 
 @pytest.mark.parametrize("depth", [1e-9, 1e-6, 1e-3, 0.1])
@@ -424,14 +427,16 @@ def test_separate_touch_again_and_turn_fast_the_cache_never_hides_a_contact(grai
             break
     assert x_apart is not None
     pos = np.array([[0.0, 0.0, 0.0], [x_apart, 0.0, 0.0]])
-    hits = 0
+    hits = broken = 0
     for angle in (90, 90, 85, 60, 60, 0, 0, 90, 45):
         q = across(angle)
         c = step_both(fast, plain, pos, q)
         ref = reference_pairs([v, v], [t, t], pos, q)[0]
         assert len(c["i"]) == len(ref)
         hits += len(ref)
+        broken += fast.stats["structure_broken"]
     assert hits > 0                                           # some turn brought them into contact
+    assert broken > 0                                         # a turn broke a kept structure, which was cut again
 
 
 @pytest.mark.parametrize("fast", [True, False])
@@ -485,3 +490,42 @@ def test_wall_positions_and_triangles_are_validated(grains):
     bad[1][4, 2] = len(verts[1])
     with pytest.raises(ValueError, match="shape 1: triangle index"):
         engine_for(verts, bad, sizes, walls=False)
+
+
+def test_kept_structures_never_outlive_their_validity():
+    """120 random pairs of library grains pushed together along random
+    trajectories (steps of 1e-6 to 3e-2 d, turns of 1e-6 to 0.3 rad): at
+    every step the fast engine (which reuses the last step's face structure
+    while its checks hold) finds the contact exactly when the one-pair
+    geometry does, with its volume to 1e-9 (the tolerance of two clipping
+    orders, as above); structures are both reused and broken on the way."""
+    shapes, _ = generate_library(12, seed=5)
+    V, T = [s.vertices for s in shapes], [s.triangles for s in shapes]
+    rng = np.random.default_rng(1)
+    kept = broken = contacts = 0
+    for trial in range(120):
+        a, b = rng.integers(len(V), size=2)
+        verts, tris = [V[a], V[b]], [T[a], T[b]]
+        sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
+        eng = ContactEngine(verts, tris, np.arange(2), sizes, K_V, KT_COEF, MU, 0.0, 0.5, walls=False, threads=1)
+        table = ShapeTable(list(zip(verts, tris)))
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        x = 0.55 * u * rng.uniform(0.8, 1.0)
+        q = np.roll(Rotation.random(2, random_state=rng).as_quat(), 1, axis=1)
+        amp, turn = 10 ** rng.uniform(-6, -1.5), 10 ** rng.uniform(-6, -0.5)
+        for k in range(30):
+            x = x + rng.normal(scale=amp, size=3) - 0.3 * amp * u
+            q[1] = np.roll((Rotation.from_rotvec(rng.normal(scale=turn, size=3))
+                            * Rotation.from_quat(np.roll(q[1], -1))).as_quat(), 1)
+            pos = np.array([[0.0, 0.0, 0.0], x])
+            eng.step(pos, q)
+            c = eng.contacts()
+            ref = batch_overlap(table, np.array([0]), pos[:1], q[:1], np.array([1]), pos[1:], q[1:], threads=1)
+            assert len(c["i"]) == int(ref["volume"][0] > 0)
+            if len(c["i"]):
+                contacts += 1
+                np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
+            kept += eng.stats["structure_kept"]
+            broken += eng.stats["structure_broken"]
+    assert contacts > 1000 and kept > 500 and broken > 100
