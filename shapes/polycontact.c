@@ -1022,6 +1022,33 @@ static void overlap_halfspace(const posed_t *A, const double *n, double h, work_
     }
 }
 
+/* overlap_halfspace by one shared-vertex cut (the engine's fast path); the
+ * polygon cut when the shared-vertex one gives up. */
+static void overlap_halfspace_mesh(const posed_t *A, const double *n, double h, work_t *w, int want_shadow,
+                                   overlap_t *r) {
+    int c = 0;
+    for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
+    if (c == A->nv) { overlap_zero(r); return; }
+    double ra = 0;
+    for (int i = 0; i < A->nv; i++) {
+        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
+        ra = q > ra ? q : ra;
+    }
+    mesh_start(w, A);
+    int buf = 0;
+    if (c > 0) {
+        int q = mesh_clip(w, 0, n, h, -1, 1e-13 * (ra + fabs(h)));
+        if (q == -2) { overlap_halfspace(A, n, h, w, want_shadow, r); return; }
+        if (q >= 0) buf = 1;
+    }
+    double negn[3] = {-n[0], -n[1], -n[2]};
+    mesh_integrate(w, buf, 0, NULL, negn, want_shadow, r);
+    if (r->volume > 0) {
+        r->normal[0] = -n[0]; r->normal[1] = -n[1]; r->normal[2] = -n[2];
+        r->status = PC_OK;
+    }
+}
+
 /* ------------------------------------------------------------------ shape table */
 typedef struct {
     int ns;
@@ -1708,7 +1735,8 @@ static void wall_overlap(const engine_t *E, int b, int k, work_t *w, int want_sh
                  {0, 0, 0}};
     n[0] = n[1] = n[2] = 0;
     n[ax] = E->wall_sign[k];              /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
-    overlap_halfspace(&A, n, -gap, w, want_shadow, r);
+    if (E->fast) overlap_halfspace_mesh(&A, n, -gap, w, want_shadow, r);
+    else overlap_halfspace(&A, n, -gap, w, want_shadow, r);
 }
 
 /* One body against every wall. cnt: the thread's counters. */
