@@ -196,10 +196,22 @@ for axis in range(3):
 particles = []
 for k in range(n_particles):
     if POLY:
-        v, _, _ = lib[int(shape_of[k])]
+        s_k = int(shape_of[k])
+        v, _, _ = lib[s_k]
         b = polyhedra_utils.polyhedra(grain, v=[tuple(x) for x in v * d[k]])
         w, x, y, z = quats[k]
-        b.state.ori = Quaternion(w, x, y, z) * b.state.ori
+        if KERNEL:
+            # The kernel takes the grain from the library, in its own frame
+            # (centre of mass, principal axes) and vertex order: YADE re-hulls
+            # each Polyhedra with CGAL, which gives another vertex order and
+            # frame from process to process, so the body's pose, mass and
+            # inertia come from the library too, and the same seed gives the
+            # same run, bit for bit.
+            b.state.ori = Quaternion(w, x, y, z)
+            b.state.mass = density * d[k] ** 3 * float(lib.volume[s_k])
+            b.state.inertia = Vector3(*(density * d[k] ** 5 * np.diag(lib.inertia[s_k])))
+        else:
+            b.state.ori = Quaternion(w, x, y, z) * b.state.ori
     else:
         b = utils.sphere((0, 0, 0), d[k] / 2, material=grain)
     b.state.pos = tuple(centres[k])
@@ -245,11 +257,9 @@ if KERNEL:
     # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
     from kernel_contacts import KernelContacts, KernelError  # noqa: E402
 
-    if resumed:     # the run's own shapes: YADE's Polyhedra come out of each build slightly different
-        shape_v = checkpoint.unragged(resumed[2]["shape_vertices"], resumed[2]["shape_vertex_offsets"])
-        shape_t = checkpoint.unragged(resumed[2]["shape_triangles"], resumed[2]["shape_triangle_offsets"])
-    else:
-        shape_v, shape_t, _ = yadedump.polyhedra_shapes(O, particles)
+    # the library's grains (d = 1) scaled to each particle, in the library's order
+    shape_v = [lib[int(s_k)][0] * d_k for s_k, d_k in zip(shape_of, d)]
+    shape_t = [lib[int(s_k)][1] for s_k in shape_of]
     kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
                             compaction_friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
     if kernel.threads > 1 and os.environ.get("OMP_WAIT_POLICY", "").lower() != "passive":
@@ -306,13 +316,18 @@ if resumed:         # the dump reopened after the checkpoint's snapshots, the lo
     particle_volumes = resumed[2]["particle_volumes"]
 else:
     writer = dumpschema.DumpWriter(DUMP, sample, {**params, **derived}, overlap_kind="volume" if POLY else "depth")
-    if POLY:
+    if KERNEL:      # the kernel's grains: the library's, scaled
+        writer.write_shapes(shape_v, shape_t, [lib[int(s_k)][2] for s_k in shape_of])
+    elif POLY:
         writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
     log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
     log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
                    "n_contacts,steps_per_s\n")
-    particle_volumes = np.array([O.bodies[int(i)].shape.GetVolume() if POLY else
-                                 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3 for i in particles])
+    if KERNEL:
+        particle_volumes = d ** 3 * lib.volume[shape_of]
+    else:
+        particle_volumes = np.array([O.bodies[int(i)].shape.GetVolume() if POLY else
+                                     4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3 for i in particles])
 volume_particles = float(sum(particle_volumes))
 
 
@@ -493,9 +508,9 @@ def control():
 # part of the state belongs to the same instant. The YADE scene goes through
 # O.save (bodies with their masses, inertias, poses and velocities, the
 # interactions with their histories, materials, engines, iteration and
-# time); YADE re-initialises Polyhedra shapes on O.load (vertex order and
-# round-off change), so the kernel keeps the run's own shapes from the
-# checkpoint, and the dump's /shapes stay those of the first attempt.
+# time). YADE re-initialises Polyhedra shapes on O.load (vertex order and
+# round-off change); the kernel's grains come from the library, the same on
+# every attempt, and the dump's /shapes stay those of the first attempt.
 STATE_KEYS = ("stage", "H0", "L0", "eps_1", "next_dump", "phi_iso", "integral", "v_top", "contact_steps",
               "interaction_steps", "shear_start_step", "shear_start_wall")
 previous = {"wall_seconds": 0.0, "engine_seconds": {}, "resumes": []}   # earlier attempts of this run
@@ -525,8 +540,6 @@ def save_checkpoint(why):
     arrays = {"particle_volumes": particle_volumes}
     if KERNEL:
         arrays.update(checkpoint.pack_arrays("kernel", kernel.engine.state()))
-        arrays["shape_vertices"], arrays["shape_vertex_offsets"] = checkpoint.ragged(shape_v, float)
-        arrays["shape_triangles"], arrays["shape_triangle_offsets"] = checkpoint.ragged(shape_t, np.int64)
         meta["kernel_counters"] = kernel.counters()
     elif POLY:
         keys = list(tangential_law.history)
