@@ -715,7 +715,7 @@ static inline void cut_point(const double *p, double dp, const double *q, double
 /* The overlap from the kept structure, when it still holds (see
  * overlap_pair): its vertices from their definitions, checked (i) each cut
  * edge still crosses its plane, (ii) every vertex lies inside every plane of
- * A and B, (iii) every face is still convex and turns the way its plane's
+ * the other grain (it lies in its own by construction), (iii) every face is still convex and turns the way its plane's
  * normal says. Then the structure bounds a convex polytope inside A n B
  * whose faces' half-spaces hold A n B: it is A n B. Returns 0 (r set) or -1
  * (the structure no longer holds: cut). The vertices and faces go to mesh 0. */
@@ -735,14 +735,32 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         if (iu == iv) return -1;                                   /* (i) */
         if (iu) cut_point(pu, du, pv, dv, x); else cut_point(pv, dv, pu, du, x);
     }
-    double sc[3], sr;
+    /* (ii) A's vertices and the points on A's edges lie in A by
+     * construction (convex combinations of A's vertices), so A's planes are
+     * tested on the others only (B's vertices and the points on B's edges),
+     * and the other way round; each group within its own sphere about the
+     * overlap's centre. */
+    double sc[3], sr, rg[2] = {0, 0};
+    int grp[2][PC_KV], ng[2] = {0, 0};
     w->mnv[0] = K->nv;
     mesh_sphere(w, 0, sc, &sr);
-    for (int k = 0; k < ntA + B->nt; k++) {                         /* (ii) */
-        const double *n = k < ntA ? A->n + 3 * k : B->n + 3 * (k - ntA);
-        double h = k < ntA ? A->h[k] : B->h[k - ntA];
-        if (dot3(n, sc) - h + sr <= eps) continue;
-        for (int v = 0; v < K->nv; v++) if (dot3(V + 3 * v, n) - h > eps) return -1;
+    for (int v = 0; v < K->nv; v++) {
+        int g = K->vt[v] == KV_A || K->vt[v] == KV_AEDGE;          /* 1: in A, test against B's planes */
+        const double *x = V + 3 * v;
+        double e[3] = {x[0] - sc[0], x[1] - sc[1], x[2] - sc[2]}, l = dot3(e, e);
+        if (l > rg[g]) rg[g] = l;
+        grp[g][ng[g]++] = v;
+    }
+    for (int g = 0; g < 2; g++) {
+        const posed_t *P = g ? B : A;
+        double r = sqrt(rg[g]) * (1 + 1e-12) + 1e-300;
+        if (ng[g] == 0) continue;
+        for (int k = 0; k < P->nt; k++) {
+            const double *n = P->n + 3 * k;
+            double h = P->h[k];
+            if (dot3(n, sc) - h + r <= eps) continue;
+            for (int i = 0; i < ng[g]; i++) if (dot3(V + 3 * grp[g][i], n) - h > eps) return -1;
+        }
     }
     for (int f = 0, q = 0; f < K->nf; f++) {                        /* (iii), and mesh 0's faces */
         int m = K->fc[f], tag = K->ftag[f];
