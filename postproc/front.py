@@ -46,10 +46,13 @@ COMPARISON = {
     "fr_triple": "mean f_n of triple contacts / mean",
 }
 FRONT_QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
-# The default's stiffness and inertial number: the fit's units (kappa_d / kappa
-# and I / I_d), so that its two slopes are the two effects at the default.
-DEFAULT_KAPPA = 300.0
-DEFAULT_I = 2e-2
+# The front's reference point: the fit's units (kappa_d / kappa and I / I_d),
+# so that its two slopes are the two effects there. It is the point the front
+# was measured around (the default preset of that time, kappa = 300,
+# I = 2e-2), fixed here rather than read from the presets: moving the default
+# must not change what the measured front says.
+FRONT_KAPPA = 300.0
+FRONT_I = 2e-2
 
 
 def _run_values(df, sample, reference):
@@ -170,7 +173,7 @@ def point_table(runs, quantities=FRONT_QUANTITIES):
     return pd.DataFrame(rows)
 
 
-def fit_rigid_quasistatic(runs, q, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, alpha=1.0, beta=1.0):
+def fit_rigid_quasistatic(runs, q, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, alpha=1.0, beta=1.0):
     """Least-squares fit of one quantity over the runs of one sample at one
     size, with one offset per seed (the seeds are paired: the same seed at
     every point starts from the same grains and positions):
@@ -238,7 +241,7 @@ def monotone(points, q, axis, fixed):
     return 1 if np.all(d > 0) else (-1 if np.all(d < 0) else 0)
 
 
-def size_effect(runs, q, n_small, n_large, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I):
+def size_effect(runs, q, n_small, n_large, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I):
     """Mean over seeds of q at (kappa_d, I_d) for N = n_large minus N =
     n_small (independent samples: Welch's t). Returns (difference, 95 %
     half-width) or (nan, nan)."""
@@ -258,7 +261,7 @@ def size_effect(runs, q, n_small, n_large, kappa_d=DEFAULT_KAPPA, inertial_d=DEF
 FORMS = ((1.0, 1.0), (0.5, 1.0), (1.0, 0.5), (0.5, 0.5))
 
 
-def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, forms=FORMS):
+def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, forms=FORMS):
     """Per sample (at its most common N and library) and quantity: the fit of
     :func:`fit_rigid_quasistatic` in the form (alpha, beta) of ``forms`` with
     the smallest residual (all forms have the same number of parameters),
@@ -308,7 +311,7 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=DEFAULT_KAPPA, inertial
     return pd.DataFrame(rows)
 
 
-def cost_model(runs, kappa_d=DEFAULT_KAPPA, inertial_d=DEFAULT_I, strain=0.3):
+def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
     """Per sample, the cost constants measured on the sweep's runs, as the
     medians over runs:
 
@@ -411,7 +414,7 @@ def write_front(folder):
     with open(os.path.join(folder, "front.md"), "w") as fh:
         fh.write(front_markdown(fits, cost))
     plot_front(runs, os.path.join(folder, "front.png"))
-    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), DEFAULT_KAPPA, DEFAULT_I)
+    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), FRONT_KAPPA, FRONT_I)
     return runs
 
 

@@ -1,6 +1,7 @@
 """The numpy parts of the YADE scene: presets, servo, sample, time step,
 the tangential-law kernel and the generator (no YADE needed)."""
 import os
+import re
 
 import numpy as np
 import pytest
@@ -38,6 +39,39 @@ def test_render_scene_sets_every_parameter():
     assert "    kappa=2500.0," in text and "    seed=7," in text
     assert "    sample='polyhedra'," in text
     compile(text, "triaxial.py", "exec")
+
+
+def test_the_bare_scene_is_the_default_preset():
+    """The template's parameter block is the one rendered from the
+    parameter table's defaults, which are the default preset's S1: running
+    the bare triaxial.py is the default experiment."""
+    from yade_scripts.parameters import BLOCK_END, BLOCK_START, DEFAULTS, PARAMETERS, render_block
+
+    text = open(os.path.join(os.path.dirname(__file__), "..", "yade_scripts", "triaxial.py")).read()
+    block = text[text.index(BLOCK_START):text.index(BLOCK_END)]
+    assert block == render_block(DEFAULTS)
+    assert resolve("default", "polyhedra") == DEFAULTS
+    body = text[text.index(BLOCK_END):]
+    unused = [q.name for q in PARAMETERS if not re.search(rf"\b{q.name}\b", body)]
+    assert not unused, f"parameters the scene never reads: {unused}"
+
+
+def test_a_batch_table_is_checked_before_any_run(tmp_path):
+    from yade_scripts.batch import read_table
+
+    out = tmp_path / "run"
+    generate(str(out), "tiny", "spheres", seeds=[3, 4])
+    assert [r["seed"] for _, r in read_table(str(out))] == ["3", "4"]
+    table = out / "table.txt"
+    table.write_text("description seed kapa out\na 1 300.0 'a.h5'\n")
+    with pytest.raises(ConfigError, match=r"table.txt line 2: unknown parameter 'kapa' \(did you mean 'kappa'\?\)"):
+        read_table(str(out))
+    table.write_text("description seed kappa out\na 1 -3.0 'a.h5'\n")
+    with pytest.raises(ConfigError, match="line 2: kappa = -3.0 is outside"):
+        read_table(str(out))
+    table.write_text("description seed kappa out\na 1 stiff 'a.h5'\n")
+    with pytest.raises(ConfigError, match="line 2: kappa = stiff is not a Python literal"):
+        read_table(str(out))
 
 
 def test_generate_run_folder(tmp_path):

@@ -12,13 +12,14 @@ polyhedra contacts also crashed with several threads per job), ``jobs`` at a tim
 """
 from __future__ import annotations
 
+import ast
 import os
 import shlex
 import shutil
 import subprocess
 import threading
 
-from .presets import ConfigError
+from .parameters import ConfigError, coerce
 
 PROGRESS_SECONDS = 20.0
 #: a run that crashed (or was stopped by SIGTERM) and left a checkpoint is
@@ -41,7 +42,13 @@ def yade_env():
 
 
 def read_table(folder):
-    """[(file line number, {column: raw value})] of the folder's table.txt."""
+    """[(file line number, {column: raw value})] of the folder's table.txt.
+
+    Every column but ``description`` must be a scene parameter
+    (:mod:`yade_scripts.parameters`) and every value a Python literal of its
+    type and range (yade-batch evaluates the values as Python): a misspelt
+    column or a wrong value raises :class:`ConfigError` naming the line,
+    before any run starts."""
     path = os.path.join(folder, "table.txt")
     with open(path) as fh:
         lines = fh.read().splitlines()
@@ -55,7 +62,19 @@ def read_table(folder):
         vals = shlex.split(line, posix=False)
         if len(vals) != len(head):
             raise ConfigError(f"{path} line {k}: {len(vals)} values for {len(head)} columns")
-        rows.append((k, dict(zip(head, vals))))
+        row = dict(zip(head, vals))
+        for name, raw in row.items():
+            if name == "description":
+                continue
+            try:
+                value = ast.literal_eval(raw)
+            except (ValueError, SyntaxError):
+                raise ConfigError(f"{path} line {k}: {name} = {raw} is not a Python literal") from None
+            try:
+                coerce(name, value)
+            except ConfigError as exc:
+                raise ConfigError(f"{path} line {k}: {exc}") from None
+        rows.append((k, row))
     return rows
 
 

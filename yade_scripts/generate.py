@@ -25,7 +25,8 @@ import re
 import shutil
 import sys
 
-from .presets import ConfigError, resolve
+from .parameters import ConfigError, scene_with_block
+from .presets import resolve
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -45,27 +46,13 @@ LIB_FILES = {  # copied name: source
     "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),
 }
 DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")
-_LINE = re.compile(r"^(\s+)(\w+)=(.*?),(\s+#.*)?$")
 
 
 def render_scene(params):
-    """triaxial.py with its parameter block set to ``params``."""
+    """triaxial.py with its parameter block set to the checked ``params``
+    (:func:`yade_scripts.parameters.render_block`)."""
     with open(os.path.join(HERE, "triaxial.py")) as fh:
-        text = fh.read()
-    start = text.index("# --- parameters (generated) ---")
-    end = text.index("# --- end of parameters ---")
-    lines = text[start:end].split("\n")
-    seen = set()
-    for k, line in enumerate(lines):
-        m = _LINE.match(line)
-        if m and m.group(2) in params:
-            name = m.group(2)
-            lines[k] = f"{m.group(1)}{name}={params[name]!r},{m.group(4) or ''}"
-            seen.add(name)
-    missing = set(params) - seen
-    if missing:
-        raise ConfigError(f"triaxial.py has no parameter(s) {sorted(missing)}")
-    return text[:start] + "\n".join(lines) + text[end:]
+        return scene_with_block(fh.read(), params)
 
 
 def parse_overrides(items):

@@ -1,0 +1,160 @@
+"""The parameters of the triaxial scene: one table, the only place they are listed.
+
+Each :class:`Parameter` has its name (the name the scene uses), type, allowed
+values, default and a one-line description with its unit. Everything else is
+derived from :data:`PARAMETERS`:
+
+* :data:`DEFAULTS`, the default preset's polyhedra sample (S1): the values a
+  preset does not change (``yade_scripts.presets`` lists only the changes);
+* :data:`SCHEMA` and :func:`coerce`, the checks of a value a user sets (a
+  preset, ``--set NAME=VALUE``, a column of a yade-batch table);
+* :func:`render_block`, the scene's parameter block: ``readParamsFromTable``
+  with every parameter, then an explicit import of each name from
+  ``yade.params.table``, so that a reader can follow ``kappa`` from here to
+  the kernel by its name. ``yade_scripts/triaxial.py`` holds the block of the
+  defaults (a test checks it), so the bare scene is the default experiment.
+"""
+from __future__ import annotations
+
+import difflib
+from typing import NamedTuple
+
+BLOCK_START = "# --- parameters (generated from yade_scripts/parameters.py) ---"
+BLOCK_END = "# --- end of parameters ---"
+
+
+class ConfigError(ValueError):
+    """A preset, override or table column that does not make a valid scene."""
+
+
+class Parameter(NamedTuple):
+    name: str
+    type: type
+    allowed: tuple | None   # (lo, hi) for numbers, the choices for strings, None: any
+    default: object
+    doc: str
+
+
+PARAMETERS = (
+    Parameter("sample", str, ("polyhedra", "spheres"), "polyhedra", '"polyhedra" (S1) or "spheres" (S2)'),
+    Parameter("n_particles", int, (2, 10_000_000), 1000, "number of particles"),
+    Parameter("seed", int, (0, 2**63 - 1), 1, "sample seed (sizes, shapes, orientations, positions)"),
+    Parameter("sigma0", float, (1e-3, 1e12), 1.0e4, "Pa, confining stress"),
+    Parameter("friction", float, (0.0, 10.0), 0.5, "particle-particle friction coefficient (shear)"),
+    Parameter("compaction_friction", float, (0.0, 10.0), 0.5,
+              "... during the isotropic compression (0: the dense state; = friction: loose)"),
+    Parameter("wall_friction", float, (0.0, 10.0), 0.0, "particle-wall friction coefficient"),
+    Parameter("density", float, (1e-3, 1e6), 2700.0, "kg/m^3 (granite ballast)"),
+    Parameter("kappa", float, (1.0, 1e9), 300.0, "stiffness level: typical contact stiffness / (sigma0 d)"),
+    Parameter("tangential_ratio", float, (1e-6, 10.0), 1.0, "tangential / normal stiffness of a typical contact"),
+    Parameter("inertial_number", float, (1e-7, 1.0), 2e-2,
+              "shear: I = rate d sqrt(rho/sigma0) (ignored if wall_speed > 0)"),
+    Parameter("wall_speed", float, (0.0, 1e3), 0.0, "m/s, top wall speed during shear (0: from inertial_number)"),
+    Parameter("compaction_inertial_number", float, (1e-7, 1.0), 5e-2, "max rate of the isotropic compression"),
+    Parameter("damping", float, (0.0, 0.99), 0.2, "NewtonIntegrator's local damping during shear"),
+    Parameter("compaction_damping", float, (0.0, 0.99), 0.2, "... and during the isotropic compression"),
+    Parameter("safety", float, (1e-3, 1.0), 0.3, "dt = safety * critical time step"),
+    Parameter("servo_gain", float, (1e-3, 1e3), 10.0, "proportional gain of the wall servo (lowered if unstable)"),
+    Parameter("servo_time", float, (1e-6, 10.0), 0.01,
+              "integral time of the servo, as the strain (of the loading rate) it spans"),
+    Parameter("initial_fraction", float, (0.01, 0.33), 0.25, "packing fraction of the bounding spheres at the start"),
+    Parameter("aspect", float, (0.1, 20.0), 2.0, "H/L of the initial box"),
+    Parameter("iso_tolerance", float, (1e-6, 0.5), 0.01, "isotropic state: |sigma - sigma0| < tol sigma0 on all walls"),
+    Parameter("unbalanced_tolerance", float, (1e-6, 1.0), 0.02, "... and unbalanced force ratio below this"),
+    Parameter("dump_strain", float, (1e-6, 1.0), 0.01, "a snapshot every delta eps_1 during shear"),
+    Parameter("final_strain", float, (1e-6, 2.0), 0.3, "eps_1 at the end of shear"),
+    Parameter("max_steps", int, (0, 10**12), 0, "stop (as a failure) after this many steps (0: no limit)"),
+    Parameter("library", str, None, "shapes.h5", "polyhedra library (d = 1 grains)"),
+    Parameter("out", str, None, "run.h5", "dump file"),
+    Parameter("log_every", int, (1, 10**9), 200, "steps between log.csv rows"),
+    Parameter("check_every", int, (1, 10**9), 200, "steps between blow-up checks"),
+    Parameter("report_seconds", float, (0.0, 1e6), 10.0, "seconds between progress lines"),
+    Parameter("timing", bool, None, True, "record the time of each engine (run_info.json)"),
+    Parameter("contact_engine", str, ("kernel", "yade"), "kernel",
+              'polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)'),
+    Parameter("kernel_threads", int, (0, 1024), 0, "OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)"),
+    Parameter("verlet_skin", float, (1e-4, 10.0), 0.1, "kernel neighbour-list margin, in units of the mean d"),
+    Parameter("checkpoint_seconds", float, (0.0, 1e7), 300.0,
+              "s of wall time between checkpoints (0: only on SIGTERM)"),
+    Parameter("resume", bool, None, True, "continue from OUT.ckpt when there is one (False: start afresh)"),
+)
+
+DEFAULTS = {p.name: p.default for p in PARAMETERS}
+SCHEMA = {p.name: (p.type, p.allowed) for p in PARAMETERS}
+
+
+def coerce(key, value):
+    """Check one parameter against :data:`SCHEMA`; returns the typed value.
+    Raises :class:`ConfigError` with one line naming the parameter and the
+    problem (unknown name, with the closest known one; wrong type; out of
+    range)."""
+    if key not in SCHEMA:
+        close = difflib.get_close_matches(key, SCHEMA, n=1)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        raise ConfigError(f"unknown parameter {key!r}{hint}")
+    typ, allowed = SCHEMA[key]
+    if typ is bool:
+        text = str(value).strip().lower()
+        if text in ("true", "1", "yes"):
+            return True
+        if text in ("false", "0", "no"):
+            return False
+        raise ConfigError(f"{key} = {value!r} is not true or false")
+    try:
+        if typ is int and isinstance(value, str):
+            value = int(float(value)) if float(value).is_integer() else value
+        v = typ(value)
+    except (TypeError, ValueError):
+        raise ConfigError(f"{key} = {value!r} is not a {typ.__name__}") from None
+    if typ is int and isinstance(value, float) and not value.is_integer():
+        raise ConfigError(f"{key} = {value!r} is not an integer")
+    if isinstance(allowed, tuple) and typ is str:
+        if v not in allowed:
+            raise ConfigError(f"{key} must be one of {allowed}, got {v!r}")
+    elif allowed is not None:
+        lo, hi = allowed
+        if not (lo <= v <= hi) or v != v:
+            raise ConfigError(f"{key} = {v!r} is outside [{lo:g}, {hi:g}]")
+    return v
+
+
+def check(params):
+    """The full, typed parameter dict from ``params`` (name -> value or
+    string) over :data:`DEFAULTS`, with the checks that involve two
+    parameters. Raises :class:`ConfigError`."""
+    p = {k: coerce(k, v) for k, v in {**DEFAULTS, **params}.items()}
+    if p["dump_strain"] > p["final_strain"]:
+        raise ConfigError(f"dump_strain {p['dump_strain']} is larger than final_strain {p['final_strain']}")
+    return p
+
+
+def render_block(params):
+    """The scene's parameter block (text, from :data:`BLOCK_START` to the
+    line before :data:`BLOCK_END`) for the checked ``params``: every
+    parameter in the order of :data:`PARAMETERS` with its description, then
+    the explicit import of every name from ``yade.params.table`` (where a
+    yade-batch table line may have changed it)."""
+    p = check(params)
+    width = max(len(f"{q.name}={p[q.name]!r},") for q in PARAMETERS) + 1
+    lines = [BLOCK_START, "readParamsFromTable("]
+    lines += [f"    {f'{q.name}={p[q.name]!r},':<{width}} # {q.doc}" for q in PARAMETERS]
+    lines += ["    noTableOk=True,", ")", "from yade.params.table import (  # noqa: E402"]
+    names = [q.name for q in PARAMETERS]
+    row = "   "
+    for n in names:
+        if len(row) + len(n) + 2 > 88:
+            lines.append(row.rstrip())
+            row = "   "
+        row += f" {n},"
+    lines += [row, ")"]
+    return "\n".join(lines) + "\n"
+
+
+def scene_with_block(text, params):
+    """``text`` (a scene with a generated block) with its block set to
+    ``params``."""
+    try:
+        start, end = text.index(BLOCK_START), text.index(BLOCK_END)
+    except ValueError:
+        raise ConfigError("the scene has no generated parameter block") from None
+    return text[:start] + render_block(params) + text[end:]
