@@ -17,7 +17,7 @@ SHAPES_LIB ?= runs/shapes/library.h5
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test study system venv bench clean-venv shapes front kernel
+.PHONY: test test-fast study system venv bench clean-venv shapes front kernel
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
@@ -46,6 +46,10 @@ kernel: system venv
 
 test: system venv kernel
 	$(PY) -m pytest -q
+
+# The fast subset (no YADE, nothing slow): about a minute, for the edit-test loop.
+test-fast: venv kernel
+	$(PY) -m pytest -q -m "not yade and not slow"
 
 # The polyhedra library (1000 ballast-like grains, seed 0) and its report.
 $(SHAPES_LIB): | venv

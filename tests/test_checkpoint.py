@@ -98,7 +98,9 @@ def test_fingerprint_ignores_runtime_parameters_only():
 
 
 # ------------------------------------------------------------ YADE runs
-needs_yade = pytest.mark.skipif(YADE is None, reason="Debian yade is not installed")
+def needs_yade(test):
+    """Runs YADE: marked ``yade`` and skipped without Debian's yade."""
+    return pytest.mark.yade(pytest.mark.skipif(YADE is None, reason="Debian yade is not installed")(test))
 ENV = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
 TINY = {"checkpoint_seconds": 0.3, "kernel_threads": 1, "final_strain": 0.03}
 

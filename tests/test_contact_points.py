@@ -209,6 +209,7 @@ def test_kernel_contact_set_dumped_and_recomputed_classify_identically():
     assert len(set(dumped.labels.tolist())) >= 2
 
 
+@pytest.mark.slow
 def test_cli_default_is_the_point_count(tmp_path, capsys):
     """postproc analyze: the point count is the default (ct_method points,
     alpha 0.1), a dump without the overlap area gives the same columns

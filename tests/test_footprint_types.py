@@ -326,6 +326,7 @@ def test_a_contact_without_overlap_keeps_its_angular_class(classifier):
     assert res.labels.tolist() == ["FF", "EF"] and res.columns["ct_fp_missing"] == 2
 
 
+@pytest.mark.slow
 def test_cli_footprint_recomputes_without_one(tmp_path, capsys):
     """postproc analyze --types footprint on a dump with and without contacts/footprint (a
     kernel run, a stock or version-1 dump): the same contact-type columns,

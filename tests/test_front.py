@@ -125,6 +125,7 @@ def test_analysis_front_errors_shrink_as_one_over_sqrt_n():
     assert (t["seconds"] > 0).all()
 
 
+@pytest.mark.yade
 @pytest.mark.skipif(shutil.which("yade-batch") is None, reason="Debian yade is not installed")
 def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library):
     from yade_scripts.front import main

@@ -25,6 +25,7 @@ def inputs(tmp_path):
     return d, paths, str(bad)
 
 
+@pytest.mark.slow
 def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
     d, paths, bad = inputs
     out = tmp_path / "out"
@@ -43,6 +44,7 @@ def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
     assert bad in (out / "errors.txt").read_text()
 
 
+@pytest.mark.slow
 def test_parallel_equals_serial(tmp_path, inputs):
     d, paths, bad = inputs
     a, b = tmp_path / "a", tmp_path / "b"

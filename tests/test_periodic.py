@@ -91,6 +91,7 @@ def test_periodic_lattice_exact_stress_across_the_boundary(tmp_path):
     assert abs(flat["s_xx"]) < 1e-12 * sigma.max() and abs(flat["s_zz"]) < 1e-12 * sigma.max()
 
 
+@pytest.mark.slow
 def test_same_contacts_with_and_without_wrapping_give_the_same_row(tmp_path):
     df, L, _ = random_periodic()
     ref = analyze_table(tmp_path, df, "wrapped", "--cell", *map(str, L))

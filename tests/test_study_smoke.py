@@ -9,7 +9,8 @@ import pandas as pd
 import pytest
 
 YADE = shutil.which("yade")
-pytestmark = [pytest.mark.skipif(YADE is None or shutil.which("yade-batch") is None,
+pytestmark = [pytest.mark.yade,
+              pytest.mark.skipif(YADE is None or shutil.which("yade-batch") is None,
                                  reason="Debian yade is not installed")]
 
 FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
