@@ -770,7 +770,8 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
             const double *a = V + 3 * K->fi[q + (i + m - 1) % m], *b = V + 3 * K->fi[q + i], *c = V + 3 * K->fi[q + (i + 1) % m];
             double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - b[0], c[1] - b[1], c[2] - b[2]}, x[3];
             cross3(e1, e2, x);
-            if (dot3(x, n) < -eps * (sqrt(dot3(e1, e1)) + sqrt(dot3(e2, e2)))) return -1;
+            double t = dot3(x, n);                                 /* the lengths only when it turns the wrong way */
+            if (t < 0 && t < -eps * (sqrt(dot3(e1, e1)) + sqrt(dot3(e2, e2)))) return -1;
             w->mfi[0][q + i] = K->fi[q + i];
         }
         q += m;
