@@ -258,6 +258,12 @@ class DumpWriter:
         self._closed = False
         self._write_master()
 
+    @property
+    def n_snapshots(self):
+        """Snapshots in the dump so far (those kept from an earlier attempt
+        included)."""
+        return self._n_snapshots
+
     @classmethod
     def resume(cls, path, n_snapshots):
         """Reopen the unfinished run ``path`` (not closed: its parts folder is

@@ -41,6 +41,8 @@ LIB_FILES = {  # copied name: source
     "yadedump.py": os.path.join(HERE, "yadedump.py"),
     "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
     "checkpoint.py": os.path.join(HERE, "checkpoint.py"),
+    "attempt.py": os.path.join(HERE, "attempt.py"),
+    "loading.py": os.path.join(HERE, "loading.py"),
     "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
     "engine.py": os.path.join(ROOT, "shapes", "engine.py"),
     "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),

@@ -20,6 +20,8 @@ helper modules) and, for polyhedra, shapes.h5. Run it there with
 
 A yade-batch table overrides any parameter by its name.
 
+The loading program (servo, shear, when to take snapshots and stop) is
+lib/loading.py; how an attempt begins, runs and stops is lib/attempt.py.
 Checkpoints and resume: every ``checkpoint_seconds`` of wall time, and when
 the process receives SIGTERM (what SLURM and most schedulers send before a
 kill), the run writes OUT.ckpt (lib/checkpoint.py: the YADE scene by O.save,
@@ -35,8 +37,6 @@ from the last periodic checkpoint).
 import json
 import math
 import os
-import shutil
-import signal
 import sys
 import time
 
@@ -97,8 +97,10 @@ from yade.params.table import (  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
 sys.path.insert(0, os.path.join(HERE, "lib"))
+import attempt  # noqa: E402
 import checkpoint  # noqa: E402
 import dumpschema  # noqa: E402
+import loading  # noqa: E402
 import sample as sampling  # noqa: E402
 import servo  # noqa: E402
 import sizes  # noqa: E402
@@ -117,45 +119,15 @@ log.setLevel("Polyhedra_support.cpp", log.ERROR)
 os.chdir(HERE)
 
 # ------------------------------------------------------------ resume from a checkpoint, or start afresh
-# SIGTERM only raises a flag here: the run loop below then stops at the end
-# of a step, writes a checkpoint and exits with EXIT_TERM.
-EXIT_FAILED, EXIT_TERM = 3, 75
-term_signal = []
-signal.signal(signal.SIGTERM, lambda signum, frame: term_signal.append(signum))
 params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
 stem = out[:-3] if out.endswith(".h5") else out                # run.h5 -> run.log.csv, run.info.json, run.ckpt
 DUMP, CKPT = os.path.join(HERE, out), os.path.join(HERE, stem + ".ckpt")
-
-
-def resume_writer(meta):
-    """The dump reopened after the checkpoint's snapshot count (raises a
-    one-line DumpFormatError when a snapshot it counts is missing)."""
-    return dumpschema.DumpWriter.resume(DUMP, meta["n_snapshots"])
-
-
-resumed = None                  # (path, meta, arrays, blobs, writer) of the checkpoint we continue from
-if resume:
-    resumed = checkpoint.choose(CKPT, checkpoint.fingerprint(params), resume_writer,
-                                say=lambda m: print(f"triaxial.py: {m}", flush=True))
-if resumed is None:
-    if os.path.exists(DUMP):
-        try:
-            with dumpschema.DumpReader(DUMP) as r:
-                done_already = r.complete
-        except dumpschema.DumpFormatError:
-            done_already = False
-        if done_already:
-            print(f"triaxial.py: {out} is complete already; nothing to do (delete it to run again)", flush=True)
-            sys.exit(0)
-    left = [p for p in (DUMP, DUMP + ".parts", CKPT, CKPT + ".prev", stem + ".log.csv", stem + ".info.json")
-            if os.path.exists(p)]
-    if left:
-        print(f"triaxial.py: starting afresh: removing the unfinished attempt ({', '.join(map(os.path.basename, left))})",
-              flush=True)
-        shutil.rmtree(DUMP + ".parts", ignore_errors=True)
-        for p in left:
-            if os.path.isfile(p):
-                os.remove(p)
+begin, resumed = attempt.resume_or_start(DUMP, CKPT, os.path.join(HERE, stem), checkpoint.fingerprint(params),
+                                         resume, dumpschema, say=lambda m: print(f"triaxial.py: {m}", flush=True))
+if begin == "complete":
+    print(f"triaxial.py: {out} is complete already; nothing to do (delete it to run again)", flush=True)
+    sys.exit(attempt.EXIT_DONE)
+runner = attempt.Runner(O, checkpoint_seconds)     # from here on SIGTERM stops the run at the end of a step
 
 # ------------------------------------------------------------ sample
 rng = np.random.default_rng(seed)
@@ -241,13 +213,6 @@ rate_shear = timestep.inertial_strain_rate(inertial_number, d_mean, density, sig
 rate_compact = timestep.inertial_strain_rate(compaction_inertial_number, d_mean, density, sigma0)
 
 
-def stable_gain(max_rate):
-    """The servo gain, lowered if needed so that one step changes the wall
-    stress by at most 20 % of the error: kappa * max_rate * gain * dt <= 0.2
-    (gain 20 at kappa * max_rate * dt = 0.02 oscillated here)."""
-    return min(servo_gain, 0.2 / (kappa * max_rate * O.dt))
-
-
 
 def kt_of(id1, id2, kn):
     """Tangential stiffness (N/m) of polyhedra pairs: ratio k_v a_f d_pair^2."""
@@ -316,6 +281,8 @@ derived = {
 }
 shape_index = np.arange(n_particles) if POLY else np.full(n_particles, -1)
 if resumed:         # the dump reopened after the checkpoint's snapshots, the log cut at its row
+    for k in derived:                                     # as the first attempt computed them
+        derived[k] = json.loads(resumed[1]["dump_parameters"]).get(k, derived[k])
     writer = resumed[4]
     writer.attrs["parameters"] = resumed[1]["dump_parameters"]
     log_file = open(os.path.join(HERE, stem + ".log.csv"), "a+")
@@ -329,8 +296,7 @@ else:
     elif POLY:
         writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
     log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
-    log_file.write("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
-                   "n_contacts,steps_per_s\n")
+    log_file.write(loading.LOG_HEADER)
     if KERNEL:
         particle_volumes = d ** 3 * lib.volume[shape_of]
     else:
@@ -356,9 +322,10 @@ def set_wall_velocities(vel):
 
 def set_friction(mu):
     """Particle-particle friction from now on (the walls keep wall_friction):
-    the grain material for new contacts, and every touching particle pair
-    (the kernel's coefficient, or the YADE interactions' Coulomb cap)."""
-    grain.frictionAngle = math.atan(mu)
+    the grain material (O.materials[0]) for new contacts, and every touching
+    particle pair (the kernel's coefficient, or the YADE interactions'
+    Coulomb cap)."""
+    O.materials[0].frictionAngle = math.atan(mu)
     if KERNEL:
         kernel.engine.set_friction(mu, wall_friction)
         return
@@ -400,20 +367,15 @@ def snapshot(stage):
 
 def fail(reason):
     """Stop on a blow-up: say why, keep every snapshot written so far."""
-    print(f"triaxial.py: STOPPED at step {O.iter} ({state['stage']}, eps_1 = {state['eps_1']:.4f}): {reason}. "
-          f"The {writer._n_snapshots} snapshot(s) written before are kept in {out}.", flush=True)
-    state["failed"] = reason
+    print(f"triaxial.py: STOPPED at step {O.iter} ({program.stage}, eps_1 = {program.eps_1:.4f}): {reason}. "
+          f"The {writer.n_snapshots} snapshot(s) written before are kept in {out}.", flush=True)
+    runner.failed = reason
     O.pause()
 
 
-# ------------------------------------------------------------ the controller (every step)
-state = {"stage": "compaction", "H0": None, "eps_1": 0.0, "next_dump": 0.0, "t_wall": time.time(),
-         "last_report": time.time(), "last_iter": 0, "failed": None, "phi_iso": None, "sps": 0.0,
-         "integral": np.zeros(3), "contact_steps": 0, "interaction_steps": 0}
-v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
-
-
 def check_blowup(lo, hi, F):
+    """None, or why the run has blown up (NaN, a particle out of the box,
+    runaway kinetic energy)."""
     if not np.all(np.isfinite(F)):
         return "wall forces are NaN"
     pos = np.array([tuple(O.bodies[int(i)].state.pos) for i in particles])
@@ -423,68 +385,69 @@ def check_blowup(lo, hi, F):
     out_of_box = np.any((pos < lo - d.max()) | (pos > hi + d.max()), axis=1)
     if out_of_box.any():
         return f"particle {int(particles[np.argmax(out_of_box)])} left the box"
-    v_rms = math.sqrt(np.sum(masses * np.sum(vel ** 2, axis=1)) / masses.sum())
+    m = np.array([O.bodies[int(i)].state.mass for i in particles])
+    v_rms = math.sqrt(np.sum(m * np.sum(vel ** 2, axis=1)) / m.sum())
+    v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
     if v_rms > 50 * v_ref and v_rms > 0.05:
         return f"runaway kinetic energy (rms speed {v_rms:.3g} m/s, 50 x the wall speed is {50 * v_ref:.3g})"
     return None
 
 
+def report(sig, L):
+    """A progress line every report_seconds of wall time."""
+    sps = progress.tick(O.iter)
+    if sps is None:
+        return
+    if program.stage == "shear":
+        s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
+        qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 > 0 else float("nan")
+        where = f"eps_1 {program.eps_1:.4f}, q/p (walls) {qp:.3f}"
+        eta = f"about {program.seconds_left(L, sps) / 60:.1f} min left"
+    else:
+        where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
+        eta = "time left known once shear starts"
+    print(f"triaxial.py: step {O.iter} {program.stage}: {where}, {counts()[0]} interactions, "
+          f"{sps:.0f} steps/s, {eta}", flush=True)
+
+
+# ------------------------------------------------------------ the controller (every step)
+program = loading.TriaxialLoading(sigma0, rate_compact, rate_shear, wall_speed, servo_gain, servo_time, kappa, O.dt,
+                                  iso_tolerance, unbalanced_tolerance, dump_strain, final_strain)
+progress = attempt.Progress(report_seconds)
+
+
 def control():
-    if pause_request:            # the run loop wants a checkpoint: stop at the end of this step
-        pause_request.clear()
-        O.stopAtIter = O.iter + 1
+    runner.end_of_step()
     lo, hi = box()
     L = hi - lo
     F = wall_forces()
     sig = servo.wall_stresses(F, L)
-    if state["stage"] == "compaction":
-        rates = servo.servo_rates(sig, sigma0, rate_compact, stable_gain(rate_compact), state["integral"],
-                                  O.dt, servo_time / rate_compact)
-        set_wall_velocities(servo.wall_velocities(rates, L))
-        if O.iter % 50 == 0 and np.all(np.abs(sig - sigma0) < iso_tolerance * sigma0) \
-                and unbalanced() < unbalanced_tolerance:
-            state["phi_iso"] = volume_particles / np.prod(L)
+    if program.stage == "compaction":
+        set_wall_velocities(program.compaction_velocities(sig, L))
+        if program.isotropic(O.iter, sig, unbalanced):
+            phi = volume_particles / np.prod(L)
             print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
-                  f"solid fraction {state['phi_iso']:.4f}, unbalanced force {unbalanced():.2e}", flush=True)
+                  f"solid fraction {phi:.4f}, unbalanced force {unbalanced():.2e}", flush=True)
             snapshot("isotropic")
-            state.update(stage="shear", H0=L[2], L0=L.copy(), next_dump=dump_strain, integral=np.zeros(3),
-                         shear_start_step=O.iter,
-                         shear_start_wall=previous["wall_seconds"] + time.time() - t0)
+            v_top = program.start_shear(L, phi, O.iter, runner.wall_seconds())
             newton.damping = damping
             if compaction_friction != friction:
                 set_friction(friction)
                 print(f"triaxial.py: friction {compaction_friction:g} -> {friction:g} for shear", flush=True)
-            state["v_top"] = wall_speed if wall_speed > 0 else rate_shear * L[2]
-            writer.update_parameters(top_wall_speed=state["v_top"], solid_fraction_isotropic=state["phi_iso"],
-                                     box_isotropic=L.tolist())
-            print(f"triaxial.py: shear: top wall at {state['v_top']:.4g} m/s", flush=True)
+            writer.update_parameters(top_wall_speed=v_top, solid_fraction_isotropic=phi, box_isotropic=L.tolist())
+            print(f"triaxial.py: shear: top wall at {v_top:.4g} m/s", flush=True)
     else:
-        eps = np.log(state["L0"] / L)
-        state["eps_1"] = eps[2]
-        rate_1 = state["v_top"] / L[2]
-        rates = servo.servo_rates(sig, sigma0, 2 * rate_1, stable_gain(2 * rate_1), state["integral"],
-                                  O.dt, servo_time / rate_1)
-        vel = servo.wall_velocities(rates, L)
-        vel[4] = 0.0                              # bottom wall fixed
-        vel[5] = (0.0, 0.0, -state["v_top"])      # top wall at constant speed
-        set_wall_velocities(vel)
-        if eps[2] >= state["next_dump"] - 1e-12 or eps[2] >= final_strain:
+        set_wall_velocities(program.shear_velocities(sig, L))
+        if program.snapshot_due():
             snapshot("shear")
-            state["next_dump"] += dump_strain
-        if eps[2] >= final_strain:
-            state["stage"] = "done"
+        if program.finished():
             O.pause()
             return
     if O.iter % log_every == 0:
         n_inter, n_real = counts()
-        state["contact_steps"] += n_real * log_every
-        state["interaction_steps"] += n_inter * log_every
-        eps = np.log(state["L0"] / L) if state["H0"] else np.zeros(3)
-        s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
-        log_file.write(f"{O.iter},{O.time:.6g},{state['stage']},{eps[2]:.6g},{eps[0]:.6g},{eps[1]:.6g},{eps.sum():.6g},"
-                       f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{(s1 - s3) / (s1 + 2 * s3):.6g},"
-                       f"{volume_particles / np.prod(L):.6g},{unbalanced():.4g},{n_inter},"
-                       f"{n_real},{state['sps']:.4g}\n")
+        program.count(n_inter, n_real, log_every)
+        log_file.write(program.log_row(O.iter, O.time, sig, L, volume_particles / np.prod(L), unbalanced(),
+                                       n_inter, n_real, progress.steps_per_second))
         log_file.flush()
     if O.iter % check_every == 0:
         problem = check_blowup(lo, hi, F)
@@ -494,57 +457,30 @@ def control():
         if max_steps and O.iter >= max_steps:
             fail(f"max_steps = {max_steps} reached before the end")
             return
-    now = time.time()
-    if now - state["last_report"] > report_seconds:
-        sps = (O.iter - state["last_iter"]) / (now - state["last_report"])
-        state.update(last_report=now, last_iter=O.iter, sps=sps)
-        s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
-        if state["stage"] == "shear":
-            left = (final_strain - state["eps_1"]) * L[2] / state["v_top"] / O.dt / max(sps, 1e-9)
-            qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 > 0 else float("nan")
-            where = f"eps_1 {state['eps_1']:.4f}, q/p (walls) {qp:.3f}"
-            eta = f"about {left / 60:.1f} min left"
-        else:
-            where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
-            eta = "time left known once shear starts"
-        print(f"triaxial.py: step {O.iter} {state['stage']}: {where}, {counts()[0]} interactions, "
-              f"{sps:.0f} steps/s, {eta}", flush=True)
+    report(sig, L)
 
 
 # ------------------------------------------------------------ checkpoints
-# Taken between two steps (the run loop pauses YADE first), so that every
-# part of the state belongs to the same instant. The YADE scene goes through
-# O.save (bodies with their masses, inertias, poses and velocities, the
-# interactions with their histories, materials, engines, iteration and
-# time). YADE re-initialises Polyhedra shapes on O.load (vertex order and
-# round-off change); the kernel's grains come from the library, the same on
-# every attempt, and the dump's /shapes stay those of the first attempt.
-STATE_KEYS = ("stage", "H0", "L0", "eps_1", "next_dump", "phi_iso", "integral", "v_top", "contact_steps",
-              "interaction_steps", "shear_start_step", "shear_start_wall")
-previous = {"wall_seconds": 0.0, "engine_seconds": {}, "resumes": []}   # earlier attempts of this run
-
-
+# Taken between two steps (the runner stops YADE at the end of a step first),
+# so that every part of the state belongs to the same instant. The YADE
+# scene goes through O.save (bodies with their masses, inertias, poses and
+# velocities, the interactions with their histories, materials, engines,
+# iteration and time). YADE re-initialises Polyhedra shapes on O.load
+# (vertex order and round-off change); the kernel's grains come from the
+# library, the same on every attempt, and the dump's /shapes stay those of
+# the first attempt.
 def engine_times():
     return {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in O.engines} if timing else {}
 
 
 def save_checkpoint(why):
     t_save = time.time()
-    scene_file = CKPT + ".scene.yade"
-    O.save(scene_file)
-    with open(scene_file, "rb") as fh:
-        scene = fh.read()
-    os.remove(scene_file)
+    scene = attempt.scene_bytes(O, CKPT + ".scene.yade")
     log_file.flush()
-    ctrl = {k: (v.tolist() if isinstance(v, np.ndarray) else (float(v) if isinstance(v, np.floating) else v))
-            for k, v in state.items() if k in STATE_KEYS}
-    meta = {"fingerprint": checkpoint.fingerprint(params), "step": O.iter, "time": O.time, "stage": state["stage"],
-            "eps_1": float(state["eps_1"]), "state": ctrl, "n_snapshots": writer._n_snapshots,
+    meta = {"fingerprint": checkpoint.fingerprint(params), "step": O.iter, "time": O.time, "stage": program.stage,
+            "eps_1": float(program.eps_1), "state": program.saved(), "n_snapshots": writer.n_snapshots,
             "dump_parameters": writer.attrs["parameters"], "log_bytes": log_file.tell(),
-            "friction": math.tan(O.materials[0].frictionAngle),
-            "wall_seconds": previous["wall_seconds"] + time.time() - t0, "resumes": previous["resumes"],
-            "engine_seconds": {k: previous["engine_seconds"].get(k, 0.0) + v for k, v in engine_times().items()},
-            "why": why}
+            "friction": math.tan(O.materials[0].frictionAngle), "why": why, **runner.history(engine_times())}
     arrays = {"particle_volumes": particle_volumes}
     if KERNEL:
         arrays.update(checkpoint.pack_arrays("kernel", kernel.engine.state()))
@@ -554,27 +490,16 @@ def save_checkpoint(why):
         arrays["tangential_ids"] = np.array(keys, np.int64).reshape(-1, 2)
         arrays["tangential_force"] = np.array([tangential_law.history[k] for k in keys], float).reshape(-1, 3)
     size = checkpoint.save(CKPT, meta, arrays, {"scene": scene})
-    print(f"triaxial.py: checkpoint ({why}) at step {O.iter} ({state['stage']}, eps_1 = {state['eps_1']:.4f}): "
+    print(f"triaxial.py: checkpoint ({why}) at step {O.iter} ({program.stage}, eps_1 = {program.eps_1:.4f}): "
           f"{os.path.basename(CKPT)}, {size / 1e6:.1f} MB in {time.time() - t_save:.2f} s", flush=True)
 
 
 def restore_checkpoint(path, meta, arrays, blobs):
     """Put the run back in the state of the checkpoint: the YADE scene, then
     everything this script keeps beside it."""
-    global grain, wallmat, newton, masses
-    scene_file = CKPT + ".scene.yade"
-    with open(scene_file, "wb") as fh:
-        fh.write(blobs["scene"])
-    O.load(scene_file)
-    os.remove(scene_file)
-    grain, wallmat = O.materials[0], O.materials[1]      # the loaded scene's own objects
-    newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)][0]
-    masses = np.array([O.bodies[int(i)].state.mass for i in particles])
-    for k in STATE_KEYS:
-        if k in meta["state"]:
-            v = meta["state"][k]
-            state[k] = np.array(v, float) if k in ("L0", "integral") else v
-    state["last_iter"] = O.iter
+    attempt.load_scene_bytes(O, blobs["scene"], CKPT + ".scene.yade")
+    program.restore(meta["state"])
+    progress.restart(O.iter)
     if KERNEL:
         kernel.rebind()
         kernel.engine.set_state(checkpoint.unpack_arrays("kernel", arrays))
@@ -582,80 +507,52 @@ def restore_checkpoint(path, meta, arrays, blobs):
     elif POLY:
         tangential_law.history = {(int(a), int(b)): tuple(f) for (a, b), f in
                                   zip(arrays["tangential_ids"].tolist(), arrays["tangential_force"].tolist())}
-    for k in derived:                                     # as the first attempt computed them
-        derived[k] = json.loads(meta["dump_parameters"]).get(k, derived[k])
-    previous.update(wall_seconds=meta["wall_seconds"], engine_seconds=meta["engine_seconds"],
-                    resumes=meta["resumes"] + [{"step": O.iter, "stage": state["stage"], "eps_1": state["eps_1"],
-                                                "checkpoint": os.path.basename(path), "written_because": meta["why"],
-                                                "at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}])
-    print(f"triaxial.py: resumed from {os.path.basename(path)} at step {O.iter} ({state['stage']}, "
-          f"eps_1 = {state['eps_1']:.4f}, {writer._n_snapshots} snapshots kept, friction {meta['friction']:g})",
+    runner.resumed_from(meta, {"step": O.iter, "stage": program.stage, "eps_1": program.eps_1,
+                               "checkpoint": os.path.basename(path), "written_because": meta["why"],
+                               "at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())})
+    print(f"triaxial.py: resumed from {os.path.basename(path)} at step {O.iter} ({program.stage}, "
+          f"eps_1 = {program.eps_1:.4f}, {writer.n_snapshots} snapshots kept, friction {meta['friction']:g})",
           flush=True)
-
-
-def run_until_stop():
-    """Run until the controller stops the run (done or failed), or until a
-    checkpoint is due (SIGTERM, or checkpoint_seconds elapsed): then stop at
-    the end of a step and return True.
-
-    The stop goes through O.stopAtIter, set by the controller inside the
-    step: YADE then ends its loop after that step is complete. (O.pause()
-    from this thread would clear O.running while a step is still under way,
-    so O.wait() returns early and a checkpoint could catch half a step.)"""
-    O.run()
-    due = False
-    while O.running:             # poll (not O.wait()) so that the SIGTERM handler gets to run
-        time.sleep(0.05)
-        if not due and (term_signal or (checkpoint_seconds > 0 and
-                                        time.time() - last_checkpoint[0] >= checkpoint_seconds)):
-            pause_request.append(True)
-            due = True
-    O.wait()
-    pause_request.clear()
-    O.stopAtIter = 0
-    return due
 
 
 # ------------------------------------------------------------ run
 print(f"triaxial.py: {n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
       f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m", flush=True)
-t0 = time.time()
+runner.start()
 if resumed:
     restore_checkpoint(*resumed[:4])
+    newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)][0]     # the loaded scene's own engine
 O.timingEnabled = bool(timing)
-last_checkpoint = [time.time()]
-pause_request = []
 while True:
-    due = bool(term_signal) or run_until_stop()
-    if state["failed"] or state["stage"] == "done":
+    due = runner.run_until_stop()
+    if runner.failed or program.stage == "done":
         break
     if not due:
         fail("the simulation stopped without a reason (an exception in a PyRunner?)")
         break
-    save_checkpoint("SIGTERM" if term_signal else "periodic")
-    last_checkpoint[0] = time.time()
-    if term_signal:
+    save_checkpoint("SIGTERM" if runner.terminated else "periodic")
+    runner.checkpointed()
+    if runner.terminated:
         log_file.close()
-        print(f"triaxial.py: stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer._n_snapshots} "
-              f"snapshot(s) are kept: run again in this folder to resume (exit {EXIT_TERM})", flush=True)
-        sys.exit(EXIT_TERM)
+        print(f"triaxial.py: stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} "
+              f"snapshot(s) are kept: run again in this folder to resume (exit {attempt.EXIT_TERM})", flush=True)
+        sys.exit(attempt.EXIT_TERM)
 log_file.close()
-if state["failed"]:
+if runner.failed:
     writer.close(pack=True, complete=False)
     checkpoint.remove(CKPT)      # a blow-up replays identically from a checkpoint: nothing to resume
-    sys.exit(EXIT_FAILED)
+    sys.exit(attempt.EXIT_FAILED)
 writer.close(pack=True)
 checkpoint.remove(CKPT)
-engine_seconds = {k: previous["engine_seconds"].get(k, 0.0) + v for k, v in engine_times().items()}
-info = {"steps": O.iter, "time": O.time, "wall_seconds": previous["wall_seconds"] + time.time() - t0,
-        "solid_fraction_isotropic": state["phi_iso"], "snapshots": writer._n_snapshots,
-        "contact_steps": state["contact_steps"], "interaction_steps": state["interaction_steps"],
-        "shear_start_step": state.get("shear_start_step"), "shear_start_wall_seconds": state.get("shear_start_wall"),
-        "engine_seconds": engine_seconds, "resumes": previous["resumes"], **derived}
+info = {"steps": O.iter, "time": O.time, "wall_seconds": runner.wall_seconds(),
+        "solid_fraction_isotropic": program.phi_iso, "snapshots": writer.n_snapshots,
+        "contact_steps": program.contact_steps, "interaction_steps": program.interaction_steps,
+        "shear_start_step": program.shear_start_step, "shear_start_wall_seconds": program.shear_start_wall,
+        "engine_seconds": runner.history(engine_times())["engine_seconds"], "resumes": runner.resumes, **derived}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
                       "memory_bytes": kernel.memory_bytes()}
 with open(os.path.join(HERE, stem + ".info.json"), "w") as fh:
     json.dump(info, fh, indent=1)
-print(f"triaxial.py: done in {time.time() - t0:.0f} s, {O.iter} steps; dump {out}", flush=True)
-sys.exit(0)
+print(f"triaxial.py: done in {runner.wall_seconds() - runner.earlier_wall_seconds:.0f} s, {O.iter} steps; "
+      f"dump {out}", flush=True)

@@ -1,0 +1,185 @@
+"""The scene's loading program and run attempt without YADE: the servo
+reaches the isotropic state of a known elastic box, the shear schedule takes
+its snapshots at the stated strains and stops at the final one, a
+checkpointed program continues exactly as the uninterrupted one, and the
+attempt starts afresh, resumes or stops as stated."""
+import json
+import os
+import signal
+
+import numpy as np
+import pytest
+
+from postproc import schema
+from yade_scripts import attempt, checkpoint
+from yade_scripts.loading import ISO_CHECK_EVERY, LOG_HEADER, TriaxialLoading
+
+SIGMA0, K, LF = 1e4, 3e6, np.array([0.1, 0.1, 0.2])   # Pa, Pa per unit log strain, stress-free box (m)
+DT = 1e-5
+
+
+def elastic_stress(L):
+    """A box of bulk stiffness K that carries no stress until it is smaller
+    than LF: sigma_a = K ln(LF_a / L_a), compression positive."""
+    return K * np.maximum(np.log(LF / L), 0.0)
+
+
+def step_box(L, vel, dt=DT):
+    """The box after one step of wall velocities (6, 3): each axis shrinks
+    by the closing speeds of its two walls."""
+    return np.array([L[a] - (vel[2 * a, a] - vel[2 * a + 1, a]) * dt for a in range(3)])
+
+
+def program(**kw):
+    p = dict(sigma0=SIGMA0, rate_compaction=2.0, rate_shear=1.0, wall_speed=0.0, servo_gain=10.0,
+             servo_time=0.01, kappa=300.0, dt=DT, iso_tolerance=0.01, unbalanced_tolerance=0.02,
+             dump_strain=0.01, final_strain=0.05)
+    p.update(kw)
+    return TriaxialLoading(**p)
+
+
+def compact(prog, L, max_steps=200_000):
+    for step in range(1, max_steps):
+        sig = elastic_stress(L)
+        if prog.isotropic(step, sig, lambda: 0.0):
+            return step, L, sig
+        L = step_box(L, prog.compaction_velocities(sig, L))
+    raise AssertionError("the servo never reached the isotropic state")
+
+
+def test_compaction_reaches_sigma0_on_every_axis():
+    prog = program()
+    step, L, sig = compact(prog, 1.3 * LF)
+    assert step % ISO_CHECK_EVERY == 0
+    assert np.all(np.abs(sig - SIGMA0) < 0.01 * SIGMA0)
+    # the stable gain caps kappa * rate * gain * dt at 0.2
+    assert prog.stable_gain(1e9) == pytest.approx(0.2 / (300.0 * 1e9 * DT), rel=1e-15)
+    assert prog.stable_gain(1e-9) == 10.0
+    # a large unbalanced force keeps it compacting
+    assert not prog.isotropic(step, sig, lambda: 1.0)
+    assert not prog.isotropic(step + 1, sig, lambda: 0.0)
+
+
+def test_shear_moves_the_top_wall_holds_the_sides_and_snapshots_on_schedule():
+    prog = program()
+    _, L, _ = compact(prog, 1.3 * LF)
+    v_top = prog.start_shear(L, 0.6, 1234, 5.0)
+    assert v_top == pytest.approx(1.0 * L[2], rel=1e-15)          # rate_shear times the height
+    assert prog.stage == "shear" and prog.phi_iso == 0.6 and prog.shear_start_step == 1234
+    eps_at_snapshot = []
+    for _ in range(200_000):
+        sig = elastic_stress(L)
+        vel = prog.shear_velocities(sig, L)
+        assert np.all(vel[4] == 0) and tuple(vel[5]) == (0.0, 0.0, -v_top)
+        if prog.snapshot_due():
+            eps_at_snapshot.append(prog.eps_1)
+        if prog.finished():
+            break
+        L = step_box(L, vel)
+    assert prog.stage == "done"
+    # one snapshot per dump_strain, the first at dump_strain, the last at
+    # the end; each within one step's strain of its target
+    d_eps = v_top * DT / L[2]
+    np.testing.assert_allclose(eps_at_snapshot, [0.01, 0.02, 0.03, 0.04, 0.05], atol=1.01 * d_eps)
+    assert prog.eps_1 == pytest.approx(np.log(prog.L0[2] / L[2]), rel=1e-14)
+    assert prog.seconds_left(L, 100.0) <= 0
+    # the lateral servo held its axes near sigma0 (the elastic box has no
+    # Poisson coupling, so the sides stay where they were)
+    assert np.all(np.abs(elastic_stress(L)[:2] - SIGMA0) < 0.01 * SIGMA0)
+
+
+def test_a_fixed_wall_speed_overrides_the_inertial_rate():
+    prog = program(wall_speed=0.25)
+    _, L, _ = compact(prog, 1.3 * LF)
+    assert prog.start_shear(L, 0.6, 1, 0.0) == 0.25
+
+
+def test_a_restored_program_continues_exactly_as_the_uninterrupted_one():
+    a = program()
+    _, L, _ = compact(a, 1.3 * LF)
+    a.start_shear(L, 0.6, 1, 0.0)
+    for _ in range(500):
+        L = step_box(L, a.shear_velocities(elastic_stress(L), L))
+    saved = json.loads(json.dumps(a.saved()))     # through JSON, as in a checkpoint
+    b = program()
+    b.restore(saved)
+    La = Lb = L
+    for _ in range(2000):
+        va, vb = a.shear_velocities(elastic_stress(La), La), b.shear_velocities(elastic_stress(Lb), Lb)
+        assert np.array_equal(va, vb) and a.snapshot_due() == b.snapshot_due()
+        La, Lb = step_box(La, va), step_box(Lb, vb)
+    assert np.array_equal(La, Lb) and a.saved() == b.saved()
+    # before shear the strain-related values are None and survive the trip too
+    c = program()
+    c.restore(json.loads(json.dumps(program().saved())))
+    assert c.L0 is None and c.stage == "compaction" and np.array_equal(c.strains(LF), np.zeros(3))
+
+
+def test_log_row_matches_its_header():
+    prog = program()
+    _, L, _ = compact(prog, 1.3 * LF)
+    prog.start_shear(L, 0.6, 1, 0.0)
+    prog.count(100, 40, 200)
+    assert (prog.contact_steps, prog.interaction_steps) == (8000, 20000)
+    sig = np.array([1e4, 1e4, 2e4])
+    row = prog.log_row(7, 0.5, sig, L * np.array([1, 1, 0.9]), 0.6, 0.01, 100, 40, 12.5).rstrip("\n").split(",")
+    head = LOG_HEADER.rstrip("\n").split(",")
+    assert len(row) == len(head)
+    values = dict(zip(head, row))
+    assert float(values["q_over_p"]) == pytest.approx((2e4 - 1e4) / (2e4 + 2e4), rel=1e-5)
+    assert float(values["eps_1"]) == pytest.approx(-np.log(0.9), rel=1e-5)
+    assert values["stage"] == "shear" and values["n_contacts"] == "40"
+
+
+def test_attempt_starts_afresh_resumes_or_finds_the_run_complete(tmp_path):
+    dump, ckpt, stem = str(tmp_path / "run.h5"), str(tmp_path / "run.ckpt"), str(tmp_path / "run")
+    said = []
+    # leftovers of an unfinished attempt without a checkpoint: removed
+    for f in (stem + ".log.csv", stem + ".info.json", ckpt + ".prev"):
+        open(f, "w").close()
+    os.makedirs(dump + ".parts")
+    assert attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append) == ("afresh", None)
+    assert not any(os.path.exists(p) for p in attempt.run_files(dump, ckpt, stem))
+    assert "removing the unfinished attempt" in said[-1]
+    # a finished dump: nothing to do
+    w = schema.DumpWriter(dump, "spheres", {"seed": 1})
+    w.close(pack=True)
+    assert attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append) == ("complete", None)
+    os.remove(dump)
+    # a checkpoint of this run and its dump: resumed
+    w = schema.DumpWriter(dump, "spheres", {"seed": 1})
+    assert w.n_snapshots == 0
+    checkpoint.save(ckpt, {"fingerprint": "fp", "n_snapshots": 0, "step": 10}, {}, {})
+    how, chosen = attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append)
+    assert how == "resume" and chosen[1]["step"] == 10 and chosen[4].n_snapshots == 0
+    chosen[4].close(pack=False, complete=False)
+    # resume=False starts afresh even with a checkpoint
+    assert attempt.resume_or_start(dump, ckpt, stem, "fp", False, schema, said.append) == ("afresh", None)
+    assert not os.path.exists(ckpt)
+
+
+def test_progress_lines_and_the_run_history():
+    p = attempt.Progress(0.0)
+    p.restart(100)
+    sps = p.tick(300)
+    assert sps is not None and sps > 0 and p.steps_per_second == sps and p.last_step == 300
+    assert attempt.Progress(1e9).tick(10) is None
+
+    class FakeO:
+        iter, stopAtIter = 41, 0
+
+    before = signal.getsignal(signal.SIGTERM)
+    try:
+        r = attempt.Runner(FakeO, 0.0)
+    finally:
+        signal.signal(signal.SIGTERM, before)
+    r.resumed_from({"wall_seconds": 7.0, "engine_seconds": {"newton": 2.0}, "resumes": [{"step": 1}]},
+                   {"step": 41})
+    h = r.history({"newton": 0.5, "kernel": 1.0})
+    assert h["engine_seconds"] == {"newton": 2.5, "kernel": 1.0} and h["resumes"] == [{"step": 1}, {"step": 41}]
+    assert h["wall_seconds"] >= 7.0
+    r._pause_request = True
+    r.end_of_step()
+    assert FakeO.stopAtIter == 42 and not r._pause_request
+    r._on_term(15, None)
+    assert r.terminated and r.run_until_stop() is True
