@@ -36,8 +36,16 @@ force on id2 by id1, branch vector x2 - x1; both codes give the opposite):
   radius``, so their rows match one to one.
 
 Both are therefore negated here. Box bounds (``pp`` = periodic) come from
-each block's header; the volume is the box volume (``%g`` in the header: 6
-significant digits).
+each block's header; the volume is the box volume. A tilted (triclinic)
+header holds the bounding box and xy, xz, yz; the cell's own bounds and
+its matrix follow LAMMPS's dump documentation (:class:`Block`). Ids are
+checked for the rounding of a ``%g`` format (:func:`_ids`,
+:func:`_pairs_once`): such files are refused with the ``dump_modify`` line
+that writes them exactly (:data:`EXACT_FORMAT`).
+
+Off-diagonal convention: our stress is sigma_ij = sum f_i l_j / V; LAMMPS's
+pressure tensor is P_ij = sum l_i f_j / V (ev_tally_xyz: v[3] = delx*fy),
+so LAMMPS's pxy is our sigma[1, 0] (tests/test_lammps_fixtures.py).
 """
 from __future__ import annotations
 
@@ -66,12 +74,28 @@ FORMATS = ("liggghts-local", "lammps-local")
 
 
 class Block:
-    """One ``ITEM: TIMESTEP`` block: step, box (lo, hi, periodic (3,) bool),
-    column labels, data (N, K) float, and the file line of its first row."""
+    """One ``ITEM: TIMESTEP`` block: step, box (lo, hi, periodic (3,) bool,
+    tilt (xy, xz, yz) m, zeros for an orthogonal box), column labels, data
+    (N, K) float, the file line of its first row and the rows' text."""
 
-    def __init__(self, step, lo, hi, periodic, columns, data, first_line):
+    def __init__(self, step, lo, hi, periodic, columns, data, first_line, tilt=None, rows=None):
         self.step, self.lo, self.hi, self.periodic = step, lo, hi, periodic
         self.columns, self.data, self.first_line = columns, data, first_line
+        self.tilt = np.zeros(3) if tilt is None else tilt
+        self.rows = rows
+
+    @property
+    def matrix(self):
+        """(3, 3) m, the box's edge vectors as columns: a = (lx, 0, 0),
+        b = (xy, ly, 0), c = (xz, yz, lz) (LAMMPS's restricted triclinic
+        box; diag(hi - lo) when orthogonal)."""
+        lx, ly, lz = self.hi - self.lo
+        xy, xz, yz = self.tilt
+        return np.array([[lx, xy, xz], [0.0, ly, yz], [0.0, 0.0, lz]])
+
+    @property
+    def tilted(self):
+        return bool(np.any(self.tilt != 0))
 
 
 def _blocks(path):
@@ -117,7 +141,7 @@ def _parse_block(path, lines, k0, k1):
         raise InputError(f"{path}: line {k0 + 5}: box bounds need three boundary flags, "
                          f"got {flags}")
     periodic = np.array([f == "pp" for f in flags])
-    lo, hi = np.zeros(3), np.zeros(3)
+    lo, hi, tilts = np.zeros(3), np.zeros(3), np.zeros(3)
     for d in range(3):
         k = k0 + 5 + d
         try:
@@ -127,9 +151,17 @@ def _parse_block(path, lines, k0, k1):
         if len(vals) != (3 if tilt else 2) or not np.all(np.isfinite(vals)):
             raise InputError(f"{path}: line {k + 1}: bad box bounds '{lines[k][:40] if k < k1 else ''}'")
         lo[d], hi[d] = vals[0], vals[1]
+        if tilt:
+            tilts[d] = vals[2]
     if tilt:
-        raise InputError(f"{path}: line {k0 + 5}: triclinic box: give the branch vectors "
-                         "(LAMMPS p10 p11 p12) or use a flat table with lx,ly,lz")
+        # the header holds the bounding box of the tilted cell and xy, xz, yz
+        # (in that order, one per line); the cell's own bounds are, as in
+        # LAMMPS's documentation of dump (triclinic boxes):
+        xy, xz, yz = tilts
+        lo[0] -= min(0.0, xy, xz, xy + xz)
+        hi[0] -= max(0.0, xy, xz, xy + xz)
+        lo[1] -= min(0.0, yz)
+        hi[1] -= max(0.0, yz)
     if np.any(hi <= lo):
         raise InputError(f"{path}: line {k0 + 6}: box has hi <= lo")
     hk = k0 + 8
@@ -147,7 +179,7 @@ def _parse_block(path, lines, k0, k1):
     K = len(columns)
     data = _fast_rows(rows, n, K)
     if data is not None:
-        return Block(step, lo, hi, periodic, columns, data, hk + 2)
+        return Block(step, lo, hi, periodic, columns, data, hk + 2, tilts, rows)
     # something is wrong (or unusual): the slow path finds the line and column
     counts = np.fromiter((len(r.split()) for r in rows), int, len(rows))
     bad = np.flatnonzero(counts != K)
@@ -171,7 +203,7 @@ def _parse_block(path, lines, k0, k1):
         j, c = map(int, np.argwhere(nonfinite)[0])
         raise InputError(f"{path}: line {hk + 2 + j}, column {c + 1} ({columns[c]}): "
                          f"{data[j, c]} (NaN or infinite)")
-    return Block(step, lo, hi, periodic, columns, data, hk + 2)
+    return Block(step, lo, hi, periodic, columns, data, hk + 2, tilts, rows)
 
 
 def _fast_rows(rows, n, K):
@@ -195,18 +227,69 @@ def _fast_rows(rows, n, K):
     return data
 
 
+#: the dump_modify line that makes LAMMPS write ids (and every value) exactly
+EXACT_FORMAT = "dump_modify ID format float %.15g"
+#: ids above this are not exact in a float64
+MAX_EXACT_ID = 2 ** 53
+
+
 def _ids(path, blk, col, label):
+    """(N,) int64 ids of column ``col``. Refuses ids that a text format
+    cannot have held exactly: non-integers, values above 2^53, and ids of
+    1 000 000 or more written with an exponent (LAMMPS's default ``%g``
+    keeps 6 significant digits, so such ids are rounded)."""
     v = blk.data[:, col]
     bad = v != np.round(v)
     if bad.any():
         j = int(np.flatnonzero(bad)[0])
         raise InputError(f"{path}: line {blk.first_line + j}, column {col + 1} ({label}): "
                          f"{v[j]} is not an integer id")
+    big = np.abs(v) > MAX_EXACT_ID
+    if big.any():
+        j = int(np.flatnonzero(big)[0])
+        raise InputError(f"{path}: line {blk.first_line + j}, column {col + 1} ({label}): id {v[j]:.17g} "
+                         "is above 2^53 and cannot be read exactly")
+    large = np.flatnonzero(np.abs(v) >= 1e6)
+    if large.size and blk.rows is not None:
+        for j in large[:64]:
+            text = blk.rows[j].split()[col]
+            if "e" in text or "E" in text:
+                raise InputError(f"{path}: line {blk.first_line + j}, column {col + 1} ({label}): id written as "
+                                 f"'{text}': the default %g format keeps 6 significant digits, so ids of "
+                                 f"1 000 000 or more are rounded; write them exactly with '{EXACT_FORMAT}' "
+                                 "(README)")
     return v.astype(np.int64)
 
 
+def _pairs_once(path, blk, id1, id2):
+    """Refuse a body joined to itself and a pair listed twice in one block:
+    both mean ids that the file's format did not hold exactly."""
+    same = np.flatnonzero(id1 == id2)
+    if same.size:
+        j = int(same[0])
+        raise InputError(f"{path}: line {blk.first_line + j}: a contact joins body {int(id1[j])} to itself "
+                         f"(ids rounded by the file's format? write them exactly with '{EXACT_FORMAT}')")
+    key = np.sort(np.stack([id1, id2], axis=1), axis=1)
+    _, first, count = np.unique(key, axis=0, return_index=True, return_counts=True)
+    if np.any(count > 1):
+        again = np.setdiff1d(np.arange(len(key)), first)
+        j = int(again[0])
+        raise InputError(f"{path}: line {blk.first_line + j}: the pair {int(id1[j])}-{int(id2[j])} is listed "
+                         f"twice in one block (ids rounded by the file's format? write them exactly with "
+                         f"'{EXACT_FORMAT}')")
+
+
 def _wrap(d, blk):
-    """Minimum image of d (C, 3) along the periodic axes of the block's box."""
+    """Minimum image of d (C, 3) along the periodic axes of the block's box;
+    in a tilted box that is periodic on every axis, in the cell's fractional
+    coordinates (:func:`postproc.periodic.minimum_image`)."""
+    if blk.tilted:
+        if not blk.periodic.all():
+            raise InputError("a tilted box that is not periodic on every axis: give the branch vectors "
+                             "(LAMMPS p10 p11 p12)")
+        from .periodic import minimum_image
+
+        return minimum_image(d, blk.matrix)
     L = blk.hi - blk.lo
     out = d.copy()
     for k in np.flatnonzero(blk.periodic):
@@ -233,7 +316,7 @@ def sniff(path):
 
 def _snapshot(k, blk, id1, id2, force, force_normal, branch, body_ids, positions):
     L = blk.hi - blk.lo
-    cell = np.diag(L) if blk.periodic.all() else None
+    cell = blk.matrix if blk.periodic.all() else None
     return Snapshot(
         name=f"{k:06d}", step=int(blk.step), time=float("nan"), stage="dump",
         volume=float(np.prod(L)), box_lo=blk.lo, box_hi=blk.hi,
@@ -333,7 +416,7 @@ def read_atoms(path):
             if all(c in cols for c in names):
                 pos = blk.data[:, [cols.index(c) for c in names]]
                 if scaled:
-                    pos = blk.lo + pos * (blk.hi - blk.lo)
+                    pos = blk.lo + pos @ blk.matrix.T
                 break
         else:
             raise InputError(f"{path}: line {blk.first_line - 1}: the atom dump needs columns "
@@ -379,6 +462,7 @@ def _lammps_block(path, atoms, k, blk, pos_by_step):
     off = 1 if blk.columns[0] == "index" else 0
     id1 = _ids(path, blk, idx["id1"] + off, "patom1")
     id2 = _ids(path, blk, idx["id2"] + off, "patom2")
+    _pairs_once(path, blk, id1, id2)
     f_on_1 = D[:, [idx["fx"], idx["fy"], idx["fz"]]] + D[:, [idx["ftx"], idx["fty"], idx["ftz"]]]
     if blk.step not in pos_by_step:
         raise InputError(f"{path}: line {blk.first_line - 9}: step {blk.step} has no block in "
@@ -396,6 +480,9 @@ def _lammps_block(path, atoms, k, blk, pos_by_step):
                              f"the atom dump {atoms} at step {blk.step}")
     if has_branch:
         branch = -D[:, [idx["lx"], idx["ly"], idx["lz"]]]        # x_J - x_I
+    elif blk.tilted and not blk.periodic.all():
+        raise InputError(f"{path}: line {blk.first_line - 5}: a tilted box that is not periodic on every "
+                         "axis: give the branch vectors (LAMMPS p10 p11 p12)")
     else:
         branch = _wrap(pos[lookup(id2, ids)] - pos[lookup(id1, ids)], blk)
     snap = _snapshot(k, blk, id1, id2, -f_on_1, None, branch, ids, pos)
