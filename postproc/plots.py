@@ -201,50 +201,58 @@ def plot_contact_types(df, path, label=""):
     plt.close(fig)
 
 
-def plot_packing(snap, shapes, labels, path, label=""):
-    """A 3D picture of one snapshot: particles (polyhedra as translucent
-    triangles, spheres as translucent dots) and the particle-particle
-    contacts as segments between centres, coloured and thickened by the
-    normal force (the seed's force-chain snapshot figure)."""
-    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+TYPE_COLOURS = {"simple": "#4477aa", "double": "#ee6677", "triple": "#228833"}
 
-    from .vtk import contact_mesh, particle_mesh
+
+def plot_slabs(panels, path, colour="force", title=""):
+    """Slabs side by side (the seed's force-network figures, in 2-D): each
+    panel a (label, slab dict of :func:`postproc.slab.slab`). Grain sections
+    filled light grey, contacts as segments between centres, width
+    proportional to f_n / <f_n> of the panel (capped at 4) and coloured by
+    it (``colour="force"``) or by contact type (``colour="type"``, the
+    slab's labels: simple, double, triple)."""
+    from matplotlib.collections import LineCollection, PatchCollection, PolyCollection
+    from matplotlib.patches import Circle
 
     plt = _plt()
-    pts, cells, _, pdata = particle_mesh(snap, shapes)
-    cpts, ccells, cdata = contact_mesh(snap, labels)
-    fig = plt.figure(figsize=(5.5, 7))
-    ax = fig.add_subplot(projection="3d")
-    for kind, conn in cells:
-        if kind == "triangle":
-            ax.add_collection3d(Poly3DCollection(pts[conn], facecolor="0.8", edgecolor="0.6",
-                                                 linewidths=0.1, alpha=0.12))
-        else:
-            p = pts[conn[:, 0]]
-            ax.scatter(p[:, 0], p[:, 1], p[:, 2], s=2, color="0.6", alpha=0.3)
-    fn = cdata["fn"][0]
-    pp = np.asarray(labels) != "wall"
-    if pp.any() and fn[pp].max() > 0:
-        lines = ccells[0][1][pp]
-        seg = cpts[lines]
-        w = fn[pp] / fn[pp].mean()
-        order = np.argsort(w)
-        cmap = plt.get_cmap("inferno_r")
-        lc = Line3DCollection(seg[order], colors=cmap(np.clip(w[order] / 3, 0, 1)),
-                              linewidths=0.3 + 1.2 * np.clip(w[order], 0, 4))
-        ax.add_collection3d(lc)
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels) + 0.8, 6.4), squeeze=False)
+    cmap = plt.get_cmap("inferno_r")
+    for ax, (label, s) in zip(axes[0], panels):
+        if s["polygons"]:
+            ax.add_collection(PolyCollection(s["polygons"], facecolor="0.88", edgecolor="0.55", linewidths=0.4))
+        centres, radii = s["discs"]
+        if len(radii):
+            ax.add_collection(PatchCollection([Circle(c, r) for c, r in zip(centres, radii)],
+                                              facecolor="0.88", edgecolor="0.55", linewidths=0.4))
+        fn, seg = np.asarray(s["fn"], float), s["segments"]
+        if len(fn) and fn.mean() > 0:
+            w = fn / fn.mean()
+            order = np.argsort(w)
+            if colour == "type" and s["labels"] is not None:
+                cols = [TYPE_COLOURS.get(str(x), "0.3") for x in np.asarray(s["labels"])[order]]
+            else:
+                cols = cmap(np.clip(w[order] / 3, 0, 1))
+            ax.add_collection(LineCollection(seg[order], colors=cols, linewidths=0.3 + 1.1 * np.clip(w[order], 0, 4),
+                                             capstyle="round"))
+        (x0, y0), (x1, y1) = s["extent"]
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_aspect("equal")
+        names = "xyz"
+        ax.set_xlabel(f"{names[s['axes'][0]]} (m)")
+        ax.set_ylabel(f"{names[s['axes'][1]]} (m)")
+        ax.set_title(f"{label}\n{len(fn)} contacts in a slab {s['thickness'] * 1e3:.0f} mm thick", fontsize=9)
+    if colour == "type":
+        from matplotlib.lines import Line2D
+
+        axes[0][-1].legend(handles=[Line2D([], [], color=c, lw=2, label=k) for k, c in TYPE_COLOURS.items()],
+                           fontsize=8, loc="upper right")
+    else:
         sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(0, 3))
-        fig.colorbar(sm, ax=ax, shrink=0.5, label=r"$f_n/\langle f_n\rangle$")
-    lo, hi = snap.box_lo, snap.box_hi
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_zlim(lo[2], hi[2])
-    ax.set_box_aspect(hi - lo)
-    ax.set_axis_off()
-    ax.view_init(elev=12, azim=-60)
-    ax.set_title(label, fontsize=9)
-    fig.tight_layout()
-    fig.savefig(path, dpi=130)
+        fig.colorbar(sm, ax=list(axes[0]), shrink=0.6, label=r"$f_n/\langle f_n\rangle$ (width too)")
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.savefig(path, dpi=130, bbox_inches="tight")
     plt.close(fig)
 
 

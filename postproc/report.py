@@ -8,7 +8,7 @@ manifest, ``STUDY_DIR/<sample>/run.h5`` and its ``analysis/``. Writes
 * ``report.md`` and ``report.html`` (rendered from it, figures embedded by
   relative links);
 * the paper's figures for S1 and S2 side by side (``fig_*.png``), the
-  contact-type figures of S1, one picture of each packing coloured by
+  contact-type figures of S1, the force networks of both samples in a slab, coloured by
   normal force;
 * ``comparison.csv`` (our values beside the published ones) and
   ``claims.csv`` (the six claims, their numbers and verdicts).
@@ -209,16 +209,63 @@ def group_branch_polar(run, target=0.3, nbins=9):
     return out, f"snapshot {snap.name}, eps_q = {eq[k]:.3f} ({counts} contacts)"
 
 
-def _packing_picture(run, title, path):
-    from . import plots
+def _slab_snapshots(runs):
+    """{sample: (run, snapshot name, eps_q)}: for the first usable run of each
+    sample, the snapshot nearest the largest strain both samples reached
+    (from the run's summary.csv; the last snapshot without one)."""
+    import pandas as pd
+
+    chosen, eq = {}, {}
+    for s in SAMPLES:
+        ok = _usable(runs, s)
+        if not ok:
+            continue
+        p = os.path.join(ok[0]["analysis"], "summary.csv") if ok[0].get("analysis") else None
+        df = pd.read_csv(p, dtype={"snapshot": str}) if p and os.path.exists(p) else None
+        chosen[s], eq[s] = ok[0], df
+    known = [df["eps_q"].max() for df in eq.values() if df is not None and len(df)]
+    target = min(known) if known else None
+    out = {}
+    for s, run in chosen.items():
+        df = eq[s]
+        if df is None or not len(df) or target is None:
+            out[s] = (run, None, float("nan"))
+        else:
+            k = int(np.argmin(np.abs(df["eps_q"].to_numpy() - target)))
+            out[s] = (run, str(df["snapshot"].iloc[k]), float(df["eps_q"].iloc[k]))
+    return out
+
+
+def _slab_of(run, name):
+    """(slab dict, snapshot name) of a run's snapshot (the last when name is
+    None), contacts labelled by the group (simple, double, triple) of the
+    analysis's contact-type criterion."""
     from .classify import classifier_for, snapshot_classes
     from .schema import DumpReader
+    from .slab import slab
 
     with DumpReader(run["dump"]) as reader:
         shapes = reader.shapes()
-        snap = reader.read(len(reader) - 1)
-    labels = snapshot_classes(snap, classifier_for(shapes))
-    plots.plot_packing(snap, shapes, labels, path, f"{title}, snapshot {snap.name}")
+        if name is not None and name not in reader.names:
+            raise ValueError(f"{run['dump']}: no snapshot {name!r} (summary.csv and dump disagree)")
+        snap = reader.read(len(reader) - 1 if name is None else reader.names.index(name))
+    labels = None
+    if shapes is not None:
+        from .contacttypes import GROUP_OF
+
+        labels = np.array([GROUP_OF.get(str(x), str(x)) for x in snapshot_classes(snap, classifier_for(shapes))])
+    return slab(snap, shapes, labels=labels), snap.name
+
+
+def _slab_pictures(picked, colour, path):
+    from . import plots
+
+    panels = []
+    for s, (run, name, eq) in picked.items():
+        sl, snap_name = _slab_of(run, name)
+        strain = f"εq = {eq:.3f}" if np.isfinite(eq) else "last snapshot"
+        panels.append((f"{LABEL[s]}, snapshot {snap_name}, {strain}", sl))
+    plots.plot_slabs(panels, path, colour=colour)
 
 
 def build_report(study, out=None, reference=REFERENCE):
@@ -294,12 +341,17 @@ def build_report(study, out=None, reference=REFERENCE):
             if os.path.exists(src):
                 shutil.copyfile(src, os.path.join(out, "s1_" + name))
                 figures.append(("s1_" + name, cap))
-    for s in SAMPLES:
-        ok = _usable(runs, s)
-        if ok:
-            figure(f"packing_{s}.png", _packing_picture, ok[0], LABEL[s],
-                   caption=f"{LABEL[s]}, last snapshot: contacts between centres, coloured and "
-                           "thickened by f_n/⟨f_n⟩")
+    picked = _slab_snapshots(runs)
+    if picked:
+        figure("packing_slab.png", _slab_pictures, picked, "force",
+               caption="force networks in a slab 1.5 mean diameters thick through the middle of the sample "
+                       "(normal to y; z is the compression axis), both samples at the same strain (the snapshot "
+                       "of each nearest the largest εq both reached, first seed): grains cut by the mid-plane, "
+                       "contacts between centres, width and colour by f_n/⟨f_n⟩. 3-D: postproc export-vtk")
+    if "polyhedra" in picked:
+        figure("s1_slab_types.png", _slab_pictures, {"polyhedra": picked["polyhedra"]}, "type",
+               caption="the same slab of S1, contacts coloured by type (the analysis's criterion), width by "
+                       "f_n/⟨f_n⟩")
 
     rows = comparison_table(summaries, ref)
     comp = pd.DataFrame([{"quantity": q, "sample": s,

@@ -16,7 +16,7 @@ pytestmark = [pytest.mark.yade,
 FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
            "s1_contact_types.png", "s1_force_pdf.png", "s1_networks.png", "s1_footprint.png",
            "fig_types_polar.png",
-           "packing_polyhedra.png", "packing_spheres.png")
+           "packing_slab.png", "s1_slab_types.png")
 
 
 @pytest.fixture(scope="module")
