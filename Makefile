@@ -67,8 +67,8 @@ study: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS)
 
-# Speed against error (issue 14): a yade-batch sweep over kappa and I, 3 seeds
-# per point, S1 200 grains and S2 1000 spheres (FRONT_PLAN=kernel, about 2 h
+# Speed against error: a yade-batch sweep over kappa and I, 3 seeds
+# per point, S1 200 grains and S2 1000 spheres (FRONT_PLAN=kernel, about 1.5 h
 # on 2 cores; FRONT_PLAN=quick is the older 24-grain, one-seed sweep), then
 # the analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front

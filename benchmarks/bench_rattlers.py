@@ -13,7 +13,7 @@ figures go into the README. Times are medians of ``--repeat`` runs.
            within a cut-off (mean z about 5), 10 % of the contacts carrying
            no force, so rattlers and dangling arms of all depths exist.
   analyze  ``postproc analyze`` end to end on the 300 000-contact chain as a
-           flat CSV table (the hold-out case of issue 12: 7 min 27 s before).
+           flat CSV table (the slow case before: 7 min 27 s).
 """
 import argparse
 import os

@@ -1,4 +1,4 @@
-"""Speed against error of the analysis estimators (issue 7), on synthetic
+"""Speed against error of the analysis estimators, on synthetic
 contact sets with known anisotropies (a, a_l, a_n, a_t) = (0.3, 0.1, 0.5, 0.2):
 
     python benchmarks/front_analysis.py [--out runs/front-analysis] [--reps 40]

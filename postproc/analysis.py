@@ -69,7 +69,7 @@ def _stress_columns(prefix, sigma, axis):
 
 def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     """summary.csv columns of the contact types of a polyhedra snapshot
-    (issue 13; seed figs. 10-12 and claim 6), and the class of each contact.
+    (seed figs. 10-12 and claim 6), and the class of each contact.
 
     ``classifier`` a :class:`postproc.classify.Classifier` (footprint groups
     by default, or the angular criterion). ``sel`` (C,) bool marks the

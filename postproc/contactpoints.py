@@ -48,10 +48,10 @@ Tolerance. A face or edge of length L counts when it lies flat to about
 (g + delta) / L; delta adds a margin alpha h to the slab. The counts
 converge as alpha -> 0 (the slab alone); the default alpha = 0.1 keeps
 faces that lie flush (to round-off) and is where halving and doubling alpha
-moves each group by less than 0.03 on the S1 runs (README "Contact types":
+moves each group by less than 0.03 on the S1 runs (docs/contact-types.md:
 at alpha = 1 they move by 0.09-0.11). The slab itself grows with the
 overlap, i.e. with the contact stiffness and the force: the groups are not
-independent of kappa (README).
+independent of kappa (docs/contact-types.md).
 
 Pure functions over arrays; no file I/O; vectorised in blocks of contacts.
 """
@@ -64,7 +64,7 @@ import numpy as np
 from .contacttypes import EDGE, FACE, PAIR_TYPES, VERTEX, pair_types
 from .errors import InputError
 
-DEFAULT_ALPHA = 0.1       # delta = alpha * h, h = V / area (the overlap's mean thickness); see README
+DEFAULT_ALPHA = 0.1       # delta = alpha * h, h = V / area (the overlap's mean thickness); see docs/contact-types.md
 SIMPLE, DOUBLE, TRIPLE = 0, 1, 2
 _BLOCK = 1 << 11
 

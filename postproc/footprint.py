@@ -28,7 +28,7 @@ dimension of the contact set: 0 (a point), 1 (a line), 2 (an area) at the
 resolution t d.
 
 The threshold is a convention, not a gap: on the S1 runs measured so far
-(kappa = 300, README "Contact types") L1/d and L2/d have broad unimodal
+(kappa = 300, docs/contact-types.md) L1/d and L2/d have broad unimodal
 distributions (the overlaps are about 0.005 d thick, V/area, and the blunt
 vertices of the library grains spread them over about ten depths, so
 vertex contacts already have footprints of 0.03-0.1 d, against edges of
@@ -47,7 +47,7 @@ from .errors import InputError
 
 SIMPLE, DOUBLE, TRIPLE = 0, 1, 2
 GROUPS = ("simple", "double", "triple")
-DEFAULT_THRESHOLD = 0.1           # t, in units of the pair size d: a convention (see README), no gap
+DEFAULT_THRESHOLD = 0.1           # t, in units of the pair size d: a convention (see docs/contact-types.md), no gap
 
 
 def pair_size(d1, d2):

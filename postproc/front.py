@@ -1,4 +1,4 @@
-"""Speed against error (issue 7): the simulation front of a sweep, and the
+"""Speed against error: the simulation front of a sweep, and the
 accuracy and cost of the analysis estimators on synthetic sets.
 
 Simulation front. A sweep folder holds ``<sample>/<sample>-<desc>.h5``

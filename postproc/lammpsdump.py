@@ -257,7 +257,7 @@ def _ids(path, blk, col, label):
                 raise InputError(f"{path}: line {blk.first_line + j}, column {col + 1} ({label}): id written as "
                                  f"'{text}': the default %g format keeps 6 significant digits, so ids of "
                                  f"1 000 000 or more are rounded; write them exactly with '{EXACT_FORMAT}' "
-                                 "(README)")
+                                 "(docs/other-codes.md)")
     return v.astype(np.int64)
 
 
@@ -428,7 +428,7 @@ def read_atoms(path):
 def read_lammps_local(path, atoms):
     """Snapshots (or InputError per bad block) of a LAMMPS ``dump local`` of
     ``compute property/local patom1 patom2`` and ``compute pair/local fx fy fz
-    p1 p2 p3 [p10 p11 p12]`` (pair_style granular; see the README for the
+    p1 p2 p3 [p10 p11 p12]`` (pair_style granular; see docs/other-codes.md for the
     exact input lines), with the positions from the ``dump custom`` file
     ``atoms`` (same timesteps). Columns in that order, or named id1 id2 fx fy
     fz ftx fty ftz [lx ly lz] with ``dump_modify colname``; a leading
@@ -458,7 +458,7 @@ def _lammps_block(path, atoms, k, blk, pos_by_step):
     else:
         raise InputError(f"{path}: line {blk.first_line - 1}: {len(cols)} columns; a LAMMPS "
                          "contact dump has 8 (patom1 patom2 fx fy fz p1 p2 p3) or 11 "
-                         "(... p10 p11 p12) columns, or named ones (README)")
+                         "(... p10 p11 p12) columns, or named ones (docs/other-codes.md)")
     off = 1 if blk.columns[0] == "index" else 0
     id1 = _ids(path, blk, idx["id1"] + off, "patom1")
     id2 = _ids(path, blk, idx["id2"] + off, "patom2")

@@ -1,4 +1,4 @@
-"""Checkpoints and resume (issue 15): the checkpoint file format (no YADE),
+"""Checkpoints and resume: the checkpoint file format (no YADE),
 then tiny YADE runs killed by SIGKILL or stopped by SIGTERM and resumed."""
 import os
 import random
@@ -136,7 +136,7 @@ def test_sigkill_at_a_random_moment_then_resume_matches_the_uninterrupted_run(tm
     grow), so A is C's uninterrupted continuation. C is resumed, SIGKILLed
     at a random moment, resumed again: its dump must hold the same snapshots
     as A's, in order, without duplicates, and bit for bit (the resume is
-    exact on the kernel path; the README says why)."""
+    exact on the kernel path; docs/scenes.md says why)."""
     a, c = str(tmp_path / "A"), str(tmp_path / "C")
     generate(a, "tiny", "polyhedra", dict(TINY), library=shape_library)
     pa = _start(a)

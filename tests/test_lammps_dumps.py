@@ -1,5 +1,5 @@
-"""LIGGGHTS pair/gran/local and LAMMPS pair/local + property/local dumps
-(issue 12): files built here in each code's format (header, keyword order,
+"""LIGGGHTS pair/gran/local and LAMMPS pair/local + property/local dumps:
+files built here in each code's format (header, keyword order,
 sign convention as pinned in postproc/lammpsdump.py), against the exact
 stresses of a periodic lattice and against the flat-table path."""
 import numpy as np

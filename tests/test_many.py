@@ -1,4 +1,4 @@
-"""Many inputs at once (issue 12): one folder per input, a combined
+"""Many inputs at once: one folder per input, a combined
 summary.csv with a source column, a bad file reported and skipped."""
 import os
 

@@ -1,4 +1,4 @@
-"""Periodic cells (issue 12): minimum-image branch vectors in flat tables
+"""Periodic cells: minimum-image branch vectors in flat tables
 (--cell) and in dumps (the optional /cell), against exact lattice stresses
 and invariance under re-wrapping."""
 import numpy as np

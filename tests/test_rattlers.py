@@ -1,4 +1,4 @@
-"""Rattlers as a queue-driven k-core (issue 12): the same set as the former
+"""Rattlers as a queue-driven k-core: the same set as the former
 layer-by-layer peeling on every kind of graph, in O(particles + contacts)."""
 import numpy as np
 import pytest

@@ -1,4 +1,4 @@
-"""The ballast-like shape library (issue 3)."""
+"""The ballast-like shape library."""
 import numpy as np
 import pytest
 

@@ -1,4 +1,4 @@
-"""SLURM job arrays (issue 12): generate --slurm writes a script bash accepts,
+"""SLURM job arrays: generate --slurm writes a script bash accepts,
 one array task per table line; two tiny lines run locally with
 SLURM_ARRAY_TASK_ID set, then study --collect analyses what has finished."""
 import json

@@ -35,7 +35,7 @@ PLANS = {
                                      "library": "shapes-low.h5"})],
               "spheres": [("ref", {"kappa": 300.0, "inertial_number": 5e-3}),
                           ("fast", {"kappa": 150.0, "inertial_number": 1e-2})]},
-    # the front of the README: small samples sheared to eps_1 = 0.08
+    # the front of docs/front.md: small samples sheared to eps_1 = 0.08
     "quick": {"preset": "default", "common": {"final_strain": 0.08, "dump_strain": 0.005},
               "polyhedra": [
                   ("ref-k1000-I1e-2", {"kappa": 1000.0, "inertial_number": 1e-2, "n_particles": 24}),
@@ -73,7 +73,7 @@ def _grid(points, seeds, n_particles):
     return lines
 
 
-# The front of the README (issue 14): the default preset (dense preparation)
+# The front of docs/front.md: the default preset (dense preparation)
 # sheared to eps_1 = 0.3, 3 seeds per point; S1 at 200 grains (plus a
 # 500-grain point at the default kappa, I), S2 at 1000 spheres (plus 4000).
 # A kappa sweep at the default I, an I sweep at the default kappa and one

@@ -2,7 +2,7 @@
 
 ``tiny``     the test suite: a few dozen particles, a few percent of strain,
              well under 3 minutes per sample on this machine.
-``default``  the main job of ``make study`` (see the README for its cost and
+``default``  the main job of ``make study`` (see docs/scenes.md for its cost and
              how it was chosen), prepared as published: solid fraction about
              0.6 after isotropic compaction for both samples, reached with the
              interparticle friction of the compaction (``compaction_friction``:

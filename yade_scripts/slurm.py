@@ -10,7 +10,7 @@ that line's parameters (``YADE_BATCH=table.txt:LINE``, as yade-batch does),
 and keeps its log (``triaxial.log``) and dump in that folder. A task whose
 dump is already complete exits at once, so the array can be resubmitted
 after failures or time-outs (an unfinished line starts afresh, or resumes
-once the scene writes checkpoints, issue 15). ``python -m yade_scripts.study --collect FOLDER``
+once the scene writes checkpoints). ``python -m yade_scripts.study --collect FOLDER``
 then analyses whatever has finished.
 
 Run a task by hand (no SLURM): ``SLURM_ARRAY_TASK_ID=2 bash slurm.sh``.
@@ -25,7 +25,7 @@ import os
 import shlex
 
 #: Cost model, measured by the kernel front (``make front``, plan ``kernel``,
-#: 2026-11-23; ``front-cost.csv``; README "Paper scale"): medians over the
+#: 2026-11-23; ``front-cost.csv``; docs/scenes.md "Paper scale"): medians over the
 #: front's runs, each on one core (two jobs side by side on 2 cores).
 #: Steps at the reference point (kappa = 300, I = 2e-2, compaction I_c = 5e-2, eps_1 to
 #: 0.3): compaction to the isotropic state and shear, scaled from every run
@@ -63,7 +63,7 @@ def estimate(params):
     that large frictionless sphere packings take longer to settle (the front's
     4000-sphere compactions: 65 400 steps and two not settled after 115 000).
     The kernel's speed-up on more threads is not in the model (2 threads
-    gave 1.6-2.4 x on 1000 grains, README cost table)."""
+    gave 1.6-2.4 x on 1000 grains, docs/scenes.md)."""
     s = params["sample"]
     root = math.sqrt(params["kappa"] / REFERENCE["kappa"])
     comp = (COMPACTION_STEPS[s] * root * REFERENCE["compaction_inertial_number"]
@@ -101,7 +101,7 @@ def write_slurm(folder, params, rows, cpus=2, time="24:00:00", partition=None, n
 # table.txt ({len(rows)} lines). Submit from this folder: sbatch slurm.sh
 # By hand, one task: SLURM_ARRAY_TASK_ID=1 bash slurm.sh
 #
-# Cost model (yade_scripts/slurm.py, README): steps x contacts x us per contact-step
+# Cost model (yade_scripts/slurm.py, docs/scenes.md): steps x contacts x us per contact-step
 #   {params['sample']}, {params['n_particles']} grains, kappa={params['kappa']:g}, I={params['inertial_number']:g}:
 #   ~{est['steps']:.3g} steps x ~{est['contacts']:.3g} contacts x {US_PER_CONTACT_STEP[params['sample']]} us
 #   (one core) = ~{est['core_hours']:.3g} core-hours per line
