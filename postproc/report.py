@@ -178,7 +178,6 @@ def group_branch_polar(run, target=0.3, nbins=9):
 
     from .analysis import group_labels_of
     from .angular import angular_functions
-    from .classify import classifier_for
     from .contactset import resolve
     from .coordination import force_bearing
     from .schema import DumpReader
@@ -192,7 +191,7 @@ def group_branch_polar(run, target=0.3, nbins=9):
     with DumpReader(run["dump"]) as reader:
         shapes = reader.shapes()
         snap = reader.read(reader.names.index(name) if name in reader.names else len(reader) - 1)
-    classifier = classifier_for(shapes)
+    classifier = _run_classifier(run, shapes)
     if classifier is None:
         raise ValueError("the dump has no polyhedra shapes")
     groups = group_labels_of(classifier.classify(snap, variants=False).labels)
@@ -207,6 +206,31 @@ def group_branch_polar(run, target=0.3, nbins=9):
         raise ValueError("no simple or triple contacts")
     counts = ", ".join(f"{g} {int(a.count.sum())}" for g, a in out.items())
     return out, f"snapshot {snap.name}, eps_q = {eq[k]:.3f} ({counts} contacts)"
+
+
+def _run_classifier(run, shapes):
+    """The contact-type classifier the run's analysis used, as recorded in
+    its summary.csv (ct_method, ct_threshold, ct_theta_deg), so that the
+    report's figures classify with the same criterion as its numbers; the
+    defaults when the summary records none."""
+    import pandas as pd
+
+    from .classify import classifier_for
+
+    p = os.path.join(run["analysis"], "summary.csv") if run.get("analysis") else None
+    if p is None or not os.path.exists(p):
+        return classifier_for(shapes)
+    row = pd.read_csv(p, nrows=1)
+    if "ct_method" not in row or not len(row):
+        return classifier_for(shapes)
+    method = str(row["ct_method"].iloc[0])
+    threshold = float(row["ct_threshold"].iloc[0])
+    theta = float(row["ct_theta_deg"].iloc[0])
+    if method == "points":
+        return classifier_for(shapes, "points", theta_deg=theta, tolerance=threshold)
+    if method == "footprint":
+        return classifier_for(shapes, "footprint", threshold=threshold, theta_deg=theta)
+    return classifier_for(shapes, method, theta_deg=theta)
 
 
 def _slab_snapshots(runs):
@@ -240,7 +264,7 @@ def _slab_of(run, name):
     """(slab dict, snapshot name) of a run's snapshot (the last when name is
     None), contacts labelled by the group (simple, double, triple) of the
     analysis's contact-type criterion."""
-    from .classify import classifier_for, snapshot_classes
+    from .classify import snapshot_classes
     from .schema import DumpReader
     from .slab import slab
 
@@ -253,7 +277,7 @@ def _slab_of(run, name):
     if shapes is not None:
         from .contacttypes import GROUP_OF
 
-        labels = np.array([GROUP_OF.get(str(x), str(x)) for x in snapshot_classes(snap, classifier_for(shapes))])
+        labels = np.array([GROUP_OF.get(str(x), str(x)) for x in snapshot_classes(snap, _run_classifier(run, shapes))])
     return slab(snap, shapes, labels=labels), snap.name
 
 
