@@ -8,208 +8,11 @@ from __future__ import annotations
 
 import argparse
 import os
-import shutil
 import sys
-import tempfile
-
-import numpy as np
 
 from .errors import InputError
-from .schema import DumpFormatError, DumpReader
-
-BAD_INPUT = (InputError, DumpFormatError)
-
-
-def _open_source(path, volume, box, cell=None, fmt=None, atoms=None):
-    """(count, iterator of Snapshot or exception, close, shapes) for a dump
-    or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
-    from .lammpsdump import read_text_dump, sniff
-
-    if fmt is not None or atoms is not None or sniff(path) is not None:
-        if volume is not None or box is not None or cell is not None:
-            raise InputError("--volume, --box and --cell are for flat contact tables; "
-                             "a LAMMPS/LIGGGHTS dump has its box")
-        snaps = read_text_dump(path, fmt, atoms)
-        return len(snaps), iter(snaps), lambda: None, None
-    ext = os.path.splitext(path)[1].lower()
-    if ext in (".csv", ".parquet", ".pq"):
-        from .tables import read_contact_table
-
-        snaps = read_contact_table(path, volume=volume, box=box, cell=cell)
-        return len(snaps), iter(snaps), lambda: None, None
-    if volume is not None or box is not None or cell is not None:
-        raise InputError("--volume, --box and --cell are for flat contact tables; "
-                         "a dump has its box")
-    reader = DumpReader(path)
-    if len(reader) == 0:
-        reader.close()
-        raise InputError(f"{path}: the dump holds no snapshots")
-
-    def gen():
-        for i in range(len(reader)):
-            try:
-                yield reader.read(i)
-            except DumpFormatError as exc:
-                yield exc
-
-    try:
-        shapes = reader.shapes()
-    except DumpFormatError:
-        reader.close()
-        raise
-    return len(reader), gen(), reader.close, shapes
-
-
-def pooled_force_pdf(forces):
-    """Long table (class, binning, x, pdf, pdf_weighted, count) of the densities of f_n/<f_n>
-    over the pooled snapshots, each snapshot normalised by its own mean
-    over all its force-bearing particle-particle contacts: class "all" and
-    each contact class and group present. ``forces`` is a list of
-    (normal_force (C,), labels (C,))."""
-    import pandas as pd
-
-    from .analysis import group_labels_of
-    from .networks import force_pdf
-
-    x = np.concatenate([f / f.mean() for f, _ in forces])
-    lab = np.concatenate([lab for _, lab in forces])
-    log_bins = np.geomspace(max(x[x > 0].min(), 1e-4), x.max() * (1 + 1e-9), 31)
-    lin_bins = np.linspace(0, x.max() * (1 + 1e-9), 31)
-    frames = []
-    groups = group_labels_of(lab)
-    for name, sel in [("all", np.ones(len(x), bool))] + \
-            [(k, lab == k) for k in np.unique(lab)] + \
-            [(g, groups == g) for g in np.unique(groups) if g not in np.unique(lab)]:
-        if sel.sum() == 0:
-            continue
-        for binning, bins in (("log", log_bins), ("linear", lin_bins)):
-            c, d = force_pdf(x[sel], mean=1.0, bins=bins)
-            if binning == "linear":
-                c = 0.5 * (bins[:-1] + bins[1:])
-            # density of the class alone, and weighted by its share so the
-            # classes add up to the "all" curve
-            frames.append(pd.DataFrame({"class": name, "binning": binning, "x": c, "pdf": d,
-                                        "pdf_weighted": d * sel.mean(), "count": int(sel.sum())}))
-    return pd.concat(frames, ignore_index=True)
-
-
-def reference_index(stages):
-    """The snapshot whose box is zero strain: the last "isotropic" one (the
-    state from which shear starts), else the first "shear" one, else 0."""
-    iso = [k for k, s in enumerate(stages) if s == "isotropic"]
-    if iso:
-        return iso[-1]
-    return next((k for k, s in enumerate(stages) if s == "shear"), 0)
-
-
-def analyze_path(path, out, axis="z", volume=None, box=None, nbins=18,
-                 errors=True, progress=None, theta_deg=None, types="points", threshold=None,
-                 cell=None, fmt=None, atoms=None, tolerance=None):
-    """Analyse every snapshot of ``path`` and write ``out/summary.csv`` and
-    the figures. For a dump of polyhedra also the contact types
-    (:class:`postproc.classify.Classifier`: ``types`` "points", the
-    default, LMGC90's count of contact points with ``tolerance`` alpha,
-    "footprint" with ``threshold`` in units of the pair size, or "angular"
-    with tolerance ``theta_deg``), ``force_pdf.csv`` and their figures. Returns
-    (n_good, list of error lines)."""
-    from . import footprint as fpm
-    from .classify import classifier_for, check_options
-
-    check_options(types, threshold, theta_deg, tolerance)
-    import pandas as pd
-
-    from . import plots
-    from .analysis import add_strains, analyze_snapshot
-    from .statistics import steady_indices
-
-    if volume is not None and not (np.isfinite(volume) and volume > 0):
-        raise InputError(f"--volume must be finite and > 0, got {volume}")
-    try:
-        from .axes import axis_vector
-
-        e = axis_vector(axis)
-    except ValueError as exc:
-        raise InputError(f"--axis: {exc}") from None
-    count, snaps, close, shapes = _open_source(path, volume, box, cell, fmt, atoms)
-    try:
-        tables = classifier_for(shapes, types, threshold, theta_deg, tolerance)
-    except InputError as exc:
-        close()
-        raise InputError(f"{path}: /shapes: {exc}") from None
-    rows, lengths, stages, last, problems, forces = [], [], [], None, [], []
-    fps = []                   # footprint extents over d of each snapshot (footprint criterion)
-    try:
-        from tqdm import tqdm
-
-        bar = tqdm(snaps, total=count, unit="snapshot", file=sys.stderr,
-                   disable=(count < 5) if progress is None else not progress)
-        for snap in bar:
-            if isinstance(snap, Exception):
-                problems.append(str(snap))
-                continue
-            try:
-                res = analyze_snapshot(snap, axis=e, nbins=nbins, errors=errors,
-                                       tables=tables)
-            except BAD_INPUT as exc:
-                problems.append(str(exc) if str(exc).startswith(("snapshot", path))
-                                else f"snapshot {snap.name}: {exc}")
-                continue
-            rows.append(res.row)
-            lengths.append(snap.box_lengths)
-            stages.append(snap.stage)
-            last = (snap, res)
-            forces.append((res.normal_force, res.labels))
-            fps.append(res.extents)
-    finally:
-        close()
-    if not rows:
-        raise InputError("no snapshot could be analysed: " + "; ".join(problems[:3]))
-    ref = reference_index(stages)
-    add_strains(rows, np.array(lengths), lengths[ref], e)
-    df = pd.DataFrame(rows)
-    lead = ["step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l",
-            "a_n", "a_t", "sff", "sff_residual", "z", "n_contacts"]
-    df = df[lead + [c for c in df.columns if c not in lead]]
-
-    label = os.path.basename(path)
-    parent = os.path.dirname(os.path.abspath(out)) or "."
-    os.makedirs(parent, exist_ok=True)
-    tmp = tempfile.mkdtemp(prefix=".postproc-", dir=parent)
-    try:
-        df.to_csv(os.path.join(tmp, "summary.csv"), index=False)
-        plots.plot_qp_sff(df, os.path.join(tmp, "qp_sff.png"), label)
-        plots.plot_anisotropies(df, os.path.join(tmp, "anisotropies.png"), label)
-        snap, res = last
-        plots.plot_polar(res.angular, res.fits, os.path.join(tmp, "polar_last.png"),
-                         f"{label}: snapshot {snap.name} (step {snap.step})")
-        pool = steady_indices(df["eps_q"], df["stage"])
-        pdf = pooled_force_pdf([forces[k] for k in pool])
-        pdf.to_csv(os.path.join(tmp, "force_pdf.csv"), index=False)
-        what = (f"{label}: snapshots {df['snapshot'].iloc[pool[0]]}-{df['snapshot'].iloc[pool[-1]]}"
-                f" pooled ({len(pool)})")
-        plots.plot_force_pdf(pdf, os.path.join(tmp, "force_pdf.png"), what)
-        plots.plot_networks(df, os.path.join(tmp, "networks.png"), label)
-        if "ct_method" in df:
-            plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
-            ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
-            if ext and df["ct_method"].iloc[0] != "angular":
-                t = float(df["ct_threshold"].iloc[0]) if df["ct_method"].iloc[0] == "footprint" \
-                    else fpm.DEFAULT_THRESHOLD
-                plots.plot_footprint(np.concatenate(ext), t,
-                                     os.path.join(tmp, "footprint.png"), what)
-        if problems:
-            with open(os.path.join(tmp, "errors.txt"), "w") as fh:
-                fh.write("\n".join(problems) + "\n")
-        os.makedirs(out, exist_ok=True)
-        stale = os.path.join(out, "errors.txt")
-        if not problems and os.path.exists(stale):
-            os.remove(stale)
-        for name in os.listdir(tmp):
-            os.replace(os.path.join(tmp, name), os.path.join(out, name))
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    return len(rows), problems
-
+from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+from .schema import DumpReader
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="postproc", description=__doc__.splitlines()[0])
@@ -309,28 +112,46 @@ def main(argv=None):
             return 2
         print(f"postproc: wrote synthetic dump {args.path}", file=sys.stderr)
         return 0
+    options = AnalysisOptions(axis=args.axis, volume=args.volume, box=args.box, cell=args.cell, fmt=args.format,
+                              atoms=args.atoms, nbins=args.bins, errors=not args.no_errors, types=args.types,
+                              tolerance=args.tolerance, threshold=args.threshold, theta_deg=args.theta)
+    if len(args.path) > 1 or os.path.isdir(args.path[0]) or args.jobs != 1:
+        return _analyze_many(args, options)
     try:
-        if len(args.path) > 1 or os.path.isdir(args.path[0]) or args.jobs != 1:
-            from .many import run_from_args
-
-            return run_from_args(args)
-        args.path = args.path[0]
-        if args.bins < 2:
-            raise InputError("--bins must be at least 2")
-        n, problems = analyze_path(args.path, args.out, axis=args.axis, volume=args.volume,
-                                   box=args.box, nbins=args.bins, errors=not args.no_errors,
-                                   progress=args.progress, theta_deg=args.theta, types=args.types,
-                                   threshold=args.threshold, cell=args.cell, tolerance=args.tolerance,
-                                   fmt=args.format, atoms=args.atoms)
+        n, problems = analyze_path(args.path[0], args.out, options, progress=args.progress)
     except BAD_INPUT as exc:
         print(f"postproc: error: {exc}", file=sys.stderr)
         return 2
     for line in problems:
         print(f"postproc: error: {line}", file=sys.stderr)
-    print(f"postproc: analysed {n} snapshot(s) of {args.path} -> {args.out}"
+    print(f"postproc: analysed {n} snapshot(s) of {args.path[0]} -> {args.out}"
           + (f"; {len(problems)} bad snapshot(s), see {args.out}/errors.txt" if problems else ""),
           file=sys.stderr)
     return 1 if problems else 0
+
+
+def _analyze_many(args, options):
+    """``postproc analyze`` with several inputs, a folder or ``--jobs``:
+    the same options for every input (:func:`postproc.many.analyze_many`).
+    Returns the exit code (0 all good, 1 some files or snapshots bad, 2
+    nothing analysed)."""
+    from .many import analyze_many
+
+    try:
+        if options.atoms is not None:
+            raise InputError("--atoms names the positions of one LAMMPS dump; analyse "
+                             "LAMMPS dumps one at a time")
+        options.check()
+        done, errors = analyze_many(args.path, args.out, jobs=args.jobs, options=options)
+    except BAD_INPUT as exc:
+        print(f"postproc: error: {exc}", file=sys.stderr)
+        return 2
+    for line in errors:
+        print(f"postproc: error: {line}", file=sys.stderr)
+    print(f"postproc: analysed {done} file(s) -> {args.out}/summary.csv"
+          + (f"; {len(errors)} problem(s), see {args.out}/errors.txt" if errors else ""),
+          file=sys.stderr)
+    return 1 if errors else 0
 
 
 if __name__ == "__main__":

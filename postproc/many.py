@@ -1,6 +1,6 @@
 """Many inputs at once: ``postproc analyze A B C|FOLDER --out DIR --jobs N``.
 
-Each input is analysed by :func:`postproc.cli.analyze_path` in its own
+Each input is analysed by :func:`postproc.pipeline.analyze_path` in its own
 process (N at a time) into ``DIR/<name>/``; then ``DIR/summary.csv`` holds
 every snapshot row of every input that could be analysed, with a first
 column ``source`` (the input path). A bad file is reported (stderr and
@@ -13,6 +13,7 @@ import sys
 from concurrent.futures import ProcessPoolExecutor
 
 from .errors import InputError
+from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 
 #: file endings a folder is searched for (LAMMPS-style dumps are recognised
 #: by their header, whatever their name)
@@ -52,12 +53,10 @@ def output_names(files):
     return names
 
 
-def _one(path, out, kw):
+def _one(path, out, options):
     """Worker: (path, n_snapshots, bad snapshot lines, file error or None)."""
-    from .cli import BAD_INPUT, analyze_path
-
     try:
-        n, problems = analyze_path(path, out, progress=False, **kw)
+        n, problems = analyze_path(path, out, options, progress=False)
         return path, n, problems, None
     except BAD_INPUT as exc:
         return path, 0, [], str(exc) if str(exc).startswith(path) else f"{path}: {exc}"
@@ -65,11 +64,12 @@ def _one(path, out, kw):
         return path, 0, [], f"{path}: unexpected {type(exc).__name__}: {exc}"
 
 
-def analyze_many(paths, out, jobs=1, **kw):
+def analyze_many(paths, out, jobs=1, options=AnalysisOptions()):
     """Analyse every input into ``out/<name>/`` with ``jobs`` processes and
-    write the combined ``out/summary.csv`` (column ``source`` first).
-    ``kw`` are :func:`postproc.cli.analyze_path` options. Returns (number of
-    files analysed, list of one-line errors: bad files and bad snapshots)."""
+    write the combined ``out/summary.csv`` (column ``source`` first), each
+    with the same :class:`postproc.pipeline.AnalysisOptions`. Returns
+    (number of files analysed, list of one-line errors: bad files and bad
+    snapshots)."""
     import pandas as pd
 
     files = expand_inputs(paths)
@@ -79,7 +79,7 @@ def analyze_many(paths, out, jobs=1, **kw):
         raise InputError(f"--jobs must be at least 1, got {jobs}")
     names = output_names(files)
     os.makedirs(out, exist_ok=True)
-    tasks = [(f, os.path.join(out, n), kw) for f, n in zip(files, names)]
+    tasks = [(f, os.path.join(out, n), options) for f, n in zip(files, names)]
     if jobs == 1 or len(files) == 1:
         results = [_one(*t) for t in tasks]
     else:
@@ -108,37 +108,3 @@ def analyze_many(paths, out, jobs=1, **kw):
     elif os.path.exists(stale):
         os.remove(stale)
     return done, errors
-
-
-def run_from_args(args):
-    """``postproc analyze`` with several inputs, a folder or ``--jobs``:
-    the options of ``args`` that :func:`postproc.cli.analyze_path` takes are
-    passed on to every input. Returns the exit code (0 all good, 1 some
-    files or snapshots bad, 2 nothing analysed)."""
-    import inspect
-
-    from .cli import BAD_INPUT, analyze_path
-
-    renamed = {"nbins": "bins", "theta_deg": "theta", "fmt": "format"}
-    kw = {}
-    for name in list(inspect.signature(analyze_path).parameters)[2:]:
-        if name == "errors":
-            kw[name] = not args.no_errors
-        elif name != "progress" and hasattr(args, renamed.get(name, name)):
-            kw[name] = getattr(args, renamed.get(name, name))
-    try:
-        if kw.get("atoms") is not None:
-            raise InputError("--atoms names the positions of one LAMMPS dump; analyse "
-                             "LAMMPS dumps one at a time")
-        if args.bins < 2:
-            raise InputError("--bins must be at least 2")
-        done, errors = analyze_many(args.path, args.out, jobs=args.jobs, **kw)
-    except BAD_INPUT as exc:
-        print(f"postproc: error: {exc}", file=sys.stderr)
-        return 2
-    for line in errors:
-        print(f"postproc: error: {line}", file=sys.stderr)
-    print(f"postproc: analysed {done} file(s) -> {args.out}/summary.csv"
-          + (f"; {len(errors)} problem(s), see {args.out}/errors.txt" if errors else ""),
-          file=sys.stderr)
-    return 1 if errors else 0

@@ -102,7 +102,7 @@ _CLASS_COLOURS = {"all": "k", "simple": "C0", "double": "C1", "triple": "C3", "V
 def plot_force_pdf(pdf, path, label=""):
     """Probability densities of f_n/<f_n> for all contacts and each class,
     log-log and lin-log (seed fig. 9 style). ``pdf`` is the long table of
-    :func:`postproc.cli.pooled_force_pdf`."""
+    :func:`postproc.pipeline.pooled_force_pdf`."""
     plt = _plt()
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     classes = [c for c in ("all", "simple", "double", "triple", "VF", "EE", "EF", "FF", "sphere")

@@ -11,9 +11,10 @@ with several threads), run on one thread. ``--ensemble N`` (N >= 2):
 each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
 1..N, run by yade-batch on ``--jobs`` cores (spheres first, they are
 quick). Complete dumps are never run again, so a rerun only does what is
-missing. Every dump is analysed by ``postproc analyze`` into an analysis
+missing. Every dump is analysed (:func:`postproc.pipeline.analyze_path`, what
+``postproc analyze`` runs) into an analysis
 folder; ``OUT/manifest.json`` lists the runs and their status, and
-``postproc report`` writes ``OUT/report/``. A failed run is reported and
+the report (:func:`postproc.report.build_report`) goes to ``OUT/report/``. A failed run is reported and
 everything else still builds; the exit code is non-zero when a run failed.
 """
 from __future__ import annotations
@@ -205,7 +206,21 @@ def analyse_and_report(out, runs, attempts=None):
     goes into the manifest when a run was resumed."""
     import json
 
-    from postproc.cli import main as postproc_main
+    from postproc.pipeline import BAD_INPUT, analyze_path
+    from postproc.report import build_report
+
+    def analyse(dump, analysis):
+        """The dump's analysis into ``analysis``; None when it worked (some
+        bad snapshots allowed: they are in analysis/errors.txt), else the
+        one-line reason."""
+        try:
+            _, problems = analyze_path(dump, analysis, progress=False)
+        except BAD_INPUT as exc:
+            print(f"[study] analysis of {dump} failed: {exc}", flush=True)
+            return str(exc)
+        for line in problems:
+            print(f"[study] {dump}: {line}", flush=True)
+        return None if os.path.exists(os.path.join(analysis, "summary.csv")) else "no summary.csv written"
 
     attempts = ATTEMPTS if attempts is None else attempts
     manifest, failed = {}, []
@@ -226,8 +241,8 @@ def analyse_and_report(out, runs, attempts=None):
             if status != 0 and progress and progress["steady_snapshots"] >= 2:
                 print(f"[{s}] analysing {label} (partial, reached eps_1 = {progress['eps_1_reached']:.3f}): {dump}",
                       flush=True)
-                rc = postproc_main(["analyze", dump, "--out", analysis, "--no-progress"])
-                if rc in (0, 1) and os.path.exists(os.path.join(analysis, "summary.csv")):
+                bad = analyse(dump, analysis)
+                if bad is None:
                     why = "partial"
                     extra["partial"] = progress
                     extra["note"] = (f"run failed (exit {status}) at eps_1 = {progress['eps_1_reached']:.3f} of "
@@ -235,7 +250,7 @@ def analyse_and_report(out, runs, attempts=None):
                                      f"snapshots (eps_1 >= {progress['steady_from_eps_1']:.3f}) are used"
                                      + (f"; {extra['note']}" if "note" in extra else ""))
                 else:
-                    why = f"run failed ({status}) and its partial dump could not be analysed (exit {rc})"
+                    why = f"run failed ({status}) and its partial dump could not be analysed ({bad})"
                 failed.append(f"{s} {label}")
             elif status != 0:
                 got = (f"; it reached eps_1 = {progress['eps_1_reached']:.3f}, before the steady state "
@@ -247,9 +262,8 @@ def analyse_and_report(out, runs, attempts=None):
                 failed.append(f"{s} {label}")
             else:
                 print(f"[{s}] analysing {label}: {dump}", flush=True)
-                rc = postproc_main(["analyze", dump, "--out", analysis, "--no-progress"])
-                why = "ok" if rc in (0, 1) and os.path.exists(os.path.join(analysis, "summary.csv")) \
-                    else f"analysis failed (exit {rc})"
+                bad = analyse(dump, analysis)
+                why = "ok" if bad is None else f"analysis failed ({bad})"
                 if why != "ok":
                     failed.append(f"{s} {label}")
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
@@ -257,7 +271,8 @@ def analyse_and_report(out, runs, attempts=None):
                                 "info": os.path.relpath(info, out), "status": why, **extra})
     with open(os.path.join(out, "manifest.json"), "w") as fh:
         json.dump(manifest, fh, indent=1)
-    postproc_main(["report", out])
+    path = build_report(out)
+    print(f"[study] report written to {path} (and report.html)", flush=True)
     return failed
 
 

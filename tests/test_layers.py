@@ -1,0 +1,104 @@
+"""The shape of the code: ``postproc`` in layers that import only downward,
+with no import loop (imports inside functions included), and ``postproc``
+never importing yade or the scene package."""
+import ast
+import os
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+#: postproc's layers, from the bottom: a module may import its own layer or
+#: lower ones, never a higher one
+LAYERS = [
+    ("base", {"errors", "schema", "axes", "statistics", "periodic"}),
+    ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
+    ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
+                 "contactpoints", "footprint", "classify", "pertype", "branchlength", "dilatancy", "slab"}),
+    ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
+    ("study", {"claims", "report", "front"}),
+    ("interface", {"many", "cli"}),
+]
+LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}
+
+
+def postproc_imports():
+    """{module: {postproc module it imports, at any depth of its code}}."""
+    out = {}
+    folder = os.path.join(ROOT, "postproc")
+    for name in sorted(os.listdir(folder)):
+        if not name.endswith(".py") or name == "__init__.py":
+            continue
+        mod = name[:-3]
+        tree = ast.parse(open(os.path.join(folder, name)).read())
+        deps = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                if node.module:
+                    deps.add(node.module.split(".")[0])
+                else:
+                    deps.update(a.name for a in node.names)
+            elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("postproc."):
+                deps.add(node.module.split(".")[1])
+            elif isinstance(node, ast.Import):
+                for a in node.names:
+                    if a.name.startswith("yade") and not a.name.startswith("yade_scripts"):
+                        deps.add("<yade>")
+                    if a.name.startswith("yade_scripts"):
+                        deps.add("<yade_scripts>")
+            if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] in ("yade", "yade_scripts"):
+                deps.add("<" + node.module.split(".")[0] + ">")
+        out[mod] = deps - {mod}
+    return out
+
+
+def test_every_module_has_a_layer():
+    missing = sorted(set(postproc_imports()) - set(LEVEL))
+    assert not missing, f"postproc modules without a layer in tests/test_layers.py: {missing}"
+
+
+def test_layers_import_only_downward():
+    up = [(m, d) for m, deps in postproc_imports().items() for d in deps
+          if d in LEVEL and LEVEL[d] > LEVEL[m]]
+    assert not up, "imports going up a layer: " + ", ".join(f"{m} -> {d}" for m, d in up)
+
+
+def test_no_import_loop():
+    graph = postproc_imports()
+    state = {}
+
+    def visit(m, path):
+        if state.get(m) == "open":
+            raise AssertionError("import loop: " + " -> ".join(path[path.index(m):] + [m]))
+        if state.get(m) == "done":
+            return
+        state[m] = "open"
+        for d in sorted(graph.get(m, ())):
+            if d in graph:
+                visit(d, path + [m])
+        state[m] = "done"
+
+    for m in graph:
+        visit(m, [])
+
+
+def test_postproc_never_imports_yade_or_the_scenes():
+    bad = {m: deps & {"<yade>", "<yade_scripts>"} for m, deps in postproc_imports().items()}
+    assert not any(bad.values()), bad
+
+
+@pytest.mark.parametrize("bad", [("stress", "report"), ("fabric", "fabric_loop")])
+def test_the_checks_can_fail(bad, monkeypatch):
+    """The checks above do catch an upward import and a loop."""
+    graph = postproc_imports()
+    m, d = bad
+    if d == "fabric_loop":
+        graph = {"a": {"b"}, "b": {"a"}}
+        monkeypatch.setattr(__import__(__name__), "postproc_imports", lambda: graph)
+        with pytest.raises(AssertionError, match="import loop"):
+            test_no_import_loop()
+    else:
+        graph[m] = graph[m] | {d}
+        monkeypatch.setattr(__import__(__name__), "postproc_imports", lambda: graph)
+        with pytest.raises(AssertionError, match="going up"):
+            test_layers_import_only_downward()
