@@ -13,6 +13,10 @@ import sys
 from .errors import InputError
 from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 from .schema import DumpReader
+from .report import build_report
+from .vtk import export_vtk
+from .synthetic import write_synthetic_dump
+from .many import analyze_many
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="postproc", description=__doc__.splitlines()[0])
@@ -73,7 +77,6 @@ def main(argv=None):
     vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")
     args = ap.parse_args(argv)
     if args.cmd == "report":
-        from .report import build_report
 
         if not os.path.isdir(args.study):
             print(f"postproc: error: {args.study}: no such study folder", file=sys.stderr)
@@ -82,7 +85,6 @@ def main(argv=None):
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
         return 0
     if args.cmd == "export-vtk":
-        from .vtk import export_vtk
 
         try:
             snaps = None
@@ -102,7 +104,6 @@ def main(argv=None):
               f"contacts.pvd in ParaView)", file=sys.stderr)
         return 0
     if args.cmd == "synthetic":
-        from .synthetic import write_synthetic_dump
 
         try:
             write_synthetic_dump(args.path, args.contacts, args.snapshots, tuple(args.final),
@@ -135,7 +136,6 @@ def _analyze_many(args, options):
     the same options for every input (:func:`postproc.many.analyze_many`).
     Returns the exit code (0 all good, 1 some files or snapshots bad, 2
     nothing analysed)."""
-    from .many import analyze_many
 
     try:
         if options.atoms is not None:

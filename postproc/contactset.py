@@ -12,6 +12,7 @@ import numpy as np
 
 from .errors import InputError
 from .schema import Snapshot, WALL_ORDER
+from .periodic import minimum_image
 
 
 @dataclass
@@ -152,7 +153,6 @@ def resolve(snap: Snapshot) -> ContactSet:
     arm = y2 - y1
     pp = (i1 >= 0) & (i2 >= 0)
     if snap.cell is not None:       # periodic: branch vectors by minimum image
-        from .periodic import minimum_image
 
         arm = minimum_image(arm, snap.cell)
     if snap.branch is not None:     # branch vectors given by the source

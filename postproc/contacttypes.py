@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import InputError
+from .contactset import lookup
 
 VERTEX, EDGE, FACE = 0, 1, 2
 FEATURES = ("vertex", "edge", "face")
@@ -225,7 +226,6 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG, features=False)
     feature1 (P,), feature2 (P,), pair (P,)) for those P pairs.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
-    from .contactset import lookup
 
     if snap.normal is None or snap.body_kind is None or snap.shape_index is None:
         raise InputError(f"{where}: contact types need normals, body kinds and shapes (a dump, not a table)")
@@ -268,7 +268,6 @@ def contact_classes(snap, tables, theta_deg=DEFAULT_THETA_DEG):
     contacts and "wall" for wall contacts. Returns (C,) str."""
     if tables is not None:
         return classify_snapshot(snap, tables, theta_deg)
-    from .contactset import lookup
 
     both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)
     return np.where(both, "sphere", "wall")

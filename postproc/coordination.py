@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import numpy as np
+from scipy.sparse import coo_matrix
 
 #: a contact bears force when |f| > FORCE_FLOOR * max |f| of the snapshot
 FORCE_FLOOR = 1e-9
@@ -59,7 +60,6 @@ def rattlers(i1, i2, bearing, n_particles, min_contacts=2):
     # Deep peeling (chains, dangling arms): a queue. deg counts the contacts
     # left (all between live particles or with walls); the adjacency holds
     # the live particle-particle ones, a repeated pair once with its count.
-    from scipy.sparse import coo_matrix
 
     deg = (np.bincount(a[a >= 0], minlength=n_particles)
            + np.bincount(b[b >= 0], minlength=n_particles)).astype(np.int64)

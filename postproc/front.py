@@ -28,6 +28,16 @@ import time
 import numpy as np
 
 from .statistics import Estimate, plateau_estimate, steady_indices
+from .report import comparison_table
+import pandas as pd
+from .report import REFERENCE
+from .schema import DumpReader
+from .statistics import difference, plateau_estimate as pe
+from .errors import InputError
+from .plots import plot_front, plot_front_trends
+from .angular import angular_functions, fit_harmonics
+from .fabric import anisotropies
+from .synthetic import harmonic_contacts
 
 QUANTITIES = ("q_over_p", "a", "a_n", "a_t")
 
@@ -58,7 +68,6 @@ FRONT_I = 2e-2
 def _run_values(df, sample, reference):
     """{column: value} of one run's summary table: its comparison-table row
     values (each the run's steady plateau or value at the peak)."""
-    from .report import comparison_table
 
     rows = comparison_table({sample: [df.copy()]}, reference)     # copy: one consolidated block
     by_name = {name: est for name, smp, est, _ in rows if smp == sample}
@@ -73,10 +82,7 @@ def collect_runs(folder):
     for the polyhedra kernel touch_steps, the exact touching contact-steps),
     the plateau of q/p, a, a_n, a_t with one-seed batch-means s.e., and every
     quantity of FRONT_QUANTITIES."""
-    import pandas as pd
 
-    from .report import REFERENCE
-    from .schema import DumpReader
 
     with open(REFERENCE) as fh:
         reference = json.load(fh)
@@ -156,7 +162,6 @@ def point_table(runs, quantities=FRONT_QUANTITIES):
     mean over seeds of each quantity ``<q>`` with the 95 % Student's-t
     half-width ``<q>_ci`` (nan with one seed), and the medians of the cost
     columns (wall_seconds, steps, compaction_steps, shear_steps)."""
-    import pandas as pd
 
     rows = []
     for key, g in runs.groupby(POINT, sort=True):
@@ -245,7 +250,6 @@ def size_effect(runs, q, n_small, n_large, kappa_d=FRONT_KAPPA, inertial_d=FRONT
     """Mean over seeds of q at (kappa_d, I_d) for N = n_large minus N =
     n_small (independent samples: Welch's t). Returns (difference, 95 %
     half-width) or (nan, nan)."""
-    from .statistics import difference, plateau_estimate as pe
 
     at = runs[np.isclose(runs["kappa"], kappa_d) & np.isclose(runs["inertial_number"], inertial_d)]
     a = at.loc[at["n_particles"] == n_large, q].to_numpy(float)
@@ -271,7 +275,6 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d
     (``seed_sd``), the size effect (largest N minus the base N at the
     default) and the prediction error of the corner points (stiff and slow
     at once), which tests that the two effects add."""
-    import pandas as pd
 
     rows = []
     for s, gs in runs.groupby("sample"):
@@ -329,7 +332,6 @@ def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
     count, which says how well the kappa^-1/2 and I^-1 laws hold.
     Returns a DataFrame, one row per sample and particle count.
     """
-    import pandas as pd
 
     rows = []
     for (s, n), g in runs.groupby(["sample", "n_particles"]):
@@ -394,8 +396,6 @@ def write_front(folder):
     ``front-cost.csv`` (the cost model), ``front.md`` (the fit and the cost
     as markdown tables), ``front.png`` and ``front-trends.png``. Returns the
     run table."""
-    from .errors import InputError
-    from .plots import plot_front, plot_front_trends
 
     runs = collect_runs(folder)
     if runs.empty:
@@ -427,11 +427,7 @@ def analysis_front(sizes=(100, 300, 1000, 3000, 10000), bins=(6, 9, 18, 36), rep
     n (contacts), seconds (mean per set), rms_<q> for q in a, a_l, a_n, a_t,
     and rms_max.
     """
-    import pandas as pd
 
-    from .angular import angular_functions, fit_harmonics
-    from .fabric import anisotropies
-    from .synthetic import harmonic_contacts
 
     rng = np.random.default_rng(seed)
     keys = ("a", "a_l", "a_n", "a_t")

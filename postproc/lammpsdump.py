@@ -56,6 +56,10 @@ import numpy as np
 
 from .errors import InputError
 from .schema import Snapshot
+import io
+import pandas as pd
+from .periodic import minimum_image
+from .contactset import lookup
 
 #: LIGGGHTS pair/gran/local layouts by column count, keywords in LIGGGHTS'
 #: fixed output order (pos, vel, id, force, force_normal, force_tangential)
@@ -210,9 +214,7 @@ def _fast_rows(rows, n, K):
     """(n, K) float array of the rows through pandas' C parser, or None when
     anything is off (ragged rows, text, NaN, blank lines): the caller then
     walks the rows to name the first bad line and column."""
-    import io
 
-    import pandas as pd
 
     if n == 0:
         return None
@@ -287,7 +289,6 @@ def _wrap(d, blk):
         if not blk.periodic.all():
             raise InputError("a tilted box that is not periodic on every axis: give the branch vectors "
                              "(LAMMPS p10 p11 p12)")
-        from .periodic import minimum_image
 
         return minimum_image(d, blk.matrix)
     L = blk.hi - blk.lo
@@ -470,7 +471,6 @@ def _lammps_block(path, atoms, k, blk, pos_by_step):
     ids, pos = pos_by_step[blk.step]
     if len(np.unique(ids)) != len(ids):
         raise InputError(f"{atoms}: step {blk.step}: duplicate atom ids")
-    from .contactset import lookup
 
     for side, v in (("patom1", id1), ("patom2", id2)):
         miss = lookup(v, ids) < 0

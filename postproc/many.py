@@ -14,6 +14,8 @@ from concurrent.futures import ProcessPoolExecutor
 
 from .errors import InputError
 from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+from .lammpsdump import sniff
+import pandas as pd
 
 #: file endings a folder is searched for (LAMMPS-style dumps are recognised
 #: by their header, whatever their name)
@@ -24,7 +26,6 @@ def expand_inputs(paths):
     """Files to analyse: each path as given, a folder replaced by its dumps,
     tables and LAMMPS/LIGGGHTS local dumps (sorted; atom dumps and other
     files are left out). A missing path is kept, to be reported."""
-    from .lammpsdump import sniff
 
     out = []
     for p in paths:
@@ -70,7 +71,6 @@ def analyze_many(paths, out, jobs=1, options=AnalysisOptions()):
     with the same :class:`postproc.pipeline.AnalysisOptions`. Returns
     (number of files analysed, list of one-line errors: bad files and bad
     snapshots)."""
-    import pandas as pd
 
     files = expand_inputs(paths)
     if not files:

@@ -18,6 +18,18 @@ import numpy as np
 
 from .errors import InputError
 from .schema import DumpFormatError, DumpReader
+from .lammpsdump import read_text_dump, sniff
+from .tables import read_contact_table
+import pandas as pd
+from .analysis import group_labels_of
+from .networks import force_pdf
+from . import footprint as fpm
+from . import plots
+from .analysis import add_strains, analyze_snapshot
+from .axes import axis_vector
+from .classify import classifier_for
+from .statistics import steady_indices
+from .classify import check_options
 
 BAD_INPUT = (InputError, DumpFormatError)
 
@@ -25,7 +37,6 @@ BAD_INPUT = (InputError, DumpFormatError)
 def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None):
     """(count, iterator of Snapshot or exception, close, shapes) for a dump
     or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
-    from .lammpsdump import read_text_dump, sniff
 
     if fmt is not None or atoms is not None or sniff(path) is not None:
         if volume is not None or box is not None or cell is not None:
@@ -35,7 +46,6 @@ def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None):
         return len(snaps), iter(snaps), lambda: None, None
     ext = os.path.splitext(path)[1].lower()
     if ext in (".csv", ".parquet", ".pq"):
-        from .tables import read_contact_table
 
         snaps = read_contact_table(path, volume=volume, box=box, cell=cell)
         return len(snaps), iter(snaps), lambda: None, None
@@ -68,10 +78,7 @@ def pooled_force_pdf(forces):
     over all its force-bearing particle-particle contacts: class "all" and
     each contact class and group present. ``forces`` is a list of
     (normal_force (C,), labels (C,))."""
-    import pandas as pd
 
-    from .analysis import group_labels_of
-    from .networks import force_pdf
 
     x = np.concatenate([f / f.mean() for f, _ in forces])
     lab = np.concatenate([lab for _, lab in forces])
@@ -133,7 +140,6 @@ class AnalysisOptions:
 
     def check(self):
         """Raise InputError (one line) for options that cannot work."""
-        from .classify import check_options
 
         if self.nbins < 2:
             raise InputError("--bins must be at least 2")
@@ -151,14 +157,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     figures. Outputs go to a temporary folder first and are moved into
     ``out`` at the end. Returns (n_good, list of error lines); raises
     InputError when nothing could be analysed."""
-    import pandas as pd
 
-    from . import footprint as fpm
-    from . import plots
-    from .analysis import add_strains, analyze_snapshot
-    from .axes import axis_vector
-    from .classify import classifier_for
-    from .statistics import steady_indices
 
     o = options
     o.check()

@@ -31,6 +31,18 @@ import numpy as np
 from .claims import evaluate, plateau
 from .dilatancy import peak_summary
 from .statistics import plateau_estimate
+import pandas as pd
+from .analysis import analyze_snapshot
+from .schema import DumpReader
+from .analysis import group_labels_of
+from .angular import angular_functions
+from .contactset import resolve
+from .coordination import force_bearing
+from .classify import classifier_for
+from .classify import snapshot_classes
+from .slab import slab
+from .contacttypes import GROUP_OF
+from . import plots
 
 SAMPLES = ("polyhedra", "spheres")
 LABEL = {"polyhedra": "S1 polyhedra", "spheres": "S2 spheres"}
@@ -77,7 +89,6 @@ def _summaries(runs):
     (eps_1 < partial["steady_from_eps_1"]) are relabelled stage "transient",
     so that its steady window is the complete runs' one, not half of the
     strain it happened to reach."""
-    import pandas as pd
 
     out = {}
     for s in runs:
@@ -150,10 +161,7 @@ def _cost_rows(runs):
 def _polar_data(run, target=0.3):
     """(af, fits, caption) at the snapshot nearest eps_q = target (or the
     last one) of a run's dump."""
-    import pandas as pd
 
-    from .analysis import analyze_snapshot
-    from .schema import DumpReader
 
     df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
     eq = df["eps_q"].to_numpy(float)
@@ -174,13 +182,7 @@ def group_branch_polar(run, target=0.3, nbins=9):
     polyhedra pairs, default contact types) at the snapshot nearest
     eps_q = ``target`` (or the last one) of a run's dump: the paper's
     claim-6 figure. theta from the compression axis (z)."""
-    import pandas as pd
 
-    from .analysis import group_labels_of
-    from .angular import angular_functions
-    from .contactset import resolve
-    from .coordination import force_bearing
-    from .schema import DumpReader
 
     df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
     eq = df["eps_q"].to_numpy(float)
@@ -213,9 +215,7 @@ def _run_classifier(run, shapes):
     its summary.csv (ct_method, ct_threshold, ct_theta_deg), so that the
     report's figures classify with the same criterion as its numbers; the
     defaults when the summary records none."""
-    import pandas as pd
 
-    from .classify import classifier_for
 
     p = os.path.join(run["analysis"], "summary.csv") if run.get("analysis") else None
     if p is None or not os.path.exists(p):
@@ -237,7 +237,6 @@ def _slab_snapshots(runs):
     """{sample: (run, snapshot name, eps_q)}: for the first usable run of each
     sample, the snapshot nearest the largest strain both samples reached
     (from the run's summary.csv; the last snapshot without one)."""
-    import pandas as pd
 
     chosen, eq = {}, {}
     for s in SAMPLES:
@@ -264,9 +263,6 @@ def _slab_of(run, name):
     """(slab dict, snapshot name) of a run's snapshot (the last when name is
     None), contacts labelled by the group (simple, double, triple) of the
     analysis's contact-type criterion."""
-    from .classify import snapshot_classes
-    from .schema import DumpReader
-    from .slab import slab
 
     with DumpReader(run["dump"]) as reader:
         shapes = reader.shapes()
@@ -275,14 +271,12 @@ def _slab_of(run, name):
         snap = reader.read(len(reader) - 1 if name is None else reader.names.index(name))
     labels = None
     if shapes is not None:
-        from .contacttypes import GROUP_OF
 
         labels = np.array([GROUP_OF.get(str(x), str(x)) for x in snapshot_classes(snap, _run_classifier(run, shapes))])
     return slab(snap, shapes, labels=labels), snap.name
 
 
 def _slab_pictures(picked, colour, path):
-    from . import plots
 
     panels = []
     for s, (run, name, eq) in picked.items():
@@ -295,9 +289,7 @@ def _slab_pictures(picked, colour, path):
 def build_report(study, out=None, reference=REFERENCE):
     """Write the report of the study folder ``study``; returns the path of
     report.md. Raises nothing for failed runs: they are listed."""
-    import pandas as pd
 
-    from . import plots
 
     out = out or os.path.join(study, "report")
     os.makedirs(out, exist_ok=True)

@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.stats import t
 
 STEADY_START = 0.5
 N_BATCHES = 4
@@ -56,7 +57,6 @@ class Estimate:
         """(low, high) Student's t interval; (nan, nan) without an error."""
         if not (np.isfinite(self.se) and self.dof >= 1):
             return (np.nan, np.nan)
-        from scipy.stats import t
 
         h = t.ppf(0.5 + level / 2, self.dof) * self.se
         return (self.mean - h, self.mean + h)

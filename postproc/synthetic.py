@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .axes import rotation_z_to
+from .schema import KIND_SPHERE, DumpWriter
 
 
 @dataclass
@@ -136,7 +137,6 @@ def write_synthetic_dump(path, n_contacts=20000, n_snapshots=6, final=(0.3, 0.1,
     Every contact joins two fresh spheres; there are no wall contacts, and the
     wall forces are left at zero. Returns the list of truths per snapshot.
     """
-    from .schema import KIND_SPHERE, DumpWriter
 
     rng = np.random.default_rng(seed)
     k_ax = int(np.argmax(np.abs(np.asarray(rotation_z_to(axis))[:, 2])))

@@ -36,6 +36,9 @@ import numpy as np
 
 from .errors import InputError
 from .schema import WALL_ORDER, Snapshot
+import pandas as pd
+from .periodic import cell_matrix
+from .periodic import same_point_modulo
 
 REQUIRED = ("id1", "id2", "x1", "y1", "z1", "x2", "y2", "z2",
             "cx", "cy", "cz", "fx", "fy", "fz")
@@ -43,7 +46,6 @@ BRANCH = ("lx", "ly", "lz")
 
 
 def _read_frame(path):
-    import pandas as pd
 
     ext = os.path.splitext(path)[1].lower()
     try:
@@ -89,7 +91,6 @@ def read_contact_table(path, volume=None, box=None, cell=None):
     if cell is not None:
         if box is not None:
             raise InputError("--box (walls) and --cell (periodic) exclude each other")
-        from .periodic import cell_matrix
 
         cell = np.asarray(cell, float).reshape(3)
         if not np.all(np.isfinite(cell)) or np.any(cell <= 0):
@@ -152,7 +153,6 @@ def _snapshot(path, k, step, df, volume, box, cell=None):
             raise InputError(f"{where}: row {r}: lx,ly,lz of a particle-particle contact "
                              "missing or NaN")
     elif cell is not None:
-        from .periodic import same_point_modulo
 
         clash = ~same_point_modulo(pos, centres[inv], cell)
         if clash.any():
