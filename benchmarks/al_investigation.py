@@ -40,7 +40,7 @@ from scipy.spatial.transform import Rotation
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 from postproc.axes import axis_vector, quaternion_matrices, rotation_z_to   # noqa: E402
-from postproc.branchlength import (_solid_moments, length_profile,  # noqa: E402
+from postproc.study.branchlength import (_solid_moments, length_profile,  # noqa: E402
                                    principal_extents, radial_distance, subset_anisotropy)
 from postproc.classify import Classifier                   # noqa: E402
 from postproc.contactset import resolve                    # noqa: E402

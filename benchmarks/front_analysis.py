@@ -10,7 +10,7 @@ table.
 import argparse
 import os
 
-from postproc.front import analysis_front
+from postproc.study.front import analysis_front
 from postproc.plots import plot_analysis_front
 
 

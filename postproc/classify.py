@@ -290,7 +290,6 @@ def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None
     return Classifier(shapes, method, threshold, theta_deg, tolerance=tolerance)
 
 
-
 class AngularTables(Classifier):
     """The angular criterion at ``theta_deg`` from prebuilt
     :class:`postproc.contacttypes.ShapeTables` (no triangles needed)."""

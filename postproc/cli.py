@@ -11,12 +11,13 @@ import os
 import sys
 
 from .errors import InputError
+from .many import analyze_many
 from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 from .schema import DumpReader
-from .report import build_report
-from .vtk import export_vtk
 from .synthetic import write_synthetic_dump
-from .many import analyze_many
+from .vtk import export_vtk
+from .study.report import build_report
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="postproc", description=__doc__.splitlines()[0])

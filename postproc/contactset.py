@@ -11,8 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import InputError
-from .schema import Snapshot, WALL_ORDER
 from .periodic import minimum_image
+from .schema import WALL_ORDER, Snapshot
 
 
 @dataclass

@@ -34,8 +34,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import InputError
 from .contactset import lookup
+from .errors import InputError
 
 VERTEX, EDGE, FACE = 0, 1, 2
 FEATURES = ("vertex", "edge", "face")

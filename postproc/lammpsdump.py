@@ -49,17 +49,17 @@ so LAMMPS's pxy is our sigma[1, 0] (tests/test_lammps_fixtures.py).
 """
 from __future__ import annotations
 
+import io
 import os
 import re
 
 import numpy as np
-
-from .errors import InputError
-from .schema import Snapshot
-import io
 import pandas as pd
-from .periodic import minimum_image
+
 from .contactset import lookup
+from .errors import InputError
+from .periodic import minimum_image
+from .schema import Snapshot
 
 #: LIGGGHTS pair/gran/local layouts by column count, keywords in LIGGGHTS'
 #: fixed output order (pos, vel, id, force, force_normal, force_tangential)
@@ -214,7 +214,6 @@ def _fast_rows(rows, n, K):
     """(n, K) float array of the rows through pandas' C parser, or None when
     anything is off (ragged rows, text, NaN, blank lines): the caller then
     walks the rows to name the first bad line and column."""
-
 
     if n == 0:
         return None

@@ -12,10 +12,11 @@ import os
 import sys
 from concurrent.futures import ProcessPoolExecutor
 
-from .errors import InputError
-from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
-from .lammpsdump import sniff
 import pandas as pd
+
+from .errors import InputError
+from .lammpsdump import sniff
+from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 
 #: file endings a folder is searched for (LAMMPS-style dumps are recognised
 #: by their header, whatever their name)

@@ -15,21 +15,18 @@ import tempfile
 from dataclasses import dataclass
 
 import numpy as np
-
-from .errors import InputError
-from .schema import DumpFormatError, DumpReader
-from .lammpsdump import read_text_dump, sniff
-from .tables import read_contact_table
 import pandas as pd
-from .analysis import group_labels_of
-from .networks import force_pdf
-from . import footprint as fpm
-from . import plots
-from .analysis import add_strains, analyze_snapshot
+
+from . import footprint as fpm, plots
+from .analysis import add_strains, analyze_snapshot, group_labels_of
 from .axes import axis_vector
-from .classify import classifier_for
+from .classify import check_options, classifier_for
+from .errors import InputError
+from .lammpsdump import read_text_dump, sniff
+from .networks import force_pdf
+from .schema import DumpFormatError, DumpReader
 from .statistics import steady_indices
-from .classify import check_options
+from .tables import read_contact_table
 
 BAD_INPUT = (InputError, DumpFormatError)
 
@@ -78,7 +75,6 @@ def pooled_force_pdf(forces):
     over all its force-bearing particle-particle contacts: class "all" and
     each contact class and group present. ``forces`` is a list of
     (normal_force (C,), labels (C,))."""
-
 
     x = np.concatenate([f / f.mean() for f, _ in forces])
     lab = np.concatenate([lab for _, lab in forces])
@@ -157,7 +153,6 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     figures. Outputs go to a temporary folder first and are moved into
     ``out`` at the end. Returns (n_good, list of error lines); raises
     InputError when nothing could be analysed."""
-
 
     o = options
     o.check()

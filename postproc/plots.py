@@ -409,11 +409,11 @@ TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_pe
 def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     """The kappa and I trends of the front, one row per sample, one panel per
     quantity (kappa_d, inertial_d: the default point, the fit's units;
-    postproc.front.FRONT_KAPPA, FRONT_I): point means over seeds with
+    postproc.study.front.FRONT_KAPPA, FRONT_I): point means over seeds with
     their 95 % intervals against
     x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
     at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
-    (postproc.front.fit_rigid_quasistatic, in the form fit_table chose:
+    (postproc.study.front.fit_rigid_quasistatic, in the form fit_table chose:
     x^alpha and x^beta) and the extrapolated X0 at x = 0
     (star, with its interval); other points (the corner) as crosses."""
     plt = _plt()

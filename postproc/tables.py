@@ -33,12 +33,11 @@ from __future__ import annotations
 import os
 
 import numpy as np
+import pandas as pd
 
 from .errors import InputError
+from .periodic import cell_matrix, same_point_modulo
 from .schema import WALL_ORDER, Snapshot
-import pandas as pd
-from .periodic import cell_matrix
-from .periodic import same_point_modulo
 
 REQUIRED = ("id1", "id2", "x1", "y1", "z1", "x2", "y2", "z2",
             "cx", "cy", "cz", "fx", "fy", "fz")

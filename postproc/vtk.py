@@ -22,10 +22,10 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from .axes import quaternion_matrices
+from .classify import check_options, classifier_for, snapshot_classes
 from .contactset import lookup
 from .contacttypes import PAIR_TYPES
 from .errors import InputError
-from .classify import check_options, classifier_for, snapshot_classes
 from .schema import DumpReader
 
 TYPE_CODES = {**{t: k for k, t in enumerate(PAIR_TYPES)}, "sphere": 6, "wall": 7}
@@ -116,7 +116,6 @@ def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False, typ
     ``tolerance``; "footprint", threshold in units of d; or "angular",
     tolerance ``theta_deg``): :class:`postproc.classify.Classifier`."""
     import meshio
-
 
     check_options(types, threshold, theta_deg, tolerance)
     os.makedirs(outdir, exist_ok=True)

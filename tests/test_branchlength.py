@@ -1,11 +1,11 @@
-"""postproc.branchlength: a_l of contact subsets against synthetic sets of
+"""postproc.study.branchlength: a_l of contact subsets against synthetic sets of
 known a_l, and the polyhedron geometry against exact answers."""
 import numpy as np
 import pytest
 from scipy.spatial import ConvexHull
 
 from postproc.axes import rotation_z_to
-from postproc.branchlength import (length_profile, principal_extents, radial_distance,
+from postproc.study.branchlength import (length_profile, principal_extents, radial_distance,
                                    subset_anisotropy)
 from postproc.synthetic import harmonic_contacts
 

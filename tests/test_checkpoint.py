@@ -213,7 +213,7 @@ def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path
     import h5py
     import pandas as pd
 
-    from postproc.report import build_report
+    from postproc.study.report import build_report
     from yade_scripts.study import analyse_and_report, unusable_samples
 
     out = tmp_path / "study"

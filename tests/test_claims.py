@@ -4,7 +4,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from postproc.claims import evaluate
+from postproc.study.claims import evaluate
 from postproc.statistics import Estimate, difference, plateau_estimate, steady_indices
 
 

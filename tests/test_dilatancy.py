@@ -4,7 +4,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from postproc.dilatancy import dilatancy_angle, peak_index, peak_summary
+from postproc.study.dilatancy import dilatancy_angle, peak_index, peak_summary
 from postproc.errors import InputError
 
 

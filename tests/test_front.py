@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from postproc.front import (add_errors, analysis_front, cost_model, fit_rigid_quasistatic, fit_table,
+from postproc.study.front import (add_errors, analysis_front, cost_model, fit_rigid_quasistatic, fit_table,
                             monotone, pareto, point_table)
 
 

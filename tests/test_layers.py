@@ -14,41 +14,48 @@ LAYERS = [
     ("base", {"errors", "schema", "axes", "statistics", "periodic"}),
     ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
-                 "contactpoints", "footprint", "classify", "pertype", "branchlength", "dilatancy", "slab"}),
+                 "contactpoints", "footprint", "classify", "pertype", "slab"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
-    ("study", {"claims", "report", "front"}),
+    ("study", {"study.claims", "study.report", "study.front", "study.dilatancy", "study.branchlength"}),
     ("interface", {"many", "cli"}),
 ]
 LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}
 
 
 def postproc_imports():
-    """{module: {postproc module it imports, at any depth of its code}}."""
+    """{module: {postproc module it imports, at any depth of its code}};
+    modules of a subpackage are named "package.module" (study.report)."""
     out = {}
     folder = os.path.join(ROOT, "postproc")
-    for name in sorted(os.listdir(folder)):
-        if not name.endswith(".py") or name == "__init__.py":
-            continue
-        mod = name[:-3]
-        tree = ast.parse(open(os.path.join(folder, name)).read())
-        deps = set()
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ImportFrom) and node.level == 1:
-                if node.module:
-                    deps.add(node.module.split(".")[0])
-                else:
-                    deps.update(a.name for a in node.names)
-            elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("postproc."):
-                deps.add(node.module.split(".")[1])
-            elif isinstance(node, ast.Import):
-                for a in node.names:
-                    if a.name.startswith("yade") and not a.name.startswith("yade_scripts"):
-                        deps.add("<yade>")
-                    if a.name.startswith("yade_scripts"):
-                        deps.add("<yade_scripts>")
-            if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] in ("yade", "yade_scripts"):
-                deps.add("<" + node.module.split(".")[0] + ">")
-        out[mod] = deps - {mod}
+    for dirpath, _, names in os.walk(folder):
+        package = os.path.relpath(dirpath, folder).replace(os.sep, ".")
+        package = "" if package == "." else package + "."
+        for name in sorted(names):
+            if not name.endswith(".py") or name == "__init__.py":
+                continue
+            mod = package + name[:-3]
+            tree = ast.parse(open(os.path.join(dirpath, name)).read())
+            deps = set()
+            for node in ast.walk(tree):
+                if isinstance(node, ast.ImportFrom) and node.level >= 1:
+                    # relative: from the module's package, node.level - 1 packages up
+                    base = package.rstrip(".").split(".") if package else []
+                    base = base[:len(base) - (node.level - 1)] if node.level > 1 else base
+                    prefix = ".".join(base + ([node.module] if node.module else []))
+                    if node.module:
+                        deps.add(prefix)
+                    else:
+                        deps.update((prefix + "." if prefix else "") + a.name for a in node.names)
+                elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("postproc."):
+                    deps.add(node.module[len("postproc."):])
+                elif isinstance(node, ast.Import):
+                    for a in node.names:
+                        if a.name.split(".")[0] in ("yade", "yade_scripts"):
+                            deps.add("<" + a.name.split(".")[0] + ">")
+                if isinstance(node, ast.ImportFrom) and node.module and node.level == 0 \
+                        and node.module.split(".")[0] in ("yade", "yade_scripts"):
+                    deps.add("<" + node.module.split(".")[0] + ">")
+            out[mod] = deps - {mod}
     return out
 
 
@@ -87,7 +94,7 @@ def test_postproc_never_imports_yade_or_the_scenes():
     assert not any(bad.values()), bad
 
 
-@pytest.mark.parametrize("bad", [("stress", "report"), ("fabric", "fabric_loop")])
+@pytest.mark.parametrize("bad", [("stress", "study.report"), ("fabric", "fabric_loop")])
 def test_the_checks_can_fail(bad, monkeypatch):
     """The checks above do catch an upward import and a loop."""
     graph = postproc_imports()

@@ -4,7 +4,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from postproc.report import _run_classifier
+from postproc.study.report import _run_classifier
 from shapes.generate import generate_library
 
 

@@ -49,7 +49,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
 
 
 def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
-    from postproc.report import build_report
+    from postproc.study.report import build_report
     from yade_scripts.study import main
 
     out, _ = study

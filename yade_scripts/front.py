@@ -9,7 +9,7 @@ every table line overrides ``kappa``, ``inertial_number``, ``n_particles``,
 every point) and ``library`` (``shapes.h5`` is the standard library, 8-37
 vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices, mean
 10, from the same generator). Complete dumps are not run again. Each dump
-is analysed (``postproc analyze``) and :func:`postproc.front.write_front`
+is analysed (``postproc analyze``) and :func:`postproc.study.front.write_front`
 writes ``OUT/front.csv`` (one row per run: cost and every quantity of the
 study's comparison table), ``front-points.csv`` (means and 95 % intervals
 over seeds), ``front-fit.csv`` (the extrapolation to kappa -> inf, I -> 0
@@ -23,8 +23,8 @@ import json
 import os
 import sys
 
-from .generate import DEFAULT_LIBRARY, generate, parse_overrides
-from .presets import ConfigError, coerce
+from .generate import DEFAULT_LIBRARY, generate
+from .parameters import ConfigError, coerce
 
 # plan: {sample: [(description, overrides)]}; the first line is the reference
 PLANS = {
@@ -184,7 +184,7 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"front: error: {exc}", file=sys.stderr)
         return 2
-    from postproc.front import write_front
+    from postproc.study.front import write_front
 
     table = write_front(args.out)
     print(table.to_string(index=False), flush=True)

@@ -25,7 +25,7 @@ defaults, which are the default preset's polyhedra sample.
 """
 from __future__ import annotations
 
-from .parameters import DEFAULTS, SCHEMA, ConfigError, check, coerce  # noqa: F401 (the public names)
+from .parameters import ConfigError, check
 
 PRESETS = {
     "tiny": {

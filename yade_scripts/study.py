@@ -14,7 +14,7 @@ quick). Complete dumps are never run again, so a rerun only does what is
 missing. Every dump is analysed (:func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis
 folder; ``OUT/manifest.json`` lists the runs and their status, and
-the report (:func:`postproc.report.build_report`) goes to ``OUT/report/``. A failed run is reported and
+the report (:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A failed run is reported and
 everything else still builds; the exit code is non-zero when a run failed.
 """
 from __future__ import annotations
@@ -207,7 +207,7 @@ def analyse_and_report(out, runs, attempts=None):
     import json
 
     from postproc.pipeline import BAD_INPUT, analyze_path
-    from postproc.report import build_report
+    from postproc.study.report import build_report
 
     def analyse(dump, analysis):
         """The dump's analysis into ``analysis``; None when it worked (some

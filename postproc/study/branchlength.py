@@ -34,8 +34,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .axes import axis_vector
-from .fabric import anisotropies
+from ..axes import axis_vector
+from ..fabric import anisotropies
 
 
 def subset_anisotropy(branch, mask=None, axis=2, length=None):

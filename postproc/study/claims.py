@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .statistics import Estimate, difference, plateau_estimate, steady_indices
+from ..statistics import Estimate, difference, plateau_estimate, steady_indices
 
 NEGLIGIBLE = 0.05
 SFF_TOLERANCE = 0.15

@@ -26,22 +26,20 @@ import os
 import time
 
 import numpy as np
-
-from .statistics import Estimate, plateau_estimate, steady_indices
-from .report import comparison_table
 import pandas as pd
-from .report import REFERENCE
-from .schema import DumpReader
-from .statistics import difference, plateau_estimate as pe
-from .errors import InputError
-from .plots import plot_front, plot_front_trends
-from .angular import angular_functions, fit_harmonics
-from .fabric import anisotropies
-from .synthetic import harmonic_contacts
+
+from .report import REFERENCE, comparison_table
+from ..angular import angular_functions, fit_harmonics
+from ..errors import InputError
+from ..fabric import anisotropies
+from ..plots import plot_front, plot_front_trends
+from ..schema import DumpReader
+from ..statistics import difference, Estimate, plateau_estimate, plateau_estimate as pe, steady_indices
+from ..synthetic import harmonic_contacts
 
 QUANTITIES = ("q_over_p", "a", "a_n", "a_t")
 
-# The quantities of the study's comparison table (postproc.report.
+# The quantities of the study's comparison table (postproc.study.report.
 # comparison_table), one value per run: column -> row name of that table.
 # phi_iso, the solid fraction after compaction, comes from the dump.
 COMPARISON = {
@@ -82,7 +80,6 @@ def collect_runs(folder):
     for the polyhedra kernel touch_steps, the exact touching contact-steps),
     the plateau of q/p, a, a_n, a_t with one-seed batch-means s.e., and every
     quantity of FRONT_QUANTITIES."""
-
 
     with open(REFERENCE) as fh:
         reference = json.load(fh)
@@ -427,7 +424,6 @@ def analysis_front(sizes=(100, 300, 1000, 3000, 10000), bins=(6, 9, 18, 36), rep
     n (contacts), seconds (mean per set), rms_<q> for q in a, a_l, a_n, a_t,
     and rms_max.
     """
-
 
     rng = np.random.default_rng(seed)
     keys = ("a", "a_l", "a_n", "a_t")

@@ -27,27 +27,25 @@ import os
 import shutil
 
 import numpy as np
+import pandas as pd
 
 from .claims import evaluate, plateau
 from .dilatancy import peak_summary
-from .statistics import plateau_estimate
-import pandas as pd
-from .analysis import analyze_snapshot
-from .schema import DumpReader
-from .analysis import group_labels_of
-from .angular import angular_functions
-from .contactset import resolve
-from .coordination import force_bearing
-from .classify import classifier_for
-from .classify import snapshot_classes
-from .slab import slab
-from .contacttypes import GROUP_OF
-from . import plots
+from .. import plots
+from ..analysis import analyze_snapshot, group_labels_of
+from ..angular import angular_functions
+from ..classify import classifier_for, snapshot_classes
+from ..contactset import resolve
+from ..contacttypes import GROUP_OF
+from ..coordination import force_bearing
+from ..schema import DumpReader
+from ..slab import slab
+from ..statistics import plateau_estimate
 
 SAMPLES = ("polyhedra", "spheres")
 LABEL = {"polyhedra": "S1 polyhedra", "spheres": "S2 spheres"}
 HERE = os.path.dirname(os.path.abspath(__file__))
-REFERENCE = os.path.join(os.path.dirname(HERE), "reference_data", "paper_values.json")
+REFERENCE = os.path.join(os.path.dirname(os.path.dirname(HERE)), "reference_data", "paper_values.json")
 
 
 def discover(study):
@@ -162,7 +160,6 @@ def _polar_data(run, target=0.3):
     """(af, fits, caption) at the snapshot nearest eps_q = target (or the
     last one) of a run's dump."""
 
-
     df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
     eq = df["eps_q"].to_numpy(float)
     k = int(np.nanargmin(np.abs(eq - target))) if np.isfinite(eq).any() else len(df) - 1
@@ -182,7 +179,6 @@ def group_branch_polar(run, target=0.3, nbins=9):
     polyhedra pairs, default contact types) at the snapshot nearest
     eps_q = ``target`` (or the last one) of a run's dump: the paper's
     claim-6 figure. theta from the compression axis (z)."""
-
 
     df = pd.read_csv(os.path.join(run["analysis"], "summary.csv"), dtype={"snapshot": str})
     eq = df["eps_q"].to_numpy(float)
@@ -215,7 +211,6 @@ def _run_classifier(run, shapes):
     its summary.csv (ct_method, ct_threshold, ct_theta_deg), so that the
     report's figures classify with the same criterion as its numbers; the
     defaults when the summary records none."""
-
 
     p = os.path.join(run["analysis"], "summary.csv") if run.get("analysis") else None
     if p is None or not os.path.exists(p):
@@ -289,7 +284,6 @@ def _slab_pictures(picked, colour, path):
 def build_report(study, out=None, reference=REFERENCE):
     """Write the report of the study folder ``study``; returns the path of
     report.md. Raises nothing for failed runs: they are listed."""
-
 
     out = out or os.path.join(study, "report")
     os.makedirs(out, exist_ok=True)
@@ -427,7 +421,7 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
     for q, s, e, p in rows:
         lines.append(f"| {q} | {LABEL[s]} | {e.text() if e else '–'} | {_fmt(p) if p is not None else '–'} |")
     lines += ["", "## The six claims", "",
-              "Thresholds and rules: `postproc/claims.py` (reproduced: every condition holds with its "
+              "Thresholds and rules: `postproc/study/claims.py` (reproduced: every condition holds with its "
               "interval; not reproduced: one is contradicted with its interval; else inconclusive).", "",
               "| # | claim | verdict | numbers |", "|---|---|---|---|"]
     for c in claims:

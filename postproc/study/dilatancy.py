@@ -4,7 +4,7 @@ Per run (one seed), from its snapshot series during shear:
 
 * the peak: the largest q/p over the shear snapshots (seed Fig. 3 shows q/p
   rising to a peak, then a plateau; the plateau is
-  :func:`postproc.claims.plateau`);
+  :func:`postproc.study.claims.plateau`);
 * the dilatancy angle psi at the peak, from the volume change against the
   deviatoric strain (seed eq. 3 for eps_v, eps_q):
 
@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import InputError
+from ..errors import InputError
 
 
 def peak_index(q_over_p, stage):
