@@ -108,6 +108,7 @@ class Geometry:
     shape, local frames, as in a dump's ``/shapes``."""
 
     def __init__(self, vertices, triangles):
+        # loads the compiled kernel: only when overlaps must be recomputed
         from shapes.overlap import OverlapError, ShapeTable
 
         try:
@@ -126,6 +127,7 @@ def recompute(geometry, shape1, pos1, quat1, shape2, pos2, quat2, threads=0):
     largest first; area (P,) m^2; volume (P,) m^3). A pair whose grains do
     not overlap gets volume 0 and footprint (0, 0). Bad poses or indices
     raise InputError."""
+    # loads the compiled kernel: only when overlaps must be recomputed
     from shapes.overlap import OverlapError, batch_overlap
 
     try:

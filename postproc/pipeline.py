@@ -169,7 +169,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     rows, lengths, stages, last, problems, forces = [], [], [], None, [], []
     fps = []                   # footprint extents over d of each snapshot (footprint criterion)
     try:
-        from tqdm import tqdm
+        from tqdm import tqdm  # the progress bar: imported only when a run is analysed
 
         bar = tqdm(snaps, total=count, unit="snapshot", file=sys.stderr,
                    disable=(count < 5) if progress is None else not progress)

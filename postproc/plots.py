@@ -7,10 +7,10 @@ from .angular import AngularFunctions, harmonic_curves
 
 
 def _plt():
-    import matplotlib
+    import matplotlib  # the Agg backend must be chosen before pyplot is imported
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # after the backend (above)
 
     return plt
 
@@ -211,8 +211,9 @@ def plot_slabs(panels, path, colour="force", title=""):
     proportional to f_n / <f_n> of the panel (capped at 4) and coloured by
     it (``colour="force"``) or by contact type (``colour="type"``, the
     slab's labels: simple, double, triple)."""
+    # matplotlib only through _plt (the Agg backend first)
     from matplotlib.collections import LineCollection, PatchCollection, PolyCollection
-    from matplotlib.patches import Circle
+    from matplotlib.patches import Circle  # idem
 
     plt = _plt()
     fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels) + 0.8, 6.4), squeeze=False)
@@ -243,7 +244,7 @@ def plot_slabs(panels, path, colour="force", title=""):
         ax.set_ylabel(f"{names[s['axes'][1]]} (m)")
         ax.set_title(f"{label}\n{len(fn)} contacts in a slab {s['thickness'] * 1e3:.0f} mm thick", fontsize=9)
     if colour == "type":
-        from matplotlib.lines import Line2D
+        from matplotlib.lines import Line2D  # idem
 
         axes[0][-1].legend(handles=[Line2D([], [], color=c, lw=2, label=k) for k, c in TYPE_COLOURS.items()],
                            fontsize=8, loc="upper right")

@@ -115,7 +115,7 @@ def export_vtk(path, outdir, theta_deg=None, snapshots=None, progress=False, typ
     Contact types by ``types`` ("points", the default, tolerance alpha
     ``tolerance``; "footprint", threshold in units of d; or "angular",
     tolerance ``theta_deg``): :class:`postproc.classify.Classifier`."""
-    import meshio
+    import meshio  # only the VTK export needs it
 
     check_options(types, threshold, theta_deg, tolerance)
     os.makedirs(outdir, exist_ok=True)

@@ -435,7 +435,7 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
 
 
 def _html(md, path):
-    import markdown
+    import markdown  # only the HTML rendering needs it
 
     body = markdown.markdown(md, extensions=["tables"])
     style = ("body{font-family:sans-serif;max-width:1100px;margin:2em auto;line-height:1.4}"
