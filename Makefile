@@ -17,7 +17,7 @@ SHAPES_LIB ?= runs/shapes/library.h5
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast study system venv bench clean-venv shapes front kernel
+.PHONY: test test-fast docs study system venv bench clean-venv shapes front kernel
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
@@ -46,6 +46,12 @@ kernel: system venv
 
 test: system venv kernel
 	$(PY) -m pytest -q
+
+# The documentation: docs/*.md and the API reference from the docstrings
+# (Sphinx, MyST), warnings as errors, into runs/docs/html.
+docs: venv
+	$(PY) -m sphinx -E -W -q -b html docs runs/docs/html
+	@echo "docs: runs/docs/html/index.html"
 
 # The fast subset (no YADE, nothing slow): about a minute, for the edit-test loop.
 test-fast: venv kernel

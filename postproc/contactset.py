@@ -17,10 +17,11 @@ from .schema import WALL_ORDER, Snapshot
 
 @dataclass
 class ContactSet:
-    """The contacts of one snapshot, resolved against its bodies.
+    """The contacts of one snapshot, resolved against its bodies (C
+    contacts, B particles; SI units, forces on id2 by id1).
 
-    Attributes (C contacts, B particles; SI units, forces on id2 by id1)
-    ------------------------------------------------------------------
+    Attributes
+    ----------
     force : (C, 3) N, total contact force on id2 by id1.
     arm : (C, 3) m, y2 - y1 where y is the particle centre for a particle
         and the contact point for a wall. ``force (x) arm`` summed over all

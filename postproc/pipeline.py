@@ -111,15 +111,22 @@ def reference_index(stages):
 class AnalysisOptions:
     """How to analyse an input (the options of ``postproc analyze``).
 
+    Attributes
+    ----------
     axis : "x", "y", "z" or a vector, the compression axis.
-    volume : m^3, box : (3,) m, cell : (3,) m: the volume, walls or periodic
-        cell of a flat contact table (dumps carry their own box).
-    fmt : "liggghts-local" or "lammps-local" (default: detected), atoms :
-        the LAMMPS ``dump custom`` with the positions.
-    nbins : theta bins on [0, 90 deg]; errors : compute standard errors.
-    types : contact-type criterion of polyhedra, "points" (LMGC90's count
-        of contact points, ``tolerance`` alpha), "footprint" (``threshold``
-        in units of the pair size) or "angular" (``theta_deg``).
+    volume : float, m^3, the volume of a flat contact table.
+    box : (3,) m, the walls' box of a flat contact table.
+    cell : (3,) m, the periodic cell of a flat contact table (dumps carry
+        their own box or cell).
+    fmt : "liggghts-local" or "lammps-local" (default: detected).
+    atoms : the LAMMPS ``dump custom`` with the positions.
+    nbins : theta bins on [0, 90 deg].
+    errors : compute standard errors.
+    types : contact-type criterion of polyhedra: "points" (LMGC90's count
+        of contact points), "footprint" or "angular".
+    tolerance : alpha of "points", in units of the overlap's mean thickness.
+    threshold : "footprint" threshold, in units of the pair size d.
+    theta_deg : "angular" tolerance, degrees.
     """
     axis: object = "z"
     volume: float | None = None

@@ -339,10 +339,15 @@ class DumpWriter:
     def write_shapes(self, vertices, triangles, triangle_faces=None):
         """Store the polyhedra shapes once.
 
-        vertices : list of (V_s, 3) arrays, m, local frame of shape s.
-        triangles : list of (T_s, 3) int arrays, indices into vertices[s].
-        triangle_faces : list of (T_s,) int arrays, geometric face of each
-            triangle (default: every triangle is its own face).
+        Parameters
+        ----------
+        vertices : list of (V_s, 3) arrays
+            m, the vertices of shape s in its local frame.
+        triangles : list of (T_s, 3) int arrays
+            indices into the vertices of shape s.
+        triangle_faces : list of (T_s,) int arrays, optional
+            the geometric face of each triangle (default: every triangle
+            is its own face).
         """
         if "shapes" in self._links:
             raise DumpFormatError("shapes were already written")

@@ -30,10 +30,16 @@ def slab(snap, shapes=None, axis=1, thickness=None, labels=None):
 
     Parameters
     ----------
-    snap : Snapshot; shapes : (vertices, triangles, faces) lists of the dump
-        (needed for polyhedra); axis : 0, 1 or 2, the slab's normal;
-    thickness : m, default 1.5 mean particle sizes; labels : (C,) contact
-        labels of the snapshot's contacts (e.g. contact types), optional.
+    snap : Snapshot
+    shapes : tuple of three lists, optional
+        the dump's shapes (per shape: its vertices, triangles and faces);
+        needed for polyhedra.
+    axis : int
+        0, 1 or 2, the slab's normal.
+    thickness : float, optional
+        m, default 1.5 mean particle sizes.
+    labels : array of str, optional
+        (C,) labels of the snapshot's contacts (e.g. contact types).
 
     Returns
     -------

@@ -325,6 +325,7 @@ def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
     * ``us_per_contact_step``: wall time per touching contact-step (µs), for
       the run's own threads;
     * ``us_per_grain_step``: wall time per grain-step (µs);
+
     with the relative spread (``*_rsd``, sd / median) of each scaled step
     count, which says how well the kappa^-1/2 and I^-1 laws hold.
     Returns a DataFrame, one row per sample and particle count.
