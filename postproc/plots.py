@@ -216,7 +216,8 @@ def plot_slabs(panels, path, colour="force", title=""):
     from matplotlib.patches import Circle  # idem
 
     plt = _plt()
-    fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels) + 0.8, 6.4), squeeze=False)
+    fig, axes = plt.subplots(1, len(panels), figsize=(4.6 * len(panels) + 0.8, 6.4), squeeze=False,
+                             gridspec_kw={"wspace": 0.35})
     cmap = plt.get_cmap("inferno_r")
     for ax, (label, s) in zip(axes[0], panels):
         if s["polygons"]:
