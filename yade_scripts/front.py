@@ -73,7 +73,7 @@ def _grid(points, seeds, n_particles):
     return lines
 
 
-# The front of docs/front.md: the default preset (dense preparation)
+# The front of docs/front.md: the default preset (prepared as published)
 # sheared to eps_1 = 0.3, 3 seeds per point; S1 at 200 grains (plus a
 # 500-grain point at the default kappa, I), S2 at 1000 spheres (plus 4000).
 # A kappa sweep at the default I, an I sweep at the default kappa and one

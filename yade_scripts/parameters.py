@@ -69,7 +69,7 @@ PARAMETERS = (
     Parameter("log_every", int, (1, 10**9), 200, "steps between log.csv rows"),
     Parameter("check_every", int, (1, 10**9), 200, "steps between blow-up checks"),
     Parameter("report_seconds", float, (0.0, 1e6), 10.0, "seconds between progress lines"),
-    Parameter("timing", bool, None, True, "record the time of each engine (run_info.json)"),
+    Parameter("timing", bool, None, True, "record the time of each engine (run.info.json)"),
     Parameter("contact_engine", str, ("kernel", "yade"), "kernel",
               'polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)'),
     Parameter("kernel_threads", int, (0, 1024), 0, "OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)"),

@@ -76,7 +76,7 @@ readParamsFromTable(
     log_every=200,                    # steps between log.csv rows
     check_every=200,                  # steps between blow-up checks
     report_seconds=10.0,              # seconds between progress lines
-    timing=True,                      # record the time of each engine (run_info.json)
+    timing=True,                      # record the time of each engine (run.info.json)
     contact_engine='kernel',          # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
     kernel_threads=0,                 # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
     verlet_skin=0.1,                  # kernel neighbour-list margin, in units of the mean d
