@@ -1,5 +1,6 @@
-"""The whole study pipeline on the tiny preset, two seeds per sample through
-yade-batch: runs, analyses, report, figures and the claims table."""
+"""The whole study pipeline on the tiny preset, two seeds per sample in one
+schedule (yade_scripts.pool): runs, analyses, report, figures, the claims
+table and the schedule's record."""
 import json
 import math
 import os
@@ -10,7 +11,7 @@ import pytest
 
 YADE = shutil.which("yade")
 pytestmark = [pytest.mark.yade,
-              pytest.mark.skipif(YADE is None or shutil.which("yade-batch") is None,
+              pytest.mark.skipif(YADE is None,
                                  reason="Debian yade is not installed")]
 
 FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
@@ -46,6 +47,12 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     assert "Intervals are 95 % over seeds" in md
     manifest = json.loads((out / "manifest.json").read_text())
     assert [r["status"] for s in manifest.values() for r in s] == ["ok"] * 4
+    sched = json.loads((out / "schedule.json").read_text())
+    assert {a["job"] for a in sched["attempts"]} == {"polyhedra-seed1", "polyhedra-seed2", "spheres-seed1",
+                                                     "spheres-seed2"}
+    from yade_scripts.pool import idle_core_seconds
+    assert sched["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(sched["attempts"], 2))
+    assert sched["summary"]["busy_core_s"] > 0
 
 
 def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):

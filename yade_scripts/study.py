@@ -9,8 +9,9 @@ with the sample name in front. S1 with the compiled contact kernel runs as
 then S1 has both cores); S2, and S1 on YADE's stock contacts (which crashed
 with several threads), run on one thread. ``--ensemble N`` (N >= 2):
 each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
-1..N, run by yade-batch on ``--jobs`` cores (spheres first, they are
-quick). Complete dumps are never run again, so a rerun only does what is
+1..N, and the seeds of both samples run in one schedule on ``--jobs`` cores
+(:mod:`yade_scripts.pool`: longest first, no core idle at the end;
+``OUT/schedule.json`` holds its attempts and idle core-time). Complete dumps are never run again, so a rerun only does what is
 missing. Every dump is analysed (:func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis
 folder; ``OUT/manifest.json`` lists the runs and their status, and
@@ -138,13 +139,19 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, atte
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None):
-    """Seeds 1..n of each sample through yade-batch; returns
-    {sample: [(label, dump path, status)]} (status 0 = complete).
-    ``job_threads``: {sample: YADE threads per job} (default one each)."""
-    from .batch import dump_of, read_table, run_batch
+    """Seeds 1..n of each sample on ``jobs`` cores through one schedule
+    (:func:`yade_scripts.pool.run_pool`: longest runs first, the seeds of
+    both samples interleaved, a freed core given to a running polyhedra
+    run once none waits; the schedule and its idle core-time go to
+    ``OUT/schedule.json``). Returns {sample: [(label, dump path, status)]}
+    (status 0 = complete). ``job_threads``: {sample: threads a job starts
+    on} (default one each)."""
+    from .batch import dump_of, read_table
+    from .pool import Job, run_pool
+    from .slurm import estimate
 
-    result = {}
-    for s in sorted(samples, key=lambda x: x != "spheres"):      # spheres first
+    pool, rows = [], {}
+    for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
         _set_aside_if_changed(folder, preset, s, overrides)
         seeds = list(range(1, n + 1))
@@ -152,14 +159,19 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
             generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
         else:                      # same parameters, maybe another n: rewrite the table only
             write_seed_table(folder, s, seeds)
-        tries = {}
-        status = run_batch(folder, jobs=jobs, tag=s, echo=lambda m: print(m, flush=True), attempts=tries,
-                           job_threads=(job_threads or {}).get(s, 1))
-        ATTEMPTS.update({(s, f"seed {r['seed']}"): tries[r["description"]] for _, r in read_table(folder)
-                         if r["description"] in tries})
-        result[s] = [(f"seed {r['seed']}", dump_of(folder, r), status[r["description"]])
-                     for _, r in read_table(folder)]
-    return result
+        p = resolve(preset, s, overrides)
+        cost = estimate(p)["core_hours"] * 3600
+        rows[s] = read_table(folder)
+        pool += [Job(folder, k, r["description"], dump_of(folder, r), cost, tag=s,
+                     widen=(s == "polyhedra" and p["contact_engine"] == "kernel"),
+                     threads=min((job_threads or {}).get(s, 1), jobs))
+                 for k, r in rows[s]]
+    status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True))
+    for job in pool:
+        if job.exits:
+            ATTEMPTS[(job.tag, f"seed {job.description.rsplit('seed', 1)[1]}")] = list(job.exits)
+    return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
+                for _, r in rows[s]] for s in samples}
 
 
 #: exit codes of every attempt of the runs of this study, {(sample, label): [codes]}
@@ -339,11 +351,11 @@ def main(argv=None):
                          "(e.g. a SLURM array from generate --slurm), run nothing")
     ap.add_argument("--set", action="append", metavar="NAME=VALUE")
     ap.add_argument("--library")
-    ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: via yade-batch)")
-    ap.add_argument("--jobs", type=int, default=2, help="yade-batch jobs at a time (ensembles)")
+    ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: one schedule over both samples)")
+    ap.add_argument("--jobs", type=int, default=2, help="cores of the schedule (ensembles)")
     ap.add_argument("--job-threads", type=int, default=1,
-                    help="YADE threads per polyhedra job of an ensemble (the kernel's OpenMP threads; "
-                         "sphere jobs use one): e.g. --jobs 8 --job-threads 2 on a 16-core node")
+                    help="YADE threads a polyhedra job of an ensemble starts on (the kernel's OpenMP "
+                         "threads; sphere jobs use one): e.g. --jobs 16 --job-threads 2 on a 16-core node")
     args = ap.parse_args(argv)
     if args.collect:
         try:

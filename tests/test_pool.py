@@ -1,0 +1,161 @@
+"""The schedule of many runs (yade_scripts.pool): longest first, a freed core
+to a running kernel job, resumes, the idle core-time. The runs here are a
+stand-in for YADE (a shell script with the scene's exit contract: it writes
+a checkpoint and exits 75 on SIGTERM, a complete dump and 0 at the end), so
+the tests need no YADE and take seconds."""
+from __future__ import annotations
+
+import json
+import os
+import stat
+import sys
+import textwrap
+
+import pytest
+
+from yade_scripts import pool
+from yade_scripts.pool import Job, idle_core_seconds, order, run_pool, time_left, widen_choice
+
+# a stand-in for yade: `fake -j N -n -x triaxial.py` in a run folder, table
+# line from YADE_BATCH; runs WORK core-seconds (from the table) split over N
+# threads, resumes from RUN.ckpt (the work done), exits 75 on SIGTERM with a
+# checkpoint, 0 with a "complete" marker, or the table's exit code.
+FAKE = textwrap.dedent("""\
+    #!{python}
+    import os, signal, sys, time
+    threads = int(sys.argv[sys.argv.index("-j") + 1])
+    table, line = os.environ["YADE_BATCH"].split(":")
+    rows = open(table).read().splitlines()
+    head, row = rows[0].split(), rows[int(line) - 1].split()
+    r = dict(zip(head, row))
+    out = r["out"].strip("'")
+    stem = out[:-3]
+    done = float(open(stem + ".ckpt").read()) if os.path.exists(stem + ".ckpt") else 0.0
+    stop = []
+    signal.signal(signal.SIGTERM, lambda *a: stop.append(1))
+    with open(stem + ".threads", "a") as fh:
+        fh.write(f"{{threads}}\\n")
+    work, tick = float(r["work"]), 0.05
+    while done < work:
+        if stop:
+            open(stem + ".ckpt", "w").write(str(done))
+            sys.exit(75)
+        if int(r.get("crash", 0)) and done > work / 2 and not os.path.exists(stem + ".crashed"):
+            open(stem + ".ckpt", "w").write(str(done))
+            open(stem + ".crashed", "w").write("1")
+            sys.exit(-6 % 256)
+        time.sleep(tick)
+        done += tick * threads
+        print(f"triaxial.py: step 1 shear: eps_1 0.1, {{(work - done) / threads:.1f}} s left", flush=True)
+    if int(r.get("code", 0)):
+        sys.exit(int(r["code"]))
+    open(out, "w").write("complete")
+""")
+
+
+@pytest.fixture
+def fake(tmp_path, monkeypatch):
+    exe = tmp_path / "fake-yade"
+    exe.write_text(FAKE.format(python=sys.executable))
+    exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setattr(pool, "complete", lambda dump: os.path.exists(dump) and open(dump).read() == "complete")
+    monkeypatch.setattr(pool, "has_checkpoint", lambda dump: os.path.exists(dump[:-3] + ".ckpt"))
+    monkeypatch.setattr(pool, "clear_attempt", lambda dump: None)
+    monkeypatch.setattr(pool, "POLL_SECONDS", 0.05)
+    monkeypatch.setattr(pool, "WIDEN_AFTER_SECONDS", 0.2)
+    monkeypatch.setattr(pool, "WIDEN_MIN_SECONDS", 0.3)
+    return str(exe)
+
+
+def jobs_in(folder, rows, widen=()):
+    """A run folder with table.txt rows (description, work s[, code, crash])
+    and its Jobs (cost = work)."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "table.txt"), "w") as fh:
+        fh.write("description out work code crash\n")
+        for d, work, *rest in rows:
+            code, crash = (list(rest) + [0, 0])[:2]
+            fh.write(f"{d} '{d}.h5' {work} {code} {crash}\n")
+    return [Job(str(folder), k + 2, d, os.path.join(folder, f"{d}.h5"), float(work), widen=d in widen, tag="t")
+            for k, (d, work, *rest) in enumerate(rows)]
+
+
+def test_longest_first_and_stable():
+    js = [Job("f", i, f"j{i}", "x", c) for i, c in enumerate([1.0, 5.0, 3.0, 5.0])]
+    assert [j.description for j in order(js)] == ["j1", "j3", "j2", "j0"]
+
+
+def test_widen_only_when_nothing_waits_and_to_the_longest():
+    a, b, c = (Job("f", 2, "a", "x", 1, widen=True), Job("f", 3, "b", "x", 1, widen=True),
+               Job("f", 4, "c", "x", 1, widen=False))
+    running = [(a, 1, 0.0), (b, 1, 0.0), (c, 1, 0.0)]
+    left = {"a": 500.0, "b": None, "c": 9999.0}
+    assert widen_choice(1, 1, running, 100.0, left) is None           # a job waits: it takes the core
+    assert widen_choice(0, 0, running, 100.0, left) is None           # no free core
+    assert widen_choice(1, 0, running, 100.0, left) == (b, 2)         # unknown time left counts as most
+    assert widen_choice(2, 0, [(a, 1, 0.0)], 100.0, left) == (a, 3)   # all free cores
+    assert widen_choice(1, 0, [(a, 1, 90.0)], 100.0, left) is None    # just started
+    assert widen_choice(1, 0, [(a, 1, 0.0)], 100.0, {"a": 60.0}) is None   # nearly done
+    assert widen_choice(1, 0, [(c, 1, 0.0)], 100.0, left) is None     # not widenable
+
+
+def test_time_left_from_the_log(tmp_path):
+    log = tmp_path / "x.log"
+    assert time_left(str(log)) is None
+    log.write_text("triaxial.py: step 5 compaction: sigma/sigma0 [0.1 0.1 0.1], 3 interactions, 9 steps/s, "
+                   "time left known once shear starts\n")
+    assert time_left(str(log)) is None
+    with open(log, "a") as fh:
+        fh.write("triaxial.py: step 9 shear: eps_1 0.1000, q/p (walls) 0.300, 3 interactions, 9 steps/s, "
+                 "about 2.5 min left\nsomething else\n")
+    assert time_left(str(log)) == 150.0
+
+
+def test_idle_core_seconds_exact():
+    att = [{"start": 0.0, "end": 10.0, "threads": 1}, {"start": 0.0, "end": 4.0, "threads": 1},
+           {"start": 4.0, "end": 8.0, "threads": 1}]
+    assert idle_core_seconds(att, 2) == 2 * 10.0 - 18.0
+    assert idle_core_seconds(att + [{"start": 8.0, "end": 10.0, "threads": 1}], 2) == 0.0
+    assert idle_core_seconds([], 2) == 0.0
+
+
+def test_a_freed_core_goes_to_the_long_kernel_job(tmp_path, fake):
+    """Two cores, a 2 s kernel job and a 0.4 s job: after the short one the
+    long one is stopped and resumed on 2 threads; it finishes its work
+    (checkpointed) and the schedule is nearly free of idle time."""
+    js = jobs_in(tmp_path / "f", [("long", 2.0), ("short", 0.4)], widen=("long",))
+    rec = str(tmp_path / "schedule.json")
+    st = run_pool(js, 2, record=rec, echo=lambda m: None, yade=fake)
+    assert st == {"long": 0, "short": 0}
+    assert open(tmp_path / "f" / "long.threads").read().split() == ["1", "2"]
+    data = json.load(open(rec))
+    long_attempts = [a for a in data["attempts"] if a["job"] == "long"]
+    assert [a["threads"] for a in long_attempts] == [1, 2] and long_attempts[0]["widening"]
+    assert js[0].exits == [0]                       # the stop for widening is not an exit of the run
+    s = data["summary"]
+    # idle: the short job's core between its end and the long one's restart
+    # (polls and a process start); run on one thread to the end, the long
+    # job would leave 2 x 2.0 - (2.0 + 0.4) = 1.6 core-s idle: at most half
+    assert 0 <= s["idle_core_s"] < 0.8 and s["idle_core_s"] == pytest.approx(
+        idle_core_seconds(data["attempts"], 2))
+
+
+def test_crash_resumes_and_failure_is_reported(tmp_path, fake):
+    js = jobs_in(tmp_path / "f", [("crashes", 0.4, 0, 1), ("blows", 0.2, 3, 0), ("fine", 0.2)])
+    st = run_pool(js, 2, echo=lambda m: None, yade=fake)
+    assert st["crashes"] == 0 and st["fine"] == 0 and st["blows"] == 3
+    by = {j.description: j.exits for j in js}
+    assert by["crashes"] == [250, 0] and by["blows"] == [3]
+
+
+def test_complete_jobs_are_not_run_again(tmp_path, fake):
+    js = jobs_in(tmp_path / "f", [("a", 0.1)])
+    (tmp_path / "f" / "a.h5").write_text("complete")
+    msgs = []
+    assert run_pool(js, 2, echo=msgs.append, yade=fake) == {"a": 0}
+    assert not (tmp_path / "f" / "a.threads").exists() and any("already complete" in m for m in msgs)
+
+
+def test_bad_core_count():
+    with pytest.raises(pool.ConfigError, match="cores must be >= 1"):
+        run_pool([], 0, yade="x")
