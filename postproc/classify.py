@@ -23,6 +23,12 @@ Three criteria, one interface (:class:`Classifier`):
   corner), else VV, VE or EE from the two sides.
 * ``"angular"`` (``--types angular``): the angular criterion alone, with
   tolerance theta (:mod:`postproc.contacttypes`).
+* ``"commonplane"`` (``--types commonplane``): LMGC90's own detection
+  (:mod:`postproc.commonplane`): Cundall's common plane from the contact
+  normal, the vertices within tau * ref of it (``--tolerance`` tau, default
+  0.1; ref the centre-to-extreme-vertex distance), the vertices of the
+  intersection of their projected hulls as the contact points; no overlap
+  needed.
 
 :meth:`Classifier.classify` returns the class of every contact of a
 snapshot ("VV".."FF", "sphere", "wall") at the chosen parameter and, for
@@ -34,13 +40,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import commonplane as cpl
 from . import contactpoints as cpm
 from . import footprint as fpm
 from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("points", "footprint", "angular")
+METHODS = ("points", "footprint", "angular", "commonplane")
 DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
@@ -90,7 +97,8 @@ class Classifier:
     recompute : "auto" (use the dumped footprint or overlap area, else
     recompute), "always" (ignore dumped ones) or "never". tolerance : alpha
     of the "points" method (delta = alpha V/area; default
-    :data:`postproc.contactpoints.DEFAULT_ALPHA`).
+    :data:`postproc.contactpoints.DEFAULT_ALPHA`), or tau of the
+    "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`).
     """
 
     def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
@@ -105,17 +113,26 @@ class Classifier:
             raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
-        self.tolerance = cpm.check_alpha(cpm.DEFAULT_ALPHA if tolerance is None else tolerance)
+        default = cpl.DEFAULT_NEIGHBOR if method == "commonplane" else cpm.DEFAULT_ALPHA
+        self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
         self._shapes = (vertices, triangles)
         self._geometry = None
         self._points = None
+        self._planes = None
 
     @property
     def parameter(self):
-        """The criterion's parameter: alpha, t (units of d) or theta (deg)."""
-        return {"points": self.tolerance, "footprint": self.threshold}.get(self.method, self.theta_deg)
+        """The criterion's parameter: alpha, t (units of d), theta (deg) or tau."""
+        return {"points": self.tolerance, "footprint": self.threshold,
+                "commonplane": self.tolerance}.get(self.method, self.theta_deg)
+
+    @property
+    def plane_tables(self):
+        if self._planes is None:
+            self._planes = cpl.plane_tables(*self._shapes)
+        return self._planes
 
     @property
     def point_tables(self):
@@ -144,7 +161,34 @@ class Classifier:
                                                   "ct_threshold": self.theta_deg})
         if self.method == "points":
             return self._points_classes(snap, variants)
+        if self.method == "commonplane":
+            return self._commonplane_classes(snap, variants)
         return self._footprint(snap, variants)
+
+    def _commonplane_classes(self, snap, variants):
+        where = f"snapshot {snap.name} (step {snap.step})"
+        self._check_orientations(snap, where)
+        base, poly, _, _, _ = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
+        cols = {"ct_method": "commonplane", "ct_threshold": self.tolerance, "ct_theta_deg": self.theta_deg}
+        if not poly.any():
+            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly, None,
+                           {**cols, "ct_cp_empty": 0.0})
+        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+        args = (self.plane_tables, snap.shape_index[i1], snap.positions[i1], snap.orientations[i1],
+                snap.shape_index[i2], snap.positions[i2], snap.orientations[i2], snap.normal[poly])
+
+        def labels_at(tau):
+            r = cpl.contact_points(*args, neighbor=tau)
+            out = base.copy()
+            out[poly] = np.array(PAIR_TYPES)[r["pair"]]
+            return out, r
+
+        lab, r = labels_at(self.tolerance)
+        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
+        # pairs LMGC90 would not keep (a vertex on a vertex or an edge whose
+        # projections miss each other): counted as simple
+        cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
+        return Classes(lab, var, poly, None, cols)
 
     def _check_orientations(self, snap, where):
         if snap.orientations is not None and snap.body_kind is not None:
