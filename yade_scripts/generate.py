@@ -45,6 +45,7 @@ LIB_FILES = {  # copied name: source
     "loading.py": os.path.join(HERE, "loading.py"),
     "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
     "engine.py": os.path.join(ROOT, "shapes", "engine.py"),
+    "overlap.py": os.path.join(ROOT, "shapes", "overlap.py"),
     "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),
 }
 DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")

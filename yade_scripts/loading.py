@@ -136,8 +136,9 @@ class TriaxialLoading:
         """One row of OUT.log.csv (columns :data:`LOG_HEADER`)."""
         eps = self.strains(L)
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
+        qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 != 0 else float("nan")     # no wall touched yet
         return (f"{step},{time:.6g},{self.stage},{eps[2]:.6g},{eps[0]:.6g},{eps[1]:.6g},{eps.sum():.6g},"
-                f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{(s1 - s3) / (s1 + 2 * s3):.6g},"
+                f"{sig[0]:.6g},{sig[1]:.6g},{sig[2]:.6g},{qp:.6g},"
                 f"{phi:.6g},{unbalanced:.4g},{n_interactions},{n_contacts},{steps_per_second:.4g}\n")
 
     def saved(self):

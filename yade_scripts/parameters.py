@@ -57,7 +57,10 @@ PARAMETERS = (
     Parameter("servo_gain", float, (1e-3, 1e3), 10.0, "proportional gain of the wall servo (lowered if unstable)"),
     Parameter("servo_time", float, (1e-6, 10.0), 0.01,
               "integral time of the servo, as the strain (of the loading rate) it spans"),
-    Parameter("initial_fraction", float, (0.01, 0.33), 0.25, "packing fraction of the bounding spheres at the start"),
+    Parameter("placement", str, ("spheres", "grains"), "spheres",
+              'start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)'),
+    Parameter("initial_fraction", float, (0.01, 0.33), 0.25,
+              "packing fraction at the start: of the bounding spheres, or of the grains (placement grains)"),
     Parameter("aspect", float, (0.1, 20.0), 2.0, "H/L of the initial box"),
     Parameter("iso_tolerance", float, (1e-6, 0.5), 0.01, "isotropic state: |sigma - sigma0| < tol sigma0 on all walls"),
     Parameter("unbalanced_tolerance", float, (1e-6, 1.0), 0.02, "... and unbalanced force ratio below this"),
@@ -123,6 +126,9 @@ def check(params):
     string) over :data:`DEFAULTS`, with the checks that involve two
     parameters. Raises :class:`ConfigError`."""
     p = {k: coerce(k, v) for k, v in {**DEFAULTS, **params}.items()}
+    if p["placement"] == "grains" and p["sample"] == "polyhedra" and p["contact_engine"] != "kernel":
+        raise ConfigError("placement 'grains' needs contact_engine 'kernel' (YADE re-hulls its Polyhedra in "
+                          "another frame)")
     if p["dump_strain"] > p["final_strain"]:
         raise ConfigError(f"dump_strain {p['dump_strain']} is larger than final_strain {p['final_strain']}")
     return p

@@ -83,3 +83,72 @@ def place_in_box(diameters, fraction, aspect, rng, grow=1.05, tries=20):
         except RuntimeError:
             box = box * grow
     raise RuntimeError(f"could not place {len(diameters)} particles even in a box {box}")
+
+
+def place_exact(volumes, radii, fraction, aspect, rng, overlaps, batch=64, max_batches=2000):
+    """Random sequential addition of convex grains tested with their exact
+    shapes: box (3,) m and centres (n, 3) m.
+
+    volumes (n,) m^3 the grains' volumes; radii (n,) m their bounding radii
+    (largest centre-vertex distance); fraction the solid fraction of the
+    grains themselves in the box (a square base of side L, height aspect x
+    L); overlaps(k, X, J, Y) -> (m,) bool: whether grain k centred at X[i]
+    (m, 3) overlaps the placed grain J[i] (m,) centred at Y[i] (the
+    caller's exact test, e.g. :meth:`shapes.overlap.OrientedGrains.overlaps`;
+    the orientations are the caller's). Grains go in, largest
+    first, each at the first of its trial centres (drawn ``batch`` at a time,
+    uniform where its bounding sphere fits in the box) that overlaps no placed
+    grain: only placed grains whose bounding spheres meet it are tested
+    exactly. Convex grains fill about a quarter of their bounding sphere, so
+    this reaches solid fractions three to four times those of
+    :func:`place_spheres` (about 0.06 for our polyhedra at a bounding-sphere
+    fraction of 0.25). Raises RuntimeError naming the grain that found no
+    room after ``max_batches`` x ``batch`` trials (the fraction is too high
+    for random sequential addition)."""
+    vol = np.asarray(volumes, float)
+    r = np.asarray(radii, float)
+    n = len(vol)
+    L = (vol.sum() / fraction / aspect) ** (1 / 3)
+    box = np.array([L, L, aspect * L])
+    pos = np.full((n, 3), np.nan)
+    placed = []
+    for k in np.argsort(-r, kind="stable"):
+        lo, hi = np.full(3, r[k]), box - r[k]
+        if np.any(hi < lo):
+            raise RuntimeError(f"grain {k} (bounding radius {r[k]:.4g} m) is larger than the box {box}")
+        P = np.array(placed, dtype=int)
+        for _ in range(max_batches):
+            X = lo + (hi - lo) * rng.random((batch, 3))
+            if not len(P):
+                pos[k] = X[0]
+                break
+            near = np.linalg.norm(X[:, None, :] - pos[P][None, :, :], axis=2) < r[k] + r[P][None, :]
+            free = ~near.any(axis=1)
+            last = int(np.argmax(free)) if free.any() else batch - 1    # the trials up to the first free one
+            rows, cols = np.nonzero(near[:last + 1])
+            hit = np.zeros(last + 1, bool)
+            if len(rows):
+                hit[rows[overlaps(k, X[rows], P[cols], pos[P[cols]])]] = True
+            ok = np.flatnonzero(~hit)
+            if len(ok):
+                pos[k] = X[ok[0]]
+                break
+        else:
+            raise RuntimeError(f"no room for grain {k} after {max_batches * batch} trials: "
+                               f"lower the initial fraction ({fraction:g})")
+        placed.append(k)
+    return box, pos
+
+
+def place_exact_in_box(volumes, radii, fraction, aspect, rng, overlaps, grow=1.05, tries=20, **kw):
+    """:func:`place_exact`, with the box enlarged by ``grow`` (the fraction
+    lowered by grow^3) whenever random sequential addition jams (likely with
+    few grains, where the walls take a large share of the volume). Raises
+    RuntimeError after ``tries`` enlargements. ``kw`` goes to
+    :func:`place_exact`."""
+    for _ in range(tries):
+        try:
+            return place_exact(volumes, radii, fraction, aspect, rng, overlaps, **kw)
+        except RuntimeError:
+            fraction /= grow ** 3
+    raise RuntimeError(f"could not place {len(volumes)} grains even at a solid fraction of {fraction:.3g}")

@@ -64,7 +64,8 @@ readParamsFromTable(
     safety=0.3,                       # dt = safety * critical time step
     servo_gain=10.0,                  # proportional gain of the wall servo (lowered if unstable)
     servo_time=0.01,                  # integral time of the servo, as the strain (of the loading rate) it spans
-    initial_fraction=0.25,            # packing fraction of the bounding spheres at the start
+    placement='spheres',              # start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)
+    initial_fraction=0.25,            # packing fraction at the start: of the bounding spheres, or of the grains (placement grains)
     aspect=2.0,                       # H/L of the initial box
     iso_tolerance=0.01,               # isotropic state: |sigma - sigma0| < tol sigma0 on all walls
     unbalanced_tolerance=0.02,        # ... and unbalanced force ratio below this
@@ -88,9 +89,9 @@ from yade.params.table import (  # noqa: E402
     sample, n_particles, seed, sigma0, friction, compaction_friction, wall_friction,
     density, kappa, tangential_ratio, inertial_number, wall_speed,
     compaction_inertial_number, damping, compaction_damping, safety, servo_gain,
-    servo_time, initial_fraction, aspect, iso_tolerance, unbalanced_tolerance,
-    dump_strain, final_strain, max_steps, library, out, log_every, check_every,
-    report_seconds, timing, contact_engine, kernel_threads, verlet_skin,
+    servo_time, placement, initial_fraction, aspect, iso_tolerance,
+    unbalanced_tolerance, dump_strain, final_strain, max_steps, library, out, log_every,
+    check_every, report_seconds, timing, contact_engine, kernel_threads, verlet_skin,
     checkpoint_seconds, resume,
 )
 # --- end of parameters ---
@@ -147,7 +148,14 @@ if POLY:
     max_face = np.array([a.max() for a in face_area])
     rot_mass = np.array([timestep.rotational_mass(lib.volume[s], np.diag(lib.inertia[s]), lib[s][0])
                          for s in range(len(lib))])       # d = 1, unit density
-box0, centres = sampling.place_in_box(d, initial_fraction, aspect, rng)   # bounding spheres never overlap
+if POLY and placement == "grains":        # the grains themselves never overlap (exact test, shapes/overlap.py)
+    import overlap  # noqa: E402
+
+    grains = overlap.OrientedGrains([(lib[s][0] * d[k], lib[s][1]) for k, s in enumerate(shape_of)], quats)
+    box0, centres = sampling.place_exact_in_box(d ** 3 * lib.volume[shape_of], d / 2, initial_fraction, aspect, rng,
+                                                grains.overlaps)
+else:                                     # bounding spheres never overlap
+    box0, centres = sampling.place_in_box(d, initial_fraction, aspect, rng)
 
 # ------------------------------------------------------------ materials and stiffness
 if POLY:
