@@ -41,7 +41,8 @@ header holds the bounding box and xy, xz, yz; the cell's own bounds and
 its matrix follow LAMMPS's dump documentation (:class:`Block`). Ids are
 checked for the rounding of a ``%g`` format (:func:`_ids`,
 :func:`_pairs_once`): such files are refused with the ``dump_modify`` line
-that writes them exactly (:data:`EXACT_FORMAT`).
+that writes them exactly (:data:`EXACT_FORMAT` for LAMMPS,
+:func:`liggghts_exact_format` for LIGGGHTS, whose 3.8 refuses the former).
 
 Off-diagonal convention: our stress is sigma_ij = sum f_i l_j / V; LAMMPS's
 pressure tensor is P_ij = sum l_i f_j / V (ev_tally_xyz: v[3] = delx*fy),
@@ -230,15 +231,25 @@ def _fast_rows(rows, n, K):
 
 #: the dump_modify line that makes LAMMPS write ids (and every value) exactly
 EXACT_FORMAT = "dump_modify ID format float %.15g"
+
+
+def liggghts_exact_format(ncols):
+    """The dump_modify line that makes LIGGGHTS write every column of a dump
+    local exactly: LIGGGHTS 3.8 takes one format per column in a single
+    string (it refuses LAMMPS's ``format float``: "Illegal dump_modify
+    command"), and %.17g gives back each double."""
+    return 'dump_modify ID format "' + " ".join(["%.17g"] * ncols) + '"'
+
 #: ids above this are not exact in a float64
 MAX_EXACT_ID = 2 ** 53
 
 
-def _ids(path, blk, col, label):
+def _ids(path, blk, col, label, fix=EXACT_FORMAT):
     """(N,) int64 ids of column ``col``. Refuses ids that a text format
     cannot have held exactly: non-integers, values above 2^53, and ids of
-    1 000 000 or more written with an exponent (LAMMPS's default ``%g``
-    keeps 6 significant digits, so such ids are rounded)."""
+    1 000 000 or more written with an exponent (the default ``%g`` of
+    LAMMPS and LIGGGHTS keeps 6 significant digits, so such ids are
+    rounded); ``fix`` is the dump_modify line the message gives."""
     v = blk.data[:, col]
     bad = v != np.round(v)
     if bad.any():
@@ -257,7 +268,7 @@ def _ids(path, blk, col, label):
             if "e" in text or "E" in text:
                 raise InputError(f"{path}: line {blk.first_line + j}, column {col + 1} ({label}): id written as "
                                  f"'{text}': the default %g format keeps 6 significant digits, so ids of "
-                                 f"1 000 000 or more are rounded; write them exactly with '{EXACT_FORMAT}' "
+                                 f"1 000 000 or more are rounded; write them exactly with '{fix}' "
                                  "(docs/other-codes.md)")
     return v.astype(np.int64)
 
@@ -373,8 +384,9 @@ def _liggghts_block(path, k, blk):
                          "force_tangential) or 18 columns")
     D = blk.data
     x1, x2 = D[:, 0:3], D[:, 3:6]
-    id1 = _ids(path, blk, 6, blk.columns[6])
-    id2 = _ids(path, blk, 7, blk.columns[7])
+    fix = liggghts_exact_format(K)
+    id1 = _ids(path, blk, 6, blk.columns[6], fix)
+    id2 = _ids(path, blk, 7, blk.columns[7], fix)
     flag = D[:, 8]
     if np.any((flag != 0) & (flag != 1)):
         j = int(np.flatnonzero((flag != 0) & (flag != 1))[0])
