@@ -66,8 +66,9 @@ shapes: $(SHAPES_LIB)
 
 # The main job: S1 and S2 on the default preset, side by side (2 cores),
 # then the analysis of every dump and the report (STUDY/report/report.md).
-# ENSEMBLE=n runs n seeds per sample through yade-batch, JOBS at a time
-# (JOB_THREADS threads per polyhedra job). Finished runs are not run again.
+# ENSEMBLE=n runs n seeds per sample in one schedule on JOBS cores
+# (yade_scripts/pool.py: longest first, no core idle at the end; a polyhedra
+# job starts on JOB_THREADS threads). Finished runs are not run again.
 # One 16-core node: make study PRESET=intermediate ENSEMBLE=16 JOBS=16
 study: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
