@@ -183,3 +183,38 @@ def test_progress_lines_and_the_run_history():
     assert FakeO.stopAtIter == 42 and not r._pause_request
     r._on_term(15, None)
     assert r.terminated and r.run_until_stop() is True
+
+
+def test_the_approach_runs_faster_until_half_the_target_stress_then_never_again():
+    """approach_factor F: the walls close at F x the compaction rate while the
+    mean wall stress has never reached sigma0 / 2, at the compaction rate
+    from then on, even if the stress falls back; the latch survives a
+    checkpoint; the isotropic state is the same as without the approach."""
+    from yade_scripts.loading import APPROACH_STRESS
+
+    L = LF * 1.5
+    slow, fast = program(), program(approach_factor=3.0)
+    v_slow = slow.compaction_velocities(np.zeros(3), L)
+    v_fast = fast.compaction_velocities(np.zeros(3), L)
+    np.testing.assert_allclose(v_fast, 3.0 * v_slow, rtol=1e-15)         # far below sigma0: full speed, 3 x
+    assert not fast.approached
+    fast.compaction_velocities(np.full(3, APPROACH_STRESS * SIGMA0), L)
+    assert fast.approached
+    again = fast.compaction_velocities(np.zeros(3), L)                    # stress falls back: stays slow
+    np.testing.assert_allclose(again, slow.compaction_velocities(np.zeros(3), L), rtol=1e-15)
+    copy = program(approach_factor=3.0)
+    copy.restore(json.loads(json.dumps(fast.saved())))
+    assert copy.approached
+    assert program(approach_factor=1.0).approached                        # no approach at all
+    # both reach the isotropic state of the elastic box, the fast one in fewer steps
+    steps = {}
+    for name, p in (("slow", program()), ("fast", program(approach_factor=3.0))):
+        L = LF * 1.5
+        for n in range(1, 200_000):
+            sig = elastic_stress(L)
+            L = step_box(L, p.compaction_velocities(sig, L))
+            if p.isotropic(n, sig, lambda: 0.0):
+                break
+        steps[name] = n
+        np.testing.assert_allclose(elastic_stress(L), SIGMA0, rtol=0.011)
+    assert steps["fast"] < steps["slow"]

@@ -189,7 +189,10 @@ def test_presets_choose_the_contact_engine_and_the_study_its_threads():
     p = resolve("default", "polyhedra")
     assert p["contact_engine"] == "kernel" and p["kernel_threads"] == 0 and p["verlet_skin"] == 0.1
     assert _threads("polyhedra", "default", None) == (os.cpu_count() or 1)
-    assert _threads("polyhedra", "default", {"contact_engine": "yade"}) == 1
+    assert _threads("polyhedra", "default", {"contact_engine": "yade", "placement": "spheres"}) == 1
     assert _threads("spheres", "default", None) == 1
+    # the exact placement needs the kernel's frame of the grains
+    with pytest.raises(ConfigError, match="placement 'grains' needs contact_engine 'kernel'"):
+        resolve("default", "polyhedra", {"contact_engine": "yade"})
     with pytest.raises(ConfigError, match="contact_engine must be one of"):
         resolve("default", "polyhedra", {"contact_engine": "cgal"})

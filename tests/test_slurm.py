@@ -75,8 +75,8 @@ def test_cost_model_scaling():
                                             / 3.6e9, rel=1e-12)
     q = dict(p, kappa=4e4, inertial_number=2e-3, compaction_inertial_number=2e-2)  # 2 x sqrt(kappa), 1/2 I
     assert estimate(q)["steps"] == pytest.approx(e["steps"], rel=1e-12)
-    # the default preset: the reference steps themselves
-    d = estimate(resolve("default", "polyhedra"))
+    # the soft preset (the reference point): the reference steps themselves
+    d = estimate(resolve("soft", "polyhedra"))
     assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
 
 

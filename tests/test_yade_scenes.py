@@ -84,7 +84,7 @@ def test_kernel_tangential_law_and_normal():
 KINDS = ("polyhedra", "polyhedra-yade", "spheres")
 # the tiny preset compacts frictionless (the dense preparation); its loose
 # twins compact at the shear friction 0.5, from the same seed
-VARIANTS = {"polyhedra": {}, "polyhedra-yade": {"contact_engine": "yade"}, "spheres": {},
+VARIANTS = {"polyhedra": {}, "polyhedra-yade": {"contact_engine": "yade", "placement": "spheres"}, "spheres": {},
             "polyhedra-loose": {"compaction_friction": 0.5}, "spheres-loose": {"compaction_friction": 0.5}}
 
 

@@ -25,7 +25,10 @@ except ImportError:           # run folder: lib/servo.py
 ISO_CHECK_EVERY = 50
 #: the program's state carried by a checkpoint
 SAVED_KEYS = ("stage", "H0", "L0", "eps_1", "next_dump", "phi_iso", "integral", "v_top", "contact_steps",
-              "interaction_steps", "shear_start_step", "shear_start_wall")
+              "interaction_steps", "shear_start_step", "shear_start_wall", "approached")
+#: the compaction's approach (faster by ``approach_factor``) ends when the
+#: mean wall stress first reaches this fraction of sigma0
+APPROACH_STRESS = 0.5
 LOG_HEADER = ("step,time,stage,eps_1,eps_2,eps_3,eps_v,s_xx,s_yy,s_zz,q_over_p,phi,unbalanced,n_interactions,"
               "n_contacts,steps_per_s\n")
 
@@ -35,6 +38,9 @@ class TriaxialLoading:
 
     sigma0 (Pa) target stress; rate_compaction, rate_shear (1/s) the
     compaction's fastest wall strain rate and the shear strain rate;
+    approach_factor (>= 1) how much faster the compaction runs until the
+    mean wall stress first reaches APPROACH_STRESS x sigma0 (the loose
+    granular gas and its first contacts, far from the isotropic state);
     wall_speed (m/s) the top wall's speed in shear (0: rate_shear times the
     height at the isotropic state); servo_gain, servo_time, kappa and dt as
     in :func:`servo.servo_rates` and :meth:`stable_gain`; iso_tolerance and
@@ -43,7 +49,7 @@ class TriaxialLoading:
     end."""
 
     def __init__(self, sigma0, rate_compaction, rate_shear, wall_speed, servo_gain, servo_time, kappa, dt,
-                 iso_tolerance, unbalanced_tolerance, dump_strain, final_strain):
+                 iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor=1.0):
         self.sigma0, self.rate_compaction, self.rate_shear = sigma0, rate_compaction, rate_shear
         self.wall_speed, self.servo_gain, self.servo_time = wall_speed, servo_gain, servo_time
         self.kappa, self.dt = kappa, dt
@@ -53,6 +59,7 @@ class TriaxialLoading:
         self.phi_iso, self.integral, self.v_top = None, np.zeros(3), None
         self.contact_steps = self.interaction_steps = 0
         self.shear_start_step = self.shear_start_wall = None
+        self.approach_factor, self.approached = approach_factor, approach_factor <= 1.0
 
     def stable_gain(self, max_rate):
         """The servo gain, lowered if needed so that one step changes the
@@ -64,8 +71,14 @@ class TriaxialLoading:
     # ------------------------------------------------------------ compaction
     def compaction_velocities(self, sig, L):
         """(6, 3) m/s wall velocities that bring the (3,) wall stresses
-        ``sig`` to sigma0 on all three axes (updates the servo's integral)."""
-        rates = servo.servo_rates(sig, self.sigma0, self.rate_compaction, self.stable_gain(self.rate_compaction),
+        ``sig`` to sigma0 on all three axes (updates the servo's integral).
+        The fastest rate is approach_factor x rate_compaction until the
+        mean stress first reaches APPROACH_STRESS x sigma0, rate_compaction
+        from then on."""
+        if not self.approached and np.mean(sig) >= APPROACH_STRESS * self.sigma0:
+            self.approached = True
+        rate = self.rate_compaction * (1.0 if self.approached else self.approach_factor)
+        rates = servo.servo_rates(sig, self.sigma0, rate, self.stable_gain(rate),
                                   self.integral, self.dt, self.servo_time / self.rate_compaction)
         return servo.wall_velocities(rates, L)
 

@@ -3,19 +3,25 @@
 ``tiny``     the test suite: a few dozen particles, a few percent of strain,
              well under 3 minutes per sample on this machine.
 ``default``  the main job of ``make study`` (see docs/scenes.md for its cost and
-             how it was chosen), prepared as published: solid fraction about
-             0.6 after isotropic compaction for both samples, reached with the
+             how it was chosen): 1000 grains per sample at kappa = 3000,
+             I = 5e-3, prepared as published: solid fraction about 0.56-0.6
+             after isotropic compaction for both samples, reached with the
              interparticle friction of the compaction (``compaction_friction``:
-             0.5 for polyhedra, 0 for spheres); friction 0.5 for both in shear.
+             0.5 for polyhedra, 0 for spheres); friction 0.5 for both in
+             shear. The compaction starts from the grains placed with their
+             exact shapes at a solid fraction of 0.25 (``placement``) and
+             runs at I_c = 0.1: a third of the steps of the bounding-sphere
+             start (docs/scenes.md, "Preparation").
+``soft``     the earlier default: kappa = 300, I = 2e-2, bounding-sphere
+             placement, I_c = 5e-2 (ten times softer and four times faster
+             than the default; the front of docs/front.md was measured on it).
 ``loose``    the default with both samples compacted at friction 0.5.
 ``dense``    the default with both samples compacted frictionless.
-``intermediate``  5000 polyhedra at kappa = 3000, I = 5e-3 (stiffer and
-             slower than the default: the kernel front puts the default's
-             stiffness bias on z and the contact types), 1000 spheres (the
-             same box: a sphere of size d has 5.2 x the volume of our
-             polyhedra); one 16-core node through yade-batch, e.g.
-             ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``: about
-             14 core-hours per S1 seed (yade_scripts.slurm.estimate).
+``intermediate``  the default's kappa and I with 5000 polyhedra and 1000
+             spheres (the same box: a sphere of size d has 5.2 x the volume
+             of our polyhedra); one 16-core node, e.g.
+             ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``
+             (yade_scripts.slurm.estimate gives the core-hours).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
              cluster through yade-batch; not run here.
 
@@ -33,7 +39,7 @@ PRESETS = {
                    "compaction_friction": 0.0, "initial_fraction": 0.3, "dump_strain": 0.01,
                    "final_strain": 0.02, "unbalanced_tolerance": 0.05, "iso_tolerance": 0.02,
                    "log_every": 50, "check_every": 50, "compaction_damping": 0.5, "servo_time": 0.003},
-        "polyhedra": {"n_particles": 20},
+        "polyhedra": {"n_particles": 20, "initial_fraction": 0.2},
         "spheres": {"n_particles": 40},
     },
     # solid fraction after compaction about 0.6 for both, as published:
@@ -44,8 +50,14 @@ PRESETS = {
         "polyhedra": {},
         "spheres": {"compaction_friction": 0.0},
     },
+    "soft": {
+        "common": {"kappa": 300.0, "inertial_number": 2e-2, "placement": "spheres",
+                   "compaction_inertial_number": 5e-2},
+        "polyhedra": {},
+        "spheres": {"compaction_friction": 0.0},
+    },
     "intermediate": {
-        "common": {"kappa": 3000.0, "inertial_number": 5e-3},
+        "common": {},
         "polyhedra": {"n_particles": 5000},
         "spheres": {"compaction_friction": 0.0},
     },

@@ -46,50 +46,51 @@ from yade import log, polyhedra_utils, utils
 # ------------------------------------------------------------ parameters
 # --- parameters (generated from yade_scripts/parameters.py) ---
 readParamsFromTable(
-    sample='polyhedra',               # "polyhedra" (S1) or "spheres" (S2)
-    n_particles=1000,                 # number of particles
-    seed=1,                           # sample seed (sizes, shapes, orientations, positions)
-    sigma0=10000.0,                   # Pa, confining stress
-    friction=0.5,                     # particle-particle friction coefficient (shear)
-    compaction_friction=0.5,          # ... during the isotropic compression (0: the dense state; = friction: loose)
-    wall_friction=0.0,                # particle-wall friction coefficient
-    density=2700.0,                   # kg/m^3 (granite ballast)
-    kappa=300.0,                      # stiffness level: typical contact stiffness / (sigma0 d)
-    tangential_ratio=1.0,             # tangential / normal stiffness of a typical contact
-    inertial_number=0.02,             # shear: I = rate d sqrt(rho/sigma0) (ignored if wall_speed > 0)
-    wall_speed=0.0,                   # m/s, top wall speed during shear (0: from inertial_number)
-    compaction_inertial_number=0.05,  # max rate of the isotropic compression
-    damping=0.2,                      # NewtonIntegrator's local damping during shear
-    compaction_damping=0.2,           # ... and during the isotropic compression
-    safety=0.3,                       # dt = safety * critical time step
-    servo_gain=10.0,                  # proportional gain of the wall servo (lowered if unstable)
-    servo_time=0.01,                  # integral time of the servo, as the strain (of the loading rate) it spans
-    placement='spheres',              # start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)
-    initial_fraction=0.25,            # packing fraction at the start: of the bounding spheres, or of the grains (placement grains)
-    aspect=2.0,                       # H/L of the initial box
-    iso_tolerance=0.01,               # isotropic state: |sigma - sigma0| < tol sigma0 on all walls
-    unbalanced_tolerance=0.02,        # ... and unbalanced force ratio below this
-    dump_strain=0.01,                 # a snapshot every delta eps_1 during shear
-    final_strain=0.3,                 # eps_1 at the end of shear
-    max_steps=0,                      # stop (as a failure) after this many steps (0: no limit)
-    library='shapes.h5',              # polyhedra library (d = 1 grains)
-    out='run.h5',                     # dump file
-    log_every=200,                    # steps between log.csv rows
-    check_every=200,                  # steps between blow-up checks
-    report_seconds=10.0,              # seconds between progress lines
-    timing=True,                      # record the time of each engine (run.info.json)
-    contact_engine='kernel',          # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
-    kernel_threads=0,                 # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
-    verlet_skin=0.1,                  # kernel neighbour-list margin, in units of the mean d
-    checkpoint_seconds=300.0,         # s of wall time between checkpoints (0: only on SIGTERM)
-    resume=True,                      # continue from OUT.ckpt when there is one (False: start afresh)
+    sample='polyhedra',              # "polyhedra" (S1) or "spheres" (S2)
+    n_particles=1000,                # number of particles
+    seed=1,                          # sample seed (sizes, shapes, orientations, positions)
+    sigma0=10000.0,                  # Pa, confining stress
+    friction=0.5,                    # particle-particle friction coefficient (shear)
+    compaction_friction=0.5,         # ... during the isotropic compression (0: the dense state; = friction: loose)
+    wall_friction=0.0,               # particle-wall friction coefficient
+    density=2700.0,                  # kg/m^3 (granite ballast)
+    kappa=3000.0,                    # stiffness level: typical contact stiffness / (sigma0 d)
+    tangential_ratio=1.0,            # tangential / normal stiffness of a typical contact
+    inertial_number=0.005,           # shear: I = rate d sqrt(rho/sigma0) (ignored if wall_speed > 0)
+    wall_speed=0.0,                  # m/s, top wall speed during shear (0: from inertial_number)
+    compaction_inertial_number=0.1,  # max rate of the isotropic compression
+    approach_factor=1.0,             # ... times this until the mean wall stress first reaches sigma0 / 2
+    damping=0.2,                     # NewtonIntegrator's local damping during shear
+    compaction_damping=0.2,          # ... and during the isotropic compression
+    safety=0.3,                      # dt = safety * critical time step
+    servo_gain=10.0,                 # proportional gain of the wall servo (lowered if unstable)
+    servo_time=0.01,                 # integral time of the servo, as the strain (of the loading rate) it spans
+    placement='grains',              # start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)
+    initial_fraction=0.25,           # packing fraction at the start: of the bounding spheres, or of the grains (placement grains)
+    aspect=2.0,                      # H/L of the initial box
+    iso_tolerance=0.01,              # isotropic state: |sigma - sigma0| < tol sigma0 on all walls
+    unbalanced_tolerance=0.02,       # ... and unbalanced force ratio below this
+    dump_strain=0.01,                # a snapshot every delta eps_1 during shear
+    final_strain=0.3,                # eps_1 at the end of shear
+    max_steps=0,                     # stop (as a failure) after this many steps (0: no limit)
+    library='shapes.h5',             # polyhedra library (d = 1 grains)
+    out='run.h5',                    # dump file
+    log_every=200,                   # steps between log.csv rows
+    check_every=200,                 # steps between blow-up checks
+    report_seconds=10.0,             # seconds between progress lines
+    timing=True,                     # record the time of each engine (run.info.json)
+    contact_engine='kernel',         # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
+    kernel_threads=0,                # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
+    verlet_skin=0.1,                 # kernel neighbour-list margin, in units of the mean d
+    checkpoint_seconds=300.0,        # s of wall time between checkpoints (0: only on SIGTERM)
+    resume=True,                     # continue from OUT.ckpt when there is one (False: start afresh)
     noTableOk=True,
 )
 from yade.params.table import (  # noqa: E402
     sample, n_particles, seed, sigma0, friction, compaction_friction, wall_friction,
     density, kappa, tangential_ratio, inertial_number, wall_speed,
-    compaction_inertial_number, damping, compaction_damping, safety, servo_gain,
-    servo_time, placement, initial_fraction, aspect, iso_tolerance,
+    compaction_inertial_number, approach_factor, damping, compaction_damping, safety,
+    servo_gain, servo_time, placement, initial_fraction, aspect, iso_tolerance,
     unbalanced_tolerance, dump_strain, final_strain, max_steps, library, out, log_every,
     check_every, report_seconds, timing, contact_engine, kernel_threads, verlet_skin,
     checkpoint_seconds, resume,
@@ -395,7 +396,7 @@ def check_blowup(lo, hi, F):
         return f"particle {int(particles[np.argmax(out_of_box)])} left the box"
     m = np.array([O.bodies[int(i)].state.mass for i in particles])
     v_rms = math.sqrt(np.sum(m * np.sum(vel ** 2, axis=1)) / m.sum())
-    v_ref = max(rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
+    v_ref = max(approach_factor * rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
     if v_rms > 50 * v_ref and v_rms > 0.05:
         return f"runaway kinetic energy (rms speed {v_rms:.3g} m/s, 50 x the wall speed is {50 * v_ref:.3g})"
     return None
@@ -420,7 +421,7 @@ def report(sig, L):
 
 # ------------------------------------------------------------ the controller (every step)
 program = loading.TriaxialLoading(sigma0, rate_compact, rate_shear, wall_speed, servo_gain, servo_time, kappa, O.dt,
-                                  iso_tolerance, unbalanced_tolerance, dump_strain, final_strain)
+                                  iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor)
 progress = attempt.Progress(report_seconds)
 
 
