@@ -159,3 +159,11 @@ def test_complete_jobs_are_not_run_again(tmp_path, fake):
 def test_bad_core_count():
     with pytest.raises(pool.ConfigError, match="cores must be >= 1"):
         run_pool([], 0, yade="x")
+
+
+def test_progress_lines_are_relayed(tmp_path, fake, monkeypatch):
+    monkeypatch.setattr(pool, "PROGRESS_SECONDS", 0.2)
+    js = jobs_in(tmp_path / "f", [("a", 0.6)])
+    msgs = []
+    assert run_pool(js, 1, echo=msgs.append, yade=fake) == {"a": 0}
+    assert any(m.startswith("[t] a: step 1 shear:") and m.endswith("s left") for m in msgs), msgs

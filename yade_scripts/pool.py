@@ -25,6 +25,8 @@ The schedule:
   is widened only when its log does not give it less than
   :data:`WIDEN_MIN_SECONDS` left and it has run at least
   :data:`WIDEN_AFTER_SECONDS` (its SIGTERM handler is installed).
+* Every PROGRESS_SECONDS the newest progress line of each running job is
+  relayed (when it changed), with the sample in front.
 * A job that crashes and left a checkpoint is resumed, up to
   :data:`yade_scripts.batch.MAX_RESUMES` times (stops for widening do
   not count); exit 3 (a blow-up) is never retried.
@@ -44,7 +46,8 @@ import subprocess
 import time
 from dataclasses import dataclass, field
 
-from .batch import EXIT_FAILED, EXIT_TERM, MAX_RESUMES, clear_attempt, complete, has_checkpoint, yade_env
+from .batch import (EXIT_FAILED, EXIT_TERM, MAX_RESUMES, PROGRESS_SECONDS, clear_attempt, complete, has_checkpoint,
+                    yade_env)
 from .parameters import ConfigError
 
 #: a running job is widened only after this many seconds (its SIGTERM
@@ -108,6 +111,19 @@ def widen_choice(free, waiting, running, now, time_left):
         if best is None or key > best[0]:
             best = (key, job, threads)
     return None if best is None else (best[1], best[2] + free)
+
+
+def newest_progress(log_path):
+    """The newest progress line of a scene log (``triaxial.py: step ...``,
+    without its prefix), or None."""
+    try:
+        with open(log_path, "rb") as fh:
+            fh.seek(max(0, os.path.getsize(log_path) - 4096))
+            tail = fh.read().decode("utf-8", "replace").splitlines()
+    except OSError:
+        return None
+    lines = [x for x in tail if x.startswith("triaxial.py: ")]
+    return lines[-1][len("triaxial.py: "):].strip() if lines else None
 
 
 def time_left(log_path):
@@ -187,6 +203,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None):
         waiting.append(job)
     attempts, running = [], {}      # description -> (job, threads, started, proc, widening)
     t0 = time.time()
+    relayed, next_relay = {}, t0 + PROGRESS_SECONDS
 
     def write_record():
         if record:
@@ -216,6 +233,13 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None):
             proc.send_signal(signal.SIGTERM)
             echo(f"[{job.tag}] {job.description}: a core is free, stopping it to resume on {threads} threads")
         time.sleep(POLL_SECONDS)
+        if time.time() >= next_relay:            # each running job's newest progress line, when it changed
+            next_relay = time.time() + PROGRESS_SECONDS
+            for d, r in running.items():
+                line = newest_progress(r[0].log)
+                if line and line != relayed.get(d):
+                    relayed[d] = line
+                    echo(f"[{r[0].tag}] {d}: {line}")
         for d in list(running):
             job, threads, started, proc, widening = running[d]
             code = proc.poll()
