@@ -53,6 +53,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     from yade_scripts.pool import idle_core_seconds
     assert sched["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(sched["attempts"], 2))
     assert sched["summary"]["busy_core_s"] > 0
+    assert "Schedule (`schedule.json`)" in md and "idle" in md
 
 
 def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):

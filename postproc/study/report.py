@@ -151,9 +151,28 @@ def _cost_rows(runs):
                     d = json.load(fh)
                 eng = sum(d.get("engine_seconds", {}).values())
                 cs = d.get("contact_steps") or 0
-                rows.append((LABEL.get(s, s), r["label"], d.get("steps"), d.get("wall_seconds"),
-                             1e6 * eng / cs if cs else np.nan, d.get("solid_fraction_isotropic")))
+                rows.append((LABEL.get(s, s), r["label"], d.get("steps"), d.get("shear_start_step"),
+                             d.get("wall_seconds"), 1e6 * eng / cs if cs else np.nan,
+                             d.get("solid_fraction_isotropic")))
     return rows
+
+
+def _schedule_lines(study):
+    """Lines on the schedule of the study's runs (``schedule.json``,
+    :mod:`yade_scripts.pool`): makespan, busy and idle core-time."""
+    path = os.path.join(study, "schedule.json")
+    if not os.path.exists(path):
+        return []
+    with open(path) as fh:
+        s = json.load(fh)
+    m = s.get("summary", {})
+    if not m.get("makespan_s"):
+        return []
+    widened = sum(1 for a in s.get("attempts", []) if a.get("widening"))
+    return ["", f"Schedule (`schedule.json`): {len(s.get('attempts', []))} attempt(s) on {m['cores']} cores in "
+                f"{m['makespan_s'] / 60:.1f} min; busy {m['busy_core_s'] / 60:.1f} core-min, idle "
+                f"{m['idle_core_s'] / 60:.1f} core-min ({100 * m['idle_share']:.1f} %); "
+                f"{widened} run(s) stopped to resume on more threads."]
 
 
 def _polar_data(run, target=0.3):
@@ -405,10 +424,11 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
             lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
     cost = _cost_rows(runs)
     if cost:
-        lines += ["", "| sample | run | steps | wall time (s) | µs per contact-step | solid fraction "
-                  "after compression |", "|---|---|---|---|---|---|"]
-        lines += [f"| {a} | {b} | {c} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
-                  for a, b, c, d, e, f in cost]
+        lines += ["", "| sample | run | steps | of which compaction | wall time (s) | µs per contact-step | "
+                  "solid fraction after compression |", "|---|---|---|---|---|---|---|"]
+        lines += [f"| {a} | {b} | {c} | {cc} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
+                  for a, b, c, cc, d, e, f in cost]
+    lines += _schedule_lines(study)
     if problems:
         lines += ["", "**Problems** (the rest of the report is built without them):", ""]
         lines += [f"* {p}" for p in problems]
