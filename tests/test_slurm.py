@@ -12,7 +12,8 @@ import pytest
 
 from yade_scripts.generate import main as generate_main
 from yade_scripts.presets import resolve
-from yade_scripts.slurm import COMPACTION_STEPS, CONTACTS_PER_GRAIN, SHEAR_STEPS, US_PER_CONTACT_STEP, estimate
+from yade_scripts.slurm import (COMPACTION_STEPS, CONTACTS_PER_GRAIN, PLACEMENT_FACTOR, SHEAR_STEPS,
+                                US_PER_CONTACT_STEP, estimate)
 from yade_scripts.study import main as study_main
 
 YADE = shutil.which("yade")
@@ -63,21 +64,29 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
 
 def test_cost_model_scaling():
     """The paper preset from the measured constants, by hand: kappa 1e4 (time
-    step sqrt(1e4/300) shorter), I 1e-3 (20 x the shear steps), I_c 1e-2
-    (5 x the compaction steps)."""
+    step sqrt(1e4/3000) shorter), I 1e-3 (5 x the shear steps of I = 5e-3),
+    I_c 1e-2 (10^0.55 x the compaction steps of I_c = 0.1); the soft preset's
+    bounding-sphere placement multiplies the compaction by its measured
+    factor; the reference point gives the reference steps themselves."""
     p = resolve("paper", "polyhedra")
     e = estimate(p)
-    root = math.sqrt(1e4 / 300)
-    assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 5, rel=1e-12)
-    assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 20, rel=1e-12)
+    root = math.sqrt(1e4 / 3000)
+    assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 10 ** 0.55, rel=1e-12)
+    assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 5, rel=1e-12)
     assert e["contacts"] == pytest.approx(36933 * CONTACTS_PER_GRAIN["polyhedra"])
     assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"]
                                             / 3.6e9, rel=1e-12)
-    q = dict(p, kappa=4e4, inertial_number=2e-3, compaction_inertial_number=2e-2)  # 2 x sqrt(kappa), 1/2 I
-    assert estimate(q)["steps"] == pytest.approx(e["steps"], rel=1e-12)
-    # the soft preset (the reference point): the reference steps themselves
-    d = estimate(resolve("soft", "polyhedra"))
+    q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2 x sqrt(kappa), 1/2 I: the same shear
+    assert estimate(q)["shear_steps"] == pytest.approx(e["shear_steps"], rel=1e-12)
+    d = estimate(resolve("default", "polyhedra"))
     assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
+    soft = estimate(resolve("soft", "polyhedra"))
+    assert soft["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * math.sqrt(0.1) * 2 ** 0.55
+                                                     * PLACEMENT_FACTOR["spheres"], rel=1e-12)
+    # half the strain: the top wall travels 1 - exp(-eps) of the height
+    h = estimate(dict(resolve("default", "polyhedra"), final_strain=0.15))
+    assert h["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * (1 - math.exp(-0.15))
+                                             / (1 - math.exp(-0.3)), rel=1e-12)
 
 
 @pytest.mark.yade
@@ -106,15 +115,13 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
 
 def test_intermediate_preset_fills_a_16_core_node(tmp_path):
     """The 5000-grain preset: its parameters, a 16-line yade-batch table, and
-    its cost from the model (about 14 core-hours per S1 seed, so 16 seeds,
-    one per core, in about 14 hours on one node)."""
+    its cost from the model (the default S1's steps with 5000 grains' contacts)."""
     p = resolve("intermediate", "polyhedra")
     assert (p["n_particles"], p["kappa"], p["inertial_number"]) == (5000, 3000.0, 5e-3)
     assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5
     assert resolve("intermediate", "spheres")["n_particles"] == 1000
     e = estimate(p)
-    root = math.sqrt(3000 / 300)
-    steps = COMPACTION_STEPS["polyhedra"] * root + SHEAR_STEPS["polyhedra"] * root * 4
+    steps = COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
                                             * US_PER_CONTACT_STEP["polyhedra"] / 3.6e9, rel=1e-12)
     out = tmp_path / "node"

@@ -24,28 +24,43 @@ import math
 import os
 import shlex
 
-#: Cost model, measured by the kernel front (``make front``, plan ``kernel``,
-#: 2026-11-23; ``front-cost.csv``; docs/scenes.md "Paper scale"): medians over the
-#: front's runs, each on one core (two jobs side by side on 2 cores).
-#: Steps at the reference point (kappa = 300, I = 2e-2, compaction I_c = 5e-2, eps_1 to
-#: 0.3): compaction to the isotropic state and shear, scaled from every run
-#: by sqrt(300/kappa) and I/2e-2 (relative spread over the 24 200-grain runs 8-9 %
-#: for polyhedra; the spheres' frictionless compaction spreads by 43 %).
-COMPACTION_STEPS = {"polyhedra": 44_180, "spheres": 15_100}
-SHEAR_STEPS = {"polyhedra": 32_420, "spheres": 3_077}
-#: wall time per touching contact-step on one core (µs): the kernel's whole
-#: step (C, poses, forces, Newton, controller) over its touching contacts;
-#: YADE's own sphere loop for S2
-US_PER_CONTACT_STEP = {"polyhedra": 6.7, "spheres": 0.39}
-#: touching contacts per grain in a large sample: z / 2 of the 1000-grain
-#: default study (z = 5.56 and 3.96, a face-face pair counting once;
-#: the front's 200-grain samples have 1.8, their walls take a larger share)
-CONTACTS_PER_GRAIN = {"polyhedra": 2.8, "spheres": 2.0}
-#: the point where the constants above were measured (the default preset of
-#: that time), fixed here rather than read from the presets: moving the
-#: default must not rescale measured constants
-REFERENCE = {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
-             "final_strain": 0.3}
+#: Cost model (docs/scenes.md "Paper scale"): steps measured at a reference
+#: point per sample, scaled to other parameters, times contacts, times the
+#: wall time of one contact-step on one core.
+#:
+#: Polyhedra: the default (kappa = 3000, I = 5e-3, I_c = 0.1, grains placed
+#: with their exact shapes, 1000 grains, eps_1 to 0.3): 34 850 steps to the
+#: isotropic state (seed 1, 2026-11-25) and 339 810 of shear (2026-11-24; the
+#: same as (1 - exp(-0.3)) / (shear rate x dt)).
+#: Spheres: the front's point (kappa = 300, I = 2e-2, I_c = 5e-2; ``make
+#: front``, plan ``kernel``, 2026-11-23, ``front-cost.csv``): medians over its
+#: runs scaled to it (spread 8-9 % for polyhedra over a 30-fold range of kappa
+#: and an 8-fold range of I; the spheres' frictionless compaction spreads by 43 %).
+REFERENCE = {
+    "polyhedra": {"kappa": 3000.0, "inertial_number": 5e-3, "compaction_inertial_number": 0.1,
+                  "final_strain": 0.3, "placement": "grains"},
+    "spheres": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
+                "final_strain": 0.3, "placement": "spheres"},
+}
+COMPACTION_STEPS = {"polyhedra": 34_850, "spheres": 15_100}
+SHEAR_STEPS = {"polyhedra": 339_810, "spheres": 3_077}
+#: compaction steps go as I_c^-0.55: the same 1000-grain S1 (kappa 3000,
+#: grains placed at 0.25) took 51 000 steps at I_c = 0.05 and 34 850 at 0.1
+COMPACTION_IC_EXPONENT = 0.55
+#: polyhedra placed as their bounding spheres (solid fraction 0.06) against
+#: the grains themselves (0.25), same seed, kappa 3000, I_c = 0.05: 118 550
+#: against 51 000 steps. Spheres are their own bounding spheres (1).
+PLACEMENT_FACTOR = {"grains": 1.0, "spheres": 118_550 / 51_000}
+#: wall time per contact-step on one core (µs): polyhedra, the whole
+#: 1000-grain S1 at the reference point over its steps x the contacts of the
+#: model (26.7 core-min for 459 860 steps on a quiet core, 2026-11-24: the
+#: kernel, poses, forces, Newton, controller); YADE's own sphere loop for S2
+#: (the front's runs)
+US_PER_CONTACT_STEP = {"polyhedra": 1.41, "spheres": 0.39}
+#: touching contacts per grain in a large sample: polyhedra 2.47 at the
+#: isotropic state of the reference run (a face-face pair counting once);
+#: spheres z / 2 of the 1000-sphere default study (3.96 / 2)
+CONTACTS_PER_GRAIN = {"polyhedra": 2.47, "spheres": 2.0}
 
 
 def estimate(params):
@@ -53,23 +68,27 @@ def estimate(params):
     compaction_steps, shear_steps, steps, contacts, contact_steps,
     core_hours.
 
-    compaction steps = COMPACTION_STEPS x sqrt(kappa / 300) (the time step goes
-    as kappa^-1/2) x (5e-2 / I_c) (the compaction's wall speed goes as its
-    inertial number: assumed, not swept); shear steps = SHEAR_STEPS x
-    sqrt(kappa / 300) x (2e-2 / I) (the shear rate goes as I) x
-    (final_strain / 0.3); contacts = grains x CONTACTS_PER_GRAIN;
-    core-hours = steps x contacts x US_PER_CONTACT_STEP / 3.6e9. Steps do not
-    depend on the number of grains (rate and time step are per grain), except
-    that large frictionless sphere packings take longer to settle (the front's
+    With the sample's REFERENCE point r: compaction steps =
+    COMPACTION_STEPS x sqrt(kappa / r.kappa) (the time step goes as
+    kappa^-1/2) x (r.I_c / I_c)^COMPACTION_IC_EXPONENT x the placement's
+    factor relative to r's (polyhedra only); shear steps = SHEAR_STEPS x
+    sqrt(kappa / r.kappa) x (r.I / I) (the shear rate goes as I) x
+    (1 - exp(-final_strain)) / (1 - exp(-r.final_strain)) (the top wall moves
+    at a constant speed); contacts = grains x CONTACTS_PER_GRAIN; core-hours =
+    steps x contacts x US_PER_CONTACT_STEP / 3.6e9. Steps do not depend on
+    the number of grains (rate and time step are per grain), except that
+    large frictionless sphere packings take longer to settle (the front's
     4000-sphere compactions: 65 400 steps and two not settled after 115 000).
-    The kernel's speed-up on more threads is not in the model (2 threads
-    gave 1.6-2.4 x on 1000 grains, docs/scenes.md)."""
+    The kernel's speed-up on more threads is not in the model."""
     s = params["sample"]
-    root = math.sqrt(params["kappa"] / REFERENCE["kappa"])
-    comp = (COMPACTION_STEPS[s] * root * REFERENCE["compaction_inertial_number"]
-            / params["compaction_inertial_number"])
-    shear = (SHEAR_STEPS[s] * root * REFERENCE["inertial_number"] / params["inertial_number"]
-             * params["final_strain"] / REFERENCE["final_strain"])
+    r = REFERENCE[s]
+    root = math.sqrt(params["kappa"] / r["kappa"])
+    place = PLACEMENT_FACTOR[params.get("placement", r["placement"])] / PLACEMENT_FACTOR[r["placement"]] \
+        if s == "polyhedra" else 1.0
+    comp = (COMPACTION_STEPS[s] * root * (r["compaction_inertial_number"] / params["compaction_inertial_number"])
+            ** COMPACTION_IC_EXPONENT * place)
+    shear = (SHEAR_STEPS[s] * root * r["inertial_number"] / params["inertial_number"]
+             * (1 - math.exp(-params["final_strain"])) / (1 - math.exp(-r["final_strain"])))
     steps = comp + shear
     contacts = params["n_particles"] * CONTACTS_PER_GRAIN[s]
     cs = steps * contacts
