@@ -40,7 +40,7 @@ PRESETS = {
                    "compaction_friction": 0.0, "initial_fraction": 0.3, "dump_strain": 0.01,
                    "final_strain": 0.02, "unbalanced_tolerance": 0.05, "iso_tolerance": 0.02,
                    "log_every": 50, "check_every": 50, "compaction_damping": 0.5, "servo_time": 0.003},
-        "polyhedra": {"n_particles": 20, "initial_fraction": 0.2},
+        "polyhedra": {"n_particles": 20, "initial_fraction": 0.12},
         "spheres": {"n_particles": 40},
     },
     # solid fraction after compaction about 0.6 for both, as published:
