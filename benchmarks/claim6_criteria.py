@@ -1,0 +1,61 @@
+"""Claim 6 (face-face contacts strong and axial, vertex-face and edge-edge
+weak and lateral) on one study, decided with each contact-type criterion.
+
+    python benchmarks/claim6_criteria.py STUDY [--types points commonplane]
+
+STUDY is a ``make study`` folder (its ``manifest.json``). Each usable S1
+dump is analysed with every criterion that its study analysis did not use
+(``postproc analyze --types T`` through :func:`postproc.pipeline.analyze_path`,
+into STUDY/claim6/<run>-<T>/); the claims are evaluated
+(:func:`postproc.study.claims.evaluate`) with those S1 summaries and the
+study's S2 ones, and claim 6's numbers and verdict are printed per criterion
+and written to STUDY/claim6/claim6.md, with the number of contacts behind
+the VF and EE leanings (the steady window of every seed).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+
+import pandas as pd
+
+from postproc.pipeline import AnalysisOptions, analyze_path
+from postproc.statistics import steady_indices
+from postproc.study.claims import evaluate
+from postproc.study.report import _summaries, _usable, discover
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("study")
+    ap.add_argument("--types", nargs="+", default=["points", "commonplane"])
+    args = ap.parse_args()
+    runs = discover(args.study)
+    s1, s2 = _usable(runs, "polyhedra"), _usable(runs, "spheres")
+    if not s1:
+        raise SystemExit(f"claim6: no usable S1 run in {args.study}")
+    s2_frames = _summaries({"spheres": s2}).get("spheres", [])
+    out = os.path.join(args.study, "claim6")
+    os.makedirs(out, exist_ok=True)
+    lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
+    for types in args.types:
+        frames = []
+        for r in s1:
+            own = pd.read_csv(os.path.join(r["analysis"], "summary.csv"))
+            if own["ct_method"].iloc[0] == types:
+                frames.append(own)
+                continue
+            folder = os.path.join(out, f"{r['label'].replace(' ', '')}-{types}")
+            if not os.path.exists(os.path.join(folder, "summary.csv")):
+                analyze_path(r["dump"], folder, AnalysisOptions(types=types), progress=False)
+            frames.append(pd.read_csv(os.path.join(folder, "summary.csv")))
+        c6 = evaluate({"polyhedra": frames, "spheres": s2_frames})[5]
+        n = sum(int(df["n_contacts_pp"].to_numpy()[steady_indices(df["eps_q"], df["stage"])].sum()) for df in frames)
+        lines.append(f"| {types} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
+        print(f"{types}: {c6['verdict']}: {c6['numbers']}", flush=True)
+    with open(os.path.join(out, "claim6.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()
