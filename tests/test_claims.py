@@ -88,3 +88,14 @@ def test_claims_inconclusive_with_noise_or_missing_runs():
     out = evaluate(s)
     assert [c["verdict"] for c in out[:5]] == ["inconclusive"] * 5
     assert out[5]["verdict"] == "reproduced"
+
+
+def test_claim6_names_the_criterion_it_was_read_with():
+    for method, words in (("points", "contact-point count, tolerance 0.1 V/area"),
+                          ("commonplane", "LMGC90's common-plane count, band 0.1 x the radius"),
+                          ("footprint", "footprint criterion, threshold 0.1 d")):
+        s = {k: _frames(v) for k, v in PAPER_LIKE.items()}
+        for df in s["polyhedra"]:
+            df["ct_method"], df["ct_threshold"] = method, 0.1
+        c6 = evaluate(s)[5]
+        assert c6["verdict"] == "reproduced" and words in c6["numbers"], c6["numbers"]

@@ -201,6 +201,8 @@ def evaluate(samples):
         checks.append(f"footprint criterion, threshold {s1[0]['ct_threshold'].iloc[0]:g} d")
     elif method == "points":
         checks.append(f"contact-point count, tolerance {s1[0]['ct_threshold'].iloc[0]:g} V/area")
+    elif method == "commonplane":
+        checks.append(f"LMGC90's common-plane count, band {s1[0]['ct_threshold'].iloc[0]:g} x the radius")
     elif s1 and "ct_theta_deg" in s1[0]:
         checks.append(f"angular criterion, tolerance {s1[0]['ct_theta_deg'].iloc[0]:g} deg")
     add(6, "; ".join(checks), conds if s1 and "ct_fratio_FF" in s1[0] else [0],
