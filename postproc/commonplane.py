@@ -58,7 +58,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contactpoints import DOUBLE, SIMPLE, TRIPLE, point_tables, rotation_matrices
+from shapes.overlap import rotation_matrices
+
+from .contactpoints import DOUBLE, SIMPLE, TRIPLE, point_tables
 from .contacttypes import EDGE, FACE, PAIR_TYPES, VERTEX, pair_types
 from .errors import InputError
 

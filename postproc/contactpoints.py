@@ -61,6 +61,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from shapes.overlap import rotation_matrices
+
 from .contacttypes import EDGE, FACE, PAIR_TYPES, VERTEX, pair_types
 from .errors import InputError
 
@@ -126,17 +128,6 @@ def point_tables(vertices, triangles):
         N[s, :k], O[s, :k] = ns[s], os_[s]
         N[s, k:], O[s, k:] = ns[s][0], os_[s][0]
     return PointTables(V, M, N, O, np.linalg.norm(V, axis=2).max(axis=1))
-
-
-def rotation_matrices(quat):
-    """(C, 3, 3) rotation matrices (local -> global) of quaternions (C, 4)
-    (w, x, y, z), normalised here."""
-    q = np.asarray(quat, float)
-    q = q / np.linalg.norm(q, axis=1)[:, None]
-    w, x, y, z = q.T
-    return np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-                     np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-                     np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], 1)
 
 
 def _posed(tables, shape, pos, quat):

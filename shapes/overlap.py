@@ -204,9 +204,10 @@ def _single(r):
 
 
 def rotation_matrices(quat):
-    """(n, 3, 3) rotation matrices of unit quaternions (n, 4) (w, x, y, z):
-    R @ local = global."""
-    w, x, y, z = np.asarray(quat, float).T
+    """(n, 3, 3) rotation matrices (local -> global: R @ local = global) of
+    quaternions (n, 4) (w, x, y, z), normalised here."""
+    q = np.asarray(quat, float)
+    w, x, y, z = (q / np.linalg.norm(q, axis=1)[:, None]).T
     return np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
                      np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
                      np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1)], -2)
@@ -223,7 +224,7 @@ class OrientedGrains:
         self.quat = ckernel.f64(quat)
         if self.quat.shape != (self.table.n, 4):
             raise OverlapError(f"quaternions must be ({self.table.n}, 4), got {self.quat.shape}")
-        rot = rotation_matrices(self.quat / np.linalg.norm(self.quat, axis=1)[:, None])
+        rot = rotation_matrices(self.quat)
         vmax = max(len(v) for v, _ in shapes)
         self.posed = np.zeros((self.table.n, vmax, 3))      # global-frame vertices about the centre
         for k, (v, _) in enumerate(shapes):

@@ -167,3 +167,10 @@ def test_progress_lines_are_relayed(tmp_path, fake, monkeypatch):
     msgs = []
     assert run_pool(js, 1, echo=msgs.append, yade=fake) == {"a": 0}
     assert any(m.startswith("[t] a: step 1 shear:") and m.endswith("s left") for m in msgs), msgs
+
+
+def test_time_left_skips_other_lines(tmp_path):
+    log = tmp_path / "x.log"
+    log.write_text("triaxial.py: step 9 shear: eps_1 0.1, 9 steps/s, about 1.5 min left\n"
+                   "triaxial.py: checkpoint (periodic) at step 10 (shear, eps_1 = 0.1000): run.ckpt\n")
+    assert time_left(str(log)) == 90.0

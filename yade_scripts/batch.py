@@ -121,22 +121,29 @@ def clear_attempt(dump):
             os.remove(p)
 
 
+def newest_progress(log_path, start=""):
+    """The newest progress line of a scene log (``triaxial.py: ...``,
+    without that prefix) that begins with ``start``, or None (no such line,
+    or no log yet)."""
+    try:
+        with open(log_path, "rb") as fh:
+            fh.seek(max(0, os.path.getsize(log_path) - 4096))
+            tail = fh.read().decode("utf-8", "replace").splitlines()
+    except OSError:
+        return None
+    lines = [x for x in tail if x.startswith("triaxial.py: " + start)]
+    return lines[-1][len("triaxial.py: "):].strip() if lines else None
+
+
 def _watch_logs(folder, descriptions, tag, echo, stop, every=PROGRESS_SECONDS):
     """Relay the newest progress line of each job's log every ``every`` s."""
     last = {}
     while not stop.wait(every):
         for d in descriptions:
-            path = os.path.join(folder, f"triaxial.py.{d}.log")
-            try:
-                with open(path, "rb") as fh:
-                    fh.seek(max(0, os.path.getsize(path) - 4096))
-                    tail = fh.read().decode("utf-8", "replace").splitlines()
-            except OSError:
-                continue
-            lines = [x for x in tail if x.startswith("triaxial.py: ")]
-            if lines and lines[-1] != last.get(d):
-                last[d] = lines[-1]
-                echo(f"[{tag}] {d}: {lines[-1][len('triaxial.py: '):].strip()}")
+            line = newest_progress(os.path.join(folder, f"triaxial.py.{d}.log"))
+            if line and line != last.get(d):
+                last[d] = line
+                echo(f"[{tag}] {d}: {line}")
 
 
 def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_threads=1):

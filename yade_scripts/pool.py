@@ -47,7 +47,7 @@ import time
 from dataclasses import dataclass, field
 
 from .batch import (EXIT_FAILED, EXIT_TERM, MAX_RESUMES, PROGRESS_SECONDS, clear_attempt, complete, has_checkpoint,
-                    yade_env)
+                    newest_progress, yade_env)
 from .parameters import ConfigError
 
 #: a running job is widened only after this many seconds (its SIGTERM
@@ -113,35 +113,12 @@ def widen_choice(free, waiting, running, now, time_left):
     return None if best is None else (best[1], best[2] + free)
 
 
-def newest_progress(log_path):
-    """The newest progress line of a scene log (``triaxial.py: step ...``,
-    without its prefix), or None."""
-    try:
-        with open(log_path, "rb") as fh:
-            fh.seek(max(0, os.path.getsize(log_path) - 4096))
-            tail = fh.read().decode("utf-8", "replace").splitlines()
-    except OSError:
-        return None
-    lines = [x for x in tail if x.startswith("triaxial.py: ")]
-    return lines[-1][len("triaxial.py: "):].strip() if lines else None
-
-
 def time_left(log_path):
     """Seconds left that the newest progress line of a scene log gives
     (``... 12.3 min left``), or None (no such line yet, e.g. compaction)."""
-    try:
-        with open(log_path, "rb") as fh:
-            fh.seek(max(0, os.path.getsize(log_path) - 4096))
-            tail = fh.read().decode("utf-8", "replace").splitlines()
-    except OSError:
-        return None
-    for line in reversed(tail):
-        if line.startswith("triaxial.py: step"):
-            m = _TIME_LEFT.search(line)
-            if not m:
-                return None
-            return float(m.group(1)) * {"s": 1, "min": 60, "h": 3600}[m.group(2)]
-    return None
+    line = newest_progress(log_path, start="step")
+    m = _TIME_LEFT.search(line) if line else None
+    return float(m.group(1)) * {"s": 1, "min": 60, "h": 3600}[m.group(2)] if m else None
 
 
 def idle_core_seconds(attempts, cores):
