@@ -87,3 +87,27 @@ def write_snapshot(writer, snap, **override):
               bodies=bodies, contacts=contacts)
     kw.update(override)
     return writer.write_snapshot(**kw)
+
+
+def pressure_tensor(snap):
+    """The pressure tensor P (3, 3) of a LAMMPS or LIGGGHTS fixture snapshot
+    (``pressure.json``: "pxx_pyy_pzz_pxy_pxz_pyz", the pair part),
+    P[a, b] = sum l_a f_b / V with l = x_i - x_j and f the force on i
+    (Pair::ev_tally_xyz: v[3] = delx*fy, v[4] = delx*fz, v[5] = dely*fz),
+    compression positive; the codes store only the upper triangle, so the
+    lower one is left 0."""
+    pxx, pyy, pzz, pxy, pxz, pyz = snap["pxx_pyy_pzz_pxy_pxz_pyz"]
+    P = np.diag([pxx, pyy, pzz])
+    P[0, 1], P[0, 2], P[1, 2] = pxy, pxz, pyz
+    return P
+
+
+def raw_rows(path):
+    """Rows (N, K) of each block of a LAMMPS-style text dump, as numbers."""
+    lines = open(path).read().splitlines()
+    out, k = [], 0
+    while k < len(lines):
+        n = int(lines[k + 3])
+        out.append(np.array([r.split() for r in lines[k + 9:k + 9 + n]], float))
+        k += 9 + n
+    return out

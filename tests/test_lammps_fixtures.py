@@ -23,32 +23,12 @@ import pytest
 from postproc.errors import InputError
 from postproc.lammpsdump import EXACT_FORMAT, read_atoms, read_text_dump
 from postproc.stress import contact_stress
+from builders import pressure_tensor, raw_rows
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "lammps")
 REF = json.load(open(os.path.join(DATA, "pressure.json")))
 ATOMS = os.path.join(DATA, "atoms.dump")
 REL = 5e-10             # %.10g
-
-
-def lammps_tensor(snap):
-    """LAMMPS's pressure tensor P (3, 3), P[a, b] = sum l_a f_b / V (pair
-    part, compression positive)."""
-    pxx, pyy, pzz, pxy, pxz, pyz = snap["pxx_pyy_pzz_pxy_pxz_pyz"]
-    # LAMMPS stores only the upper triangle: v[3] = delx*fy, v[4] = delx*fz, v[5] = dely*fz
-    P = np.diag([pxx, pyy, pzz])
-    P[0, 1], P[0, 2], P[1, 2] = pxy, pxz, pyz
-    return P
-
-
-def raw_rows(path):
-    """Rows (N, K) of each block of a dump, as numbers."""
-    lines = open(path).read().splitlines()
-    out, k = [], 0
-    while k < len(lines):
-        n = int(lines[k + 3])
-        out.append(np.array([r.split() for r in lines[k + 9:k + 9 + n]], float))
-        k += 9 + n
-    return out
 
 
 def bound(snap, rows, positions=None):
@@ -82,7 +62,7 @@ def test_stress_equals_lammps_pair_virial_in_orthogonal_and_tilted_boxes(name):
         assert snap.volume == pytest.approx(ref["volume"], rel=1e-15)
         tilts.append(ref["xy"])
         sigma = contact_stress(snap.force, snap.branch, snap.volume)
-        P = lammps_tensor(ref)
+        P = pressure_tensor(ref)
         if name == "contacts-exact.dump":
             err = bound(snap, r)
         else:
@@ -105,7 +85,7 @@ def test_off_diagonal_convention_is_the_transpose_of_lammps():
     path = os.path.join(DATA, "contacts-exact.dump")
     snap = read_text_dump(path, atoms=ATOMS)[1]
     sigma = contact_stress(snap.force, snap.branch, snap.volume)
-    P = lammps_tensor(REF["snapshots"][1])
+    P = pressure_tensor(REF["snapshots"][1])
     err = bound(snap, raw_rows(path)[1])
     wrong = [abs(sigma[a, b] - P[a, b]) / err[a, b] for a, b in ((0, 1), (0, 2), (1, 2))]
     assert max(wrong) > 1e3

@@ -43,33 +43,12 @@ import pytest
 from postproc.errors import InputError
 from postproc.lammpsdump import liggghts_exact_format, read_atoms, read_text_dump
 from postproc.stress import contact_stress
+from builders import pressure_tensor, raw_rows
 
 DATA = os.path.join(os.path.dirname(__file__), "data", "liggghts")
 REF = json.load(open(os.path.join(DATA, "pressure.json")))
 U = 2.0 ** -53
 LAYOUTS = {"contacts.dump": 12, "contacts-nt.dump": 15}
-
-
-def liggghts_tensor(snap):
-    """LIGGGHTS's pressure tensor P (3, 3), P[a, b] = sum l_a f_b / V with l
-    = x_i - x_j and f the force on i (pair_gran_base.h: ev_tally_xyz(...,
-    delta_F, delx = x_i - x_j); Pair::ev_tally_xyz: v[3] = delx*fy), so
-    compression positive; only the upper triangle is stored."""
-    pxx, pyy, pzz, pxy, pxz, pyz = snap["pxx_pyy_pzz_pxy_pxz_pyz"]
-    P = np.diag([pxx, pyy, pzz])
-    P[0, 1], P[0, 2], P[1, 2] = pxy, pxz, pyz
-    return P
-
-
-def raw_rows(path):
-    """Rows (N, K) of each block of a dump, as numbers."""
-    lines = open(path).read().splitlines()
-    out, k = [], 0
-    while k < len(lines):
-        n = int(lines[k + 3])
-        out.append(np.array([r.split() for r in lines[k + 9:k + 9 + n]], float))
-        k += 9 + n
-    return out
 
 
 def bound(snap, rows):
@@ -102,7 +81,7 @@ def test_stress_equals_liggghts_pair_virial(name):
             assert np.all(np.abs(got - exact) <= 2 * U * np.abs(exact))
         assert snap.volume == pytest.approx(ref["volume"], rel=8 * U)
         sigma = contact_stress(snap.force, snap.branch, snap.volume)
-        P = liggghts_tensor(ref)
+        P = pressure_tensor(ref)
         err = bound(snap, r)
         assert np.all(np.diag(P) > 0)                                      # compressed: positive
         # our sigma_ab = sum f_a l_b / V is LIGGGHTS's P_ba: the diagonal
@@ -114,7 +93,7 @@ def test_stress_equals_liggghts_pair_virial(name):
 def test_sheared_snapshots_are_anisotropic():
     """The fixtures are not all isotropic: after the shear pzz - pxx is a
     large part of the mean (so the diagonal comparison tells the axes apart)."""
-    P = [np.diag(liggghts_tensor(s)) for s in REF["snapshots"]]
+    P = [np.diag(pressure_tensor(s)) for s in REF["snapshots"]]
     assert abs(P[0][2] - P[0][0]) < 0.2 * P[0].mean()
     assert all(p[2] - p[0] > 0.5 * p.mean() for p in P[1:])
     lo = [np.array(s["lo"]) for s in REF["snapshots"]]
@@ -128,7 +107,7 @@ def test_off_diagonal_convention_is_the_transpose_of_liggghts():
     path = os.path.join(DATA, "contacts.dump")
     for snap, ref, r in zip(read_text_dump(path), REF["snapshots"], raw_rows(path)):
         sigma = contact_stress(snap.force, snap.branch, snap.volume)
-        P = liggghts_tensor(ref)
+        P = pressure_tensor(ref)
         err = bound(snap, r)
         wrong = [abs(sigma[a, b] - P[a, b]) / err[a, b] for a, b in ((0, 1), (0, 2), (1, 2))]
         assert max(wrong) > 1e6
