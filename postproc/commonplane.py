@@ -60,7 +60,7 @@ import numpy as np
 
 from shapes.overlap import rotation_matrices
 
-from .contactpoints import DOUBLE, SIMPLE, TRIPLE, point_tables
+from .contactpoints import DOUBLE, SIMPLE, TRIPLE, point_tables, positive_tolerance
 from .contacttypes import EDGE, FACE, PAIR_TYPES, VERTEX, pair_types
 from .errors import InputError
 
@@ -159,13 +159,7 @@ def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, neighbor, r
 
 def check_neighbor(tau, what="common plane: the band tolerance tau"):
     """tau as a float; InputError unless finite and > 0."""
-    try:
-        t = float(tau)
-    except (TypeError, ValueError):
-        raise InputError(f"{what} must be a number, got {tau!r}") from None
-    if not (np.isfinite(t) and t > 0):
-        raise InputError(f"{what} must be finite and > 0, got {tau!r}")
-    return t
+    return positive_tolerance(tau, what)
 
 
 def _perpendicular(n):

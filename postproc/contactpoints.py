@@ -264,12 +264,18 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
             "k1": k1, "k2": k2, "g": g}
 
 
+def positive_tolerance(value, what, meaning=""):
+    """``value`` as a float; InputError naming ``what`` (and, in brackets,
+    ``meaning``) unless it is a finite number > 0."""
+    try:
+        a = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{what} must be a number, got {value!r}") from None
+    if not (np.isfinite(a) and a > 0):
+        raise InputError(f"{what} must be finite and > 0{f' ({meaning})' if meaning else ''}, got {value!r}")
+    return a
+
+
 def check_alpha(alpha, what="--tolerance"):
     """alpha as a float; InputError unless finite and > 0."""
-    try:
-        a = float(alpha)
-    except (TypeError, ValueError):
-        raise InputError(f"{what} must be a number, got {alpha!r}") from None
-    if not (np.isfinite(a) and a > 0):
-        raise InputError(f"{what} must be finite and > 0 (delta = alpha * V/area), got {alpha!r}")
-    return a
+    return positive_tolerance(alpha, what, "delta = alpha * V/area")
