@@ -85,6 +85,27 @@ class Classes:
     columns: dict = field(default_factory=dict)
 
 
+@dataclass
+class _Pairs:
+    """What the geometric criteria share about one snapshot: ``where`` (for
+    messages), the angular labels ``base`` (C,), the polyhedra pairs ``poly``
+    (C,) bool, the two sides' features ``f1``, ``f2`` and pair types
+    ``pair`` (P,) at theta, the summary columns, and, when P > 0, the rows
+    ``i1``, ``i2`` (P,) of the two bodies and their ``poses`` (shape index,
+    position (P, 3) m, orientation quaternion (P, 4)) of side 1 then side 2."""
+
+    where: str
+    base: np.ndarray
+    poly: np.ndarray
+    f1: np.ndarray
+    f2: np.ndarray
+    pair: np.ndarray
+    cols: dict
+    i1: np.ndarray = None
+    i2: np.ndarray = None
+    poses: tuple = None
+
+
 class Classifier:
     """Contact classes of polyhedra snapshots under one criterion.
 
@@ -166,16 +187,11 @@ class Classifier:
         return self._footprint(snap, variants)
 
     def _commonplane_classes(self, snap, variants):
-        where = f"snapshot {snap.name} (step {snap.step})"
-        self._check_orientations(snap, where)
-        base, poly, _, _, _ = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
-        cols = {"ct_method": "commonplane", "ct_threshold": self.tolerance, "ct_theta_deg": self.theta_deg}
-        if not poly.any():
-            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly, None,
-                           {**cols, "ct_cp_empty": 0.0})
-        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
-        args = (self.plane_tables, snap.shape_index[i1], snap.positions[i1], snap.orientations[i1],
-                snap.shape_index[i2], snap.positions[i2], snap.orientations[i2], snap.normal[poly])
+        pp = self._pairs(snap, self.tolerance)
+        if not pp.poly.any():
+            return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
+        base, poly, cols = pp.base, pp.poly, pp.cols
+        args = (self.plane_tables, *pp.poses, snap.normal[poly])
 
         def labels_at(tau):
             r = cpl.contact_points(*args, neighbor=tau)
@@ -190,6 +206,29 @@ class Classifier:
         cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
         return Classes(lab, var, poly, None, cols)
 
+    def _pairs(self, snap, parameter):
+        """The first steps of every geometric criterion: the orientation
+        check, the angular labels and features at theta, the columns named
+        after the method and its parameter, and (when polyhedron pairs
+        exist) the two sides' rows and poses. Returns a :class:`_Pairs`."""
+        where = f"snapshot {snap.name} (step {snap.step})"
+        self._check_orientations(snap, where)
+        base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
+        cols = {"ct_method": self.method, "ct_threshold": parameter, "ct_theta_deg": self.theta_deg}
+        i1 = i2 = poses = None
+        if poly.any():
+            i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+            poses = (snap.shape_index[i1], snap.positions[i1], snap.orientations[i1],
+                     snap.shape_index[i2], snap.positions[i2], snap.orientations[i2])
+        return _Pairs(where, base, poly, f1, f2, pair, cols, i1, i2, poses)
+
+    @staticmethod
+    def _no_pairs(pp, variants, rel, extra):
+        """The classes of a snapshot without polyhedron pairs: the angular
+        labels at every parameter."""
+        return Classes(pp.base, {"lo": pp.base, "hi": pp.base} if variants else {}, pp.poly, rel,
+                       {**pp.cols, **extra})
+
     def _check_orientations(self, snap, where):
         if snap.orientations is not None and snap.body_kind is not None:
             q = np.asarray(snap.orientations, float)
@@ -200,14 +239,10 @@ class Classifier:
                                  "has a zero or non-finite orientation")
 
     def _points_classes(self, snap, variants):
-        where = f"snapshot {snap.name} (step {snap.step})"
-        self._check_orientations(snap, where)
-        base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
-        cols = {"ct_method": "points", "ct_threshold": self.tolerance, "ct_theta_deg": self.theta_deg}
-        if not poly.any():
-            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly, None,
-                           {**cols, "ct_fp_recomputed": 0, "ct_fp_missing": 0})
-        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+        pp = self._pairs(snap, self.tolerance)
+        if not pp.poly.any():
+            return self._no_pairs(pp, variants, None, {"ct_fp_recomputed": 0, "ct_fp_missing": 0})
+        where, base, poly, pair, cols, i1, i2 = pp.where, pp.base, pp.poly, pp.pair, pp.cols, pp.i1, pp.i2
         use_dump = snap.footprint_area is not None and self.recompute != "always"
         if not use_dump and self.recompute == "never":
             raise InputError(f"{where}: the dump has no overlap area (contacts/footprint_area) and "
@@ -221,9 +256,7 @@ class Classifier:
             area, vol = area[poly], vol[poly]
             ext = None if snap.footprint is None else np.asarray(snap.footprint, float)[poly]
         else:
-            ext, area, vol = fpm.recompute(self.geometry, snap.shape_index[i1], snap.positions[i1],
-                                         snap.orientations[i1], snap.shape_index[i2], snap.positions[i2],
-                                         snap.orientations[i2])
+            ext, area, vol = fpm.recompute(self.geometry, *pp.poses)
         bad = ~(np.isfinite(area) & np.isfinite(vol) & (area >= 0) & (vol >= 0))
         if bad.any():
             c = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
@@ -234,8 +267,7 @@ class Classifier:
         missing = (area == 0) | (vol == 0)
         h = np.where(missing, 0.0, vol / np.where(missing, 1.0, area))
         cols.update({"ct_fp_recomputed": int(not use_dump), "ct_fp_missing": int(missing.sum())})
-        args = (self.point_tables, snap.shape_index[i1], snap.positions[i1], snap.orientations[i1],
-                snap.shape_index[i2], snap.positions[i2], snap.orientations[i2], snap.normal[poly], h)
+        args = (self.point_tables, *pp.poses, snap.normal[poly], h)
 
         def labels_at(alpha):
             r = cpm.contact_points(*args, alpha=alpha)
@@ -257,15 +289,11 @@ class Classifier:
         return Classes(lab, var, poly, rel, cols)
 
     def _footprint(self, snap, variants):
-        where = f"snapshot {snap.name} (step {snap.step})"
-        # checks, sphere/wall labels and the angular features at theta
-        self._check_orientations(snap, where)
-        base, poly, f1, f2, pair = classify_snapshot(snap, self.tables, self.theta_deg, features=True)
-        cols = {"ct_method": "footprint", "ct_threshold": self.threshold, "ct_theta_deg": self.theta_deg}
-        if not poly.any():
-            return Classes(base, {"lo": base, "hi": base} if variants else {}, poly,
-                           np.zeros((0, 2)), {**cols, "ct_fp_recomputed": 0, "ct_fp_missing": 0})
-        i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+        pp = self._pairs(snap, self.threshold)
+        if not pp.poly.any():
+            return self._no_pairs(pp, variants, np.zeros((0, 2)), {"ct_fp_recomputed": 0, "ct_fp_missing": 0})
+        where, base, poly, f1, f2, pair, cols = pp.where, pp.base, pp.poly, pp.f1, pp.f2, pp.pair, pp.cols
+        i1, i2 = pp.i1, pp.i2
         if snap.sizes is None:
             raise InputError(f"{where}: footprint contact types need the particle sizes (bodies/size)")
         d = fpm.pair_size(snap.sizes[i1], snap.sizes[i2])
@@ -280,9 +308,7 @@ class Classifier:
                                  f"({len(snap.id1)}, 2)")
             ext = ext[poly]
         else:
-            ext, _, _ = fpm.recompute(self.geometry, snap.shape_index[i1], snap.positions[i1],
-                                      snap.orientations[i1], snap.shape_index[i2], snap.positions[i2],
-                                      snap.orientations[i2])
+            ext, _, _ = fpm.recompute(self.geometry, *pp.poses)
         bad = ~np.isfinite(ext).all(axis=1) | (ext < 0).any(axis=1)
         if bad.any():
             c = int(np.flatnonzero(poly)[np.flatnonzero(bad)[0]])
