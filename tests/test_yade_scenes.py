@@ -164,6 +164,39 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
                 assert ratio.max() == pytest.approx(0.5, rel=1e-9)
 
 
+@pytest.mark.parametrize("kind", ("polyhedra", "polyhedra-loose", "spheres"))
+def test_preparation_reaches_the_isotropic_target(tiny_runs, kind):
+    """The compaction (polyhedra: the grains placed with their exact shapes,
+    the default's protocol) stops at the target state: every wall stress
+    within iso_tolerance of sigma0, the unbalanced force below its tolerance,
+    the solid fraction reported equal to the dumped one and to the box's, and
+    the shear friction restored before shear when the compaction used
+    another."""
+    out = tiny_runs[kind]
+    text = (out / "yade.log").read_text()
+    line = [x for x in text.splitlines() if "isotropic state at step" in x]
+    assert len(line) == 1, text[-2000:]
+    sig = np.array(line[0].split("sigma/sigma0 = [")[1].split("]")[0].split(), float)
+    phi = float(line[0].split("solid fraction ")[1].split(",")[0])
+    unbalanced = float(line[0].split("unbalanced force ")[1])
+    with DumpReader(str(out / "run.h5")) as r:
+        par = r.parameters
+        iso = r.read(0)
+        assert iso.stage == "isotropic"
+        assert np.all(np.abs(sig - 1) < par["iso_tolerance"]), sig
+        assert 0 <= unbalanced < par["unbalanced_tolerance"]
+        # printed to 4 decimals
+        assert abs(phi - par["solid_fraction_isotropic"]) <= 5e-5 + 1e-12
+        assert par["solid_fraction_isotropic"] == pytest.approx(iso.volumes.sum() / np.prod(iso.box_lengths),
+                                                                rel=1e-9)
+        if kind.startswith("polyhedra"):
+            assert par["placement"] == "grains" and par["contact_engine"] == "kernel"
+        restored = f"friction {par['compaction_friction']:g} -> {par['friction']:g} for shear"
+        assert (restored in text) == (par["compaction_friction"] != par["friction"])
+        # the switch comes before the first shear snapshot
+        assert text.index("isotropic state at step") < text.index("shear: top wall at")
+
+
 @pytest.mark.parametrize("sample", ("polyhedra", "spheres"))
 def test_dense_preparation_is_denser_than_the_loose_one(tiny_runs, sample):
     """Same seed, same grains: compaction frictionless (dense, the tiny and
