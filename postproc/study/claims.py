@@ -161,8 +161,10 @@ def evaluate(samples):
         if not frames:
             conds.append(0)
             continue
-        frames = [df.assign(sff_relative_residual=(df["q_axial_over_p"] - df["sff"])
-                            / df["q_axial_over_p"]) for df in frames]
+        # a copy first: the analysis frames are built column by column, and
+        # pandas warns when one more is inserted into such a fragmented frame
+        frames = [df.copy().assign(sff_relative_residual=(df["q_axial_over_p"] - df["sff"])
+                                   / df["q_axial_over_p"]) for df in frames]
         r = est(frames, "sff_relative_residual")
         worst = []
         for df in frames:
