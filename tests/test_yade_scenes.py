@@ -183,9 +183,10 @@ def test_preparation_reaches_the_isotropic_target(tiny_runs, kind):
         par = r.parameters
         iso = r.read(0)
         assert iso.stage == "isotropic"
-        assert np.all(np.abs(sig - 1) < par["iso_tolerance"]), sig
-        assert 0 <= unbalanced < par["unbalanced_tolerance"]
-        # printed to 4 decimals
+        # the log prints sigma/sigma0 and phi to 4 decimals (half a unit of
+        # the last: 5e-5) and the unbalanced force to 3 significant digits
+        assert np.all(np.abs(sig - 1) < par["iso_tolerance"] + 5e-5), sig
+        assert 0 <= unbalanced < par["unbalanced_tolerance"] * (1 + 5e-3)
         assert abs(phi - par["solid_fraction_isotropic"]) <= 5e-5 + 1e-12
         assert par["solid_fraction_isotropic"] == pytest.approx(iso.volumes.sum() / np.prod(iso.box_lengths),
                                                                 rel=1e-9)
