@@ -186,6 +186,34 @@ def test_tangential_law_elastic_then_coulomb():
     assert kt * s * 39 > cap                           # the run did reach the cap
 
 
+@pytest.mark.parametrize("mu_new", [0.4, 0.6])
+def test_a_friction_change_caps_the_shear_history_at_the_next_step(mu_new):
+    """The scene compacts at one friction and shears at another
+    (``set_friction`` before shear). Two unit cubes face to face, the top one
+    slid until |f_t| = MU F_n; then the friction is set to mu_new and the
+    pose kept. Lowered (0.4), the history is cut to mu_new F_n at that very
+    step; raised (0.6), the elastic history is kept as it was (no motion, no
+    increment)."""
+    v, t = cube()
+    d = np.sqrt(3.0)
+    eng = ContactEngine([v], [t], [0, 0], [d, d], K_V, KT_COEF, MU, 0.0, 0.1, walls=False, threads=1)
+    h, s = 1e-4, 1e-3
+    q = np.tile([1.0, 0, 0, 0], (2, 1))
+    for k in range(6):
+        pos = np.array([[0, 0, 0], [s * k, 0, 1 - h]])
+        eng.step(pos, q)
+    c = eng.contacts()
+    fn, ft = np.linalg.norm(c["force_normal"][0]), np.linalg.norm(c["force_tangential"][0])
+    assert ft == pytest.approx(MU * fn, rel=1e-12)      # sliding at the old cap
+    eng.set_friction(mu_new, 0.0)
+    assert eng.friction == (mu_new, 0.0)
+    eng.step(pos, q)
+    c = eng.contacts()
+    fn2, ft2 = np.linalg.norm(c["force_normal"][0]), np.linalg.norm(c["force_tangential"][0])
+    assert fn2 == pytest.approx(fn, rel=1e-12)
+    assert ft2 == pytest.approx(min(mu_new, MU) * fn, rel=1e-12)
+
+
 def test_threads_give_identical_forces_and_history_survives_rebuilds(grains):
     verts, tris, pos, quat, sizes = packing(grains, 6, seed=6)      # 216 grains: the parallel path
     lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1
