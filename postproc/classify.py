@@ -120,10 +120,14 @@ class Classifier:
     of the "points" method (delta = alpha V/area; default
     :data:`postproc.contactpoints.DEFAULT_ALPHA`), or tau of the
     "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`).
+    reference : how the "commonplane" method measures ref, the length its
+    band is tau times: "vertex" (the default: the distance from the centre
+    to the extreme vertex, LMGC90's older routine) or "normal" (that
+    distance along the common plane's normal, LMGC90's current routine).
     """
 
     def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
-                 recompute="auto", tolerance=None):
+                 recompute="auto", tolerance=None, reference="vertex"):
         if method not in METHODS:
             raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
         if recompute not in ("auto", "always", "never"):
@@ -134,6 +138,10 @@ class Classifier:
             raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
+        if reference not in cpl.REFERENCES:
+            raise InputError(f"the common plane's reference must be one of {', '.join(cpl.REFERENCES)}, "
+                             f"got {reference!r}")
+        self.reference = reference
         default = cpl.DEFAULT_NEIGHBOR if method == "commonplane" else cpm.DEFAULT_ALPHA
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
@@ -194,7 +202,7 @@ class Classifier:
         args = (self.plane_tables, *pp.poses, snap.normal[poly])
 
         def labels_at(tau):
-            r = cpl.contact_points(*args, neighbor=tau)
+            r = cpl.contact_points(*args, neighbor=tau, reference=self.reference)
             out = base.copy()
             out[poly] = np.array(PAIR_TYPES)[r["pair"]]
             return out, r

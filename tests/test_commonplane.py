@@ -165,3 +165,25 @@ def test_classifier_commonplane():
     assert res.labels[res.poly].tolist() == want
     assert res.variants["lo"][res.poly].tolist() == want == res.variants["hi"][res.poly].tolist()
     assert res.columns["ct_method"] == "commonplane" and res.columns["ct_cp_empty"] == 0.0
+
+
+@pytest.mark.parametrize("reference, want", [("vertex", "FF"), ("normal", "EF")])
+def test_classifier_measures_ref_as_asked(reference, want):
+    """The classifier's ``reference``: cube B tilted so that its bottom face's
+    far edge stands 0.07 above its lowest one (which dips 1e-3 into A's top
+    face). The band at tau = 0.1 is 0.1 ref + 5e-4: 0.0871 with ref the
+    centre-to-corner distance sqrt(3)/2 (the face is kept: face-face), 0.0505
+    with ref = 1/2 along the normal (only the edge: edge-face)."""
+    from postproc.classify import Classifier
+    from shapes.polyhedron import geometric_faces
+    from test_footprint_types import _snapshot
+    shapes = [(v, t, geometric_faces(v, t)) for v, t in SHAPES]
+    Rb = rot([1, 0, 0], np.degrees(np.arcsin(0.07)))
+    low = -(SHAPES[0][0] @ Rb.T)[:, 2].min()
+    snap = _snapshot([(0, I3, np.zeros(3), 0, Rb, np.array([0.0, 0.0, 0.5 + low - 1e-3]))])
+    clf = Classifier(tuple(map(list, zip(*shapes))), method="commonplane", reference=reference)
+    res = clf.classify(snap)
+    assert res.labels[res.poly].tolist() == [want]
+    with pytest.raises(InputError) as e:
+        Classifier(tuple(map(list, zip(*shapes))), method="commonplane", reference="centre")
+    assert "reference" in str(e.value) and "\n" not in str(e.value)

@@ -1,0 +1,108 @@
+"""LMGC90's common-plane contact count with its two measures of ``ref``: the
+band tau ref measured from the centre to the extreme vertex (``vertex``, the
+older routine, our default) or along the common plane's normal (``normal``,
+LMGC90's current routine), each at tau, tau/2 and 2 tau.
+
+    python benchmarks/commonplane_reference.py OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--every 2] [--tau 0.1]
+
+For each S1 dump, the shear snapshots with eps_1 >= --from-eps1 (every
+--every-th of them) are classified (:class:`postproc.classify.Classifier`,
+method "commonplane", through :func:`postproc.analysis.analyze_snapshot`
+as ``postproc analyze`` does); OUT/commonplane_reference.csv and .md give,
+per dump and reference, the contacts classified, the simple / double /
+triple proportions (mean over the snapshots) at tau, tau/2 and 2 tau, and
+the largest move of a group between them (the stability target is 0.03).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+import numpy as np
+import pandas as pd
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from postproc.analysis import analyze_snapshot  # noqa: E402
+from postproc.classify import Classifier  # noqa: E402
+from postproc.pipeline import open_source  # noqa: E402
+
+GROUPS = ("simple", "double", "triple")
+REFERENCES = ("vertex", "normal")
+
+
+def proportions(dump, tau, from_eps1, every):
+    """{reference: row} for one dump: contacts and snapshots classified, the
+    mean proportions at tau (no suffix), tau/2 (_lo) and 2 tau (_hi), the
+    largest move."""
+    count, snaps, close, shapes = open_source(dump)
+    try:
+        clfs = {r: Classifier(shapes, "commonplane", tolerance=tau, reference=r) for r in REFERENCES}
+        rows = {r: [] for r in REFERENCES}
+        ref_height, k = None, 0
+        for snap in snaps:
+            if isinstance(snap, Exception):
+                raise SystemExit(f"{dump}: {snap}")
+            if snap.stage == "isotropic":
+                ref_height = snap.box_lengths[2]
+            if snap.stage != "shear" or ref_height is None or 1 - snap.box_lengths[2] / ref_height < from_eps1:
+                continue
+            k += 1
+            if (k - 1) % every:
+                continue
+            for r, clf in clfs.items():
+                rows[r].append(analyze_snapshot(snap, tables=clf).row)
+    finally:
+        close()
+    out = {}
+    for r, rr in rows.items():
+        if not rr:
+            raise SystemExit(f"{dump}: no shear snapshot with eps_1 >= {from_eps1}")
+        df = pd.DataFrame(rr)
+        row = {"dump": os.path.basename(dump), "reference": r, "tau": tau, "snapshots": len(df),
+               "contacts": int(df["n_contacts_pp"].sum())}
+        for g in GROUPS:
+            for suffix in ("", "_lo", "_hi"):
+                row[f"{g}{suffix}"] = float(df[f"ct_frac_{g}{suffix}"].mean())
+        row["move"] = max(abs(row[f"{g}{s}"] - row[g]) for g in GROUPS for s in ("_lo", "_hi"))
+        out[r] = row
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out")
+    ap.add_argument("dumps", nargs="+")
+    ap.add_argument("--from-eps1", type=float, default=0.1)
+    ap.add_argument("--every", type=int, default=1)
+    ap.add_argument("--tau", type=float, default=0.1)
+    args = ap.parse_args()
+    if args.every < 1:
+        raise SystemExit(f"--every must be >= 1, got {args.every}")
+    os.makedirs(args.out, exist_ok=True)
+    table = []
+    for dump in args.dumps:
+        for r, row in proportions(dump, args.tau, args.from_eps1, args.every).items():
+            table.append(row)
+            print(f"{row['dump']} {r}: {row['simple']:.3f} / {row['double']:.3f} / {row['triple']:.3f}, "
+                  f"tau/2 {row['simple_lo']:.3f} / {row['double_lo']:.3f} / {row['triple_lo']:.3f}, "
+                  f"2 tau {row['simple_hi']:.3f} / {row['double_hi']:.3f} / {row['triple_hi']:.3f}, "
+                  f"move {row['move']:.3f} ({row['contacts']} contacts)", flush=True)
+    df = pd.DataFrame(table)
+    df.to_csv(os.path.join(args.out, "commonplane_reference.csv"), index=False)
+
+    def trio(g, s):
+        return " / ".join(f"{g[f'{x}{s}'].mean():.2f}" for x in GROUPS)
+
+    lines = ["| reference | dumps | contacts | simple / double / triple | at tau/2 | at 2 tau | largest move |",
+             "|---|---|---|---|---|---|---|"]
+    for r, g in df.groupby("reference", sort=False):
+        lines.append(f"| {r} | {len(g)} | {int(g['contacts'].sum())} | {trio(g, '')} | {trio(g, '_lo')} | "
+                     f"{trio(g, '_hi')} | {float(np.max(g['move'])):.2f} |")
+    with open(os.path.join(args.out, "commonplane_reference.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
