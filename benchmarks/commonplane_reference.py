@@ -25,10 +25,10 @@ import pandas as pd
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from postproc.analysis import analyze_snapshot  # noqa: E402
 from postproc.classify import Classifier  # noqa: E402
+from postproc.commonplane import REFERENCES  # noqa: E402
 from postproc.pipeline import open_source  # noqa: E402
 
 GROUPS = ("simple", "double", "triple")
-REFERENCES = ("vertex", "normal")
 
 
 def proportions(dump, tau, from_eps1, every):

@@ -138,10 +138,7 @@ class Classifier:
             raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
-        if reference not in cpl.REFERENCES:
-            raise InputError(f"the common plane's reference must be one of {', '.join(cpl.REFERENCES)}, "
-                             f"got {reference!r}")
-        self.reference = reference
+        self.reference = cpl.check_reference(reference)
         default = cpl.DEFAULT_NEIGHBOR if method == "commonplane" else cpm.DEFAULT_ALPHA
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes

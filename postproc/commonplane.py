@@ -148,8 +148,7 @@ def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, neighbor, r
     if bad.any():
         raise InputError(f"common plane: contact {int(np.flatnonzero(bad)[0])}: normal is not a unit vector")
     check_neighbor(neighbor)
-    if reference not in REFERENCES:
-        raise InputError(f"common plane: reference must be one of {', '.join(REFERENCES)}, got {reference!r}")
+    check_reference(reference)
     if not (isinstance(iterations, (int, np.integer)) and iterations >= 0):
         raise InputError(f"common plane: iterations must be an integer >= 0, got {iterations!r}")
     if alert is not None and not np.isfinite(float(alert)):
@@ -160,6 +159,13 @@ def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, neighbor, r
 def check_neighbor(tau, what="common plane: the band tolerance tau"):
     """tau as a float; InputError unless finite and > 0."""
     return positive_tolerance(tau, what)
+
+
+def check_reference(reference):
+    """reference unchanged; InputError (one line) unless one of REFERENCES."""
+    if reference not in REFERENCES:
+        raise InputError(f"common plane: reference must be one of {', '.join(REFERENCES)}, got {reference!r}")
+    return reference
 
 
 def _perpendicular(n):
