@@ -23,15 +23,14 @@ import numpy as np
 import pandas as pd
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from contact_types_kappa import GROUPS, proportions as type_proportions  # noqa: E402
 from postproc.analysis import analyze_snapshot  # noqa: E402
 from postproc.classify import Classifier  # noqa: E402
 from postproc.commonplane import REFERENCES  # noqa: E402
 from postproc.pipeline import open_source  # noqa: E402
 
-GROUPS = ("simple", "double", "triple")
 
-
-def proportions(dump, tau, from_eps1, every):
+def by_reference(dump, tau, from_eps1, every):
     """{reference: row} for one dump: contacts and snapshots classified, the
     mean proportions at tau (no suffix), tau/2 (_lo) and 2 tau (_hi), the
     largest move."""
@@ -59,13 +58,8 @@ def proportions(dump, tau, from_eps1, every):
         if not rr:
             raise SystemExit(f"{dump}: no shear snapshot with eps_1 >= {from_eps1}")
         df = pd.DataFrame(rr)
-        row = {"dump": os.path.basename(dump), "reference": r, "tau": tau, "snapshots": len(df),
-               "contacts": int(df["n_contacts_pp"].sum())}
-        for g in GROUPS:
-            for suffix in ("", "_lo", "_hi"):
-                row[f"{g}{suffix}"] = float(df[f"ct_frac_{g}{suffix}"].mean())
-        row["move"] = max(abs(row[f"{g}{s}"] - row[g]) for g in GROUPS for s in ("_lo", "_hi"))
-        out[r] = row
+        out[r] = {"dump": os.path.basename(dump), "reference": r, "tau": tau, "snapshots": len(df),
+                  "contacts": int(df["n_contacts_pp"].sum()), **type_proportions(df)}
     return out
 
 
@@ -82,7 +76,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     table = []
     for dump in args.dumps:
-        for r, row in proportions(dump, args.tau, args.from_eps1, args.every).items():
+        for r, row in by_reference(dump, args.tau, args.from_eps1, args.every).items():
             table.append(row)
             print(f"{row['dump']} {r}: {row['simple']:.3f} / {row['double']:.3f} / {row['triple']:.3f}, "
                   f"tau/2 {row['simple_lo']:.3f} / {row['double_lo']:.3f} / {row['triple_lo']:.3f}, "

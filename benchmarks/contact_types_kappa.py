@@ -38,10 +38,18 @@ def one(dump, out, types, from_eps1):
         p = r.parameters
     row = {"dump": os.path.basename(dump), "criterion": types, "kappa": p["kappa"], "I": p["inertial_number"],
            "n_grains": p["n_particles"], "snapshots": len(sh), "contacts": int(sh["n_contacts_pp"].sum())}
+    row.update(proportions(sh))
     for g in GROUPS:
-        for suffix in ("", "_lo", "_hi"):
-            row[f"{g}{suffix}"] = sh[f"ct_frac_{g}{suffix}"].mean()
         row[f"fratio_{g}"] = sh[f"ct_fratio_{g}"].mean()
+    return row
+
+
+def proportions(frame):
+    """The simple / double / triple proportions of summary rows (mean over
+    the rows) at the criterion's tolerance (``simple``...), half it
+    (``simple_lo``...) and double it (``simple_hi``...), and ``move``, the
+    largest change of a group between them."""
+    row = {f"{g}{s}": float(frame[f"ct_frac_{g}{s}"].mean()) for g in GROUPS for s in ("", "_lo", "_hi")}
     row["move"] = max(abs(row[f"{g}{s}"] - row[g]) for g in GROUPS for s in ("_lo", "_hi"))
     return row
 
