@@ -28,6 +28,7 @@ from postproc.analysis import analyze_snapshot  # noqa: E402
 from postproc.classify import Classifier  # noqa: E402
 from postproc.commonplane import REFERENCES  # noqa: E402
 from postproc.pipeline import open_source  # noqa: E402
+from postproc.strain import box_strains  # noqa: E402
 
 
 def by_reference(dump, tau, from_eps1, every):
@@ -38,13 +39,14 @@ def by_reference(dump, tau, from_eps1, every):
     try:
         clfs = {r: Classifier(shapes, "commonplane", tolerance=tau, reference=r) for r in REFERENCES}
         rows = {r: [] for r in REFERENCES}
-        ref_height, k = None, 0
+        ref_box, k = None, 0
         for snap in snaps:
             if isinstance(snap, Exception):
                 raise SystemExit(f"{dump}: {snap}")
             if snap.stage == "isotropic":
-                ref_height = snap.box_lengths[2]
-            if snap.stage != "shear" or ref_height is None or 1 - snap.box_lengths[2] / ref_height < from_eps1:
+                ref_box = snap.box_lengths          # zero strain: the last isotropic state
+            if snap.stage != "shear" or ref_box is None or \
+                    float(box_strains(snap.box_lengths, ref_box)["eps_1"][0]) < from_eps1:
                 continue
             k += 1
             if (k - 1) % every:
