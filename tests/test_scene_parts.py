@@ -19,6 +19,10 @@ def test_presets_resolve_and_reject_bad_config():
             assert p["sample"] == kind and p["n_particles"] >= 2
     assert resolve("paper", "polyhedra")["n_particles"] == 36933
     assert resolve("paper", "spheres")["n_particles"] == 19998
+    # prepared as published (solid fraction about 0.6): polyhedra compacted
+    # at the shear friction, spheres frictionless
+    assert resolve("paper", "polyhedra")["compaction_friction"] == 0.5
+    assert resolve("paper", "spheres")["compaction_friction"] == 0.0
     with pytest.raises(ConfigError, match="unknown parameter 'kapa' .*kappa"):
         resolve("tiny", "spheres", {"kapa": 3})
     with pytest.raises(ConfigError, match="friction = -1.0 is outside"):

@@ -28,7 +28,9 @@
              of our polyhedra); one 16-core node, e.g.
              ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``
              (yade_scripts.slurm.estimate gives the core-hours).
-``paper``    the published samples (36 933 polyhedra, 19 998 spheres), for a
+``paper``    the published samples (36 933 polyhedra, 19 998 spheres) at
+             kappa = 1e4, I = 1e-3, I_c = 1e-2, prepared like the default
+             (polyhedra compacted at 0.5, spheres frictionless), for a
              cluster through yade-batch; not run here.
 
 Every key is a parameter of :mod:`yade_scripts.parameters` (names, types,
@@ -71,11 +73,14 @@ PRESETS = {
         "polyhedra": {"n_particles": 5000},
         "spheres": {"compaction_friction": 0.0},
     },
+    # prepared like the default (solid fraction about 0.6 in both): the
+    # polyhedra compacted at mu = 0.5 (frictionless they reach 0.71), the
+    # spheres frictionless
     "paper": {
         "common": {"kappa": 1.0e4, "inertial_number": 1e-3, "compaction_inertial_number": 1e-2,
-                   "compaction_friction": 0.0, "dump_strain": 0.005, "unbalanced_tolerance": 0.01},
+                   "dump_strain": 0.005, "unbalanced_tolerance": 0.01},
         "polyhedra": {"n_particles": 36933},
-        "spheres": {"n_particles": 19998},
+        "spheres": {"n_particles": 19998, "compaction_friction": 0.0},
     },
 }
 
