@@ -78,6 +78,8 @@ def test_cost_model_scaling():
                                             / 3.6e9, rel=1e-12)
     q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2 x sqrt(kappa), 1/2 I: the same shear
     assert estimate(q)["shear_steps"] == pytest.approx(e["shear_steps"], rel=1e-12)
+    q = dict(p, safety=2 * p["safety"])                   # a time step twice as long: half the steps
+    assert estimate(q)["steps"] == pytest.approx(e["steps"] / 2, rel=1e-12)
     d = estimate(resolve("default", "polyhedra"))
     assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
     soft = estimate(resolve("soft", "polyhedra"))

@@ -38,9 +38,9 @@ import shlex
 #: and an 8-fold range of I; the spheres' frictionless compaction spreads by 43 %).
 REFERENCE = {
     "polyhedra": {"kappa": 3000.0, "inertial_number": 5e-3, "compaction_inertial_number": 0.1,
-                  "final_strain": 0.3, "placement": "grains"},
+                  "final_strain": 0.3, "placement": "grains", "safety": 0.3},
     "spheres": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
-                "final_strain": 0.3, "placement": "spheres"},
+                "final_strain": 0.3, "placement": "spheres", "safety": 0.3},
 }
 COMPACTION_STEPS = {"polyhedra": 34_850, "spheres": 15_100}
 SHEAR_STEPS = {"polyhedra": 339_810, "spheres": 3_077}
@@ -74,7 +74,8 @@ def estimate(params):
     factor relative to r's (polyhedra only); shear steps = SHEAR_STEPS x
     sqrt(kappa / r.kappa) x (r.I / I) (the shear rate goes as I) x
     (1 - exp(-final_strain)) / (1 - exp(-r.final_strain)) (the top wall moves
-    at a constant speed); contacts = grains x CONTACTS_PER_GRAIN; core-hours =
+    at a constant speed); both also x r.safety / safety (dt = safety x the
+    critical step); contacts = grains x CONTACTS_PER_GRAIN; core-hours =
     steps x contacts x US_PER_CONTACT_STEP / 3.6e9. Steps do not depend on
     the number of grains (rate and time step are per grain), except that
     large frictionless sphere packings take longer to settle (the front's
@@ -82,7 +83,7 @@ def estimate(params):
     The kernel's speed-up on more threads is not in the model."""
     s = params["sample"]
     r = REFERENCE[s]
-    root = math.sqrt(params["kappa"] / r["kappa"])
+    root = math.sqrt(params["kappa"] / r["kappa"]) * r["safety"] / params.get("safety", r["safety"])
     place = PLACEMENT_FACTOR[params.get("placement", r["placement"])] / PLACEMENT_FACTOR[r["placement"]] \
         if s == "polyhedra" else 1.0
     comp = (COMPACTION_STEPS[s] * root * (r["compaction_inertial_number"] / params["compaction_inertial_number"])
