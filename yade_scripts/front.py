@@ -87,6 +87,17 @@ PLANS["kernel"] = {
     "polyhedra": _grid(KERNEL_POINTS + [(300, 2e-2, 500)], (1, 2, 3), 200),
     "spheres": _grid(KERNEL_POINTS, (1, 2, 3), 1000) + _grid([(300, 2e-2, 4000)], (1,), 1000),
 }
+# The time-step sweep (benchmarks/timestep_front.py): S1 on the default
+# preset (kappa = 3000, I = 5e-3) at 200 grains, the time step at 0.3 (the
+# default), 0.45, 0.6 and 0.9 of the critical step, 3 seeds, seed-major; the
+# same seed starts from the same grains and positions at every step.
+TIMESTEP_SAFETIES = (0.3, 0.45, 0.6, 0.9)
+PLANS["timestep"] = {
+    "preset": "default", "common": {"n_particles": 200},
+    "polyhedra": [(f"dt{s:g}-s{seed}", {"safety": s, "seed": seed})
+                  for seed in (1, 2, 3) for s in TIMESTEP_SAFETIES],
+    "spheres": [],
+}
 LOW_DETAIL = {"v_min": 8, "v_max": 12}
 
 

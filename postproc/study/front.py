@@ -75,7 +75,7 @@ def _run_values(df, sample, reference):
 
 def collect_runs(folder):
     """DataFrame, one row per analysed run of the sweep folder: its
-    parameters (kappa, inertial_number, n_particles, library, seed), its cost
+    parameters (kappa, inertial_number, n_particles, library, seed, safety), its cost
     (wall_seconds, steps, compaction_steps, shear_steps, contact_steps, and
     for the polyhedra kernel touch_steps, the exact touching contact-steps),
     the plateau of q/p, a, a_n, a_t with one-seed batch-means s.e., and every
@@ -103,7 +103,7 @@ def collect_runs(folder):
         row = {"sample": sample, "run": name.split("-", 1)[1] if "-" in name else name,
                "kappa": par.get("kappa"), "inertial_number": par.get("inertial_number"),
                "n_particles": par.get("n_particles"), "library": par.get("library", ""),
-               "seed": par.get("seed"), "final_strain": par.get("final_strain"),
+               "seed": par.get("seed"), "final_strain": par.get("final_strain"), "safety": par.get("safety"),
                "steps": info.get("steps"), "wall_seconds": info.get("wall_seconds"),
                "compaction_steps": shear0,
                "shear_steps": (info["steps"] - shear0) if shear0 is not None else np.nan,
