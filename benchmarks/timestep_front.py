@@ -79,7 +79,7 @@ def markdown(cost, paired, failed):
     out = ["| safety | runs | steps | compaction | shear | wall s | steps / steps at 0.3 |",
            "|---|---|---|---|---|---|---|"]
     for _, r in cost.iterrows():
-        out.append(f"| {r['safety']:g} | {r['runs']} | {r['steps']:.0f} | {r['compaction_steps']:.0f} | "
+        out.append(f"| {r['safety']:g} | {int(r['runs'])} | {r['steps']:.0f} | {r['compaction_steps']:.0f} | "
                    f"{r['shear_steps']:.0f} | {r['wall_seconds']:.0f} | {r['steps_ratio']:.2f} |")
     safeties = sorted(paired["safety"].unique())
     others = [s for s in safeties if s != REFERENCE_SAFETY]

@@ -23,6 +23,8 @@ def test_presets_resolve_and_reject_bad_config():
     # at the shear friction, spheres frictionless
     assert resolve("paper", "polyhedra")["compaction_friction"] == 0.5
     assert resolve("paper", "spheres")["compaction_friction"] == 0.0
+    assert resolve("paper", "polyhedra")["safety"] == 0.45       # docs/front.md, the time step
+    assert resolve("default", "polyhedra")["safety"] == 0.3
     with pytest.raises(ConfigError, match="unknown parameter 'kapa' .*kappa"):
         resolve("tiny", "spheres", {"kapa": 3})
     with pytest.raises(ConfigError, match="friction = -1.0 is outside"):
