@@ -36,16 +36,22 @@ REFERENCE_SAFETY = TIMESTEP_SAFETIES[0]
 QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
 
 
+def _paired(runs, reference):
+    """Per safety s: (s, its runs indexed by seed, the reference runs indexed
+    by seed, the seeds both have)."""
+    ref = runs[runs["safety"] == reference].set_index("seed")
+    for s, g in runs.groupby("safety"):
+        g = g.set_index("seed")
+        yield s, g, ref, g.index.intersection(ref.index)
+
+
 def paired_table(runs, quantities=QUANTITIES, reference=REFERENCE_SAFETY):
     """One row per (safety, quantity): ``mean`` over seeds, ``diff`` the mean
     over seeds of (value - value at ``reference``, same seed), ``lo``/``hi``
     its 95 % interval (t over seeds), ``sd_ref`` the seed-to-seed standard
     deviation at the reference, ``n`` the seeds paired."""
-    ref = runs[runs["safety"] == reference].set_index("seed")
     rows = []
-    for s, g in runs.groupby("safety"):
-        g = g.set_index("seed")
-        common = g.index.intersection(ref.index)
+    for s, g, ref, common in _paired(runs, reference):
         for q in quantities:
             v = g[q].to_numpy(float)
             d = (g.loc[common, q] - ref.loc[common, q]).to_numpy(float)
@@ -61,11 +67,8 @@ def cost_table(runs, reference=REFERENCE_SAFETY):
     """One row per safety: runs, median steps, compaction and shear steps,
     wall seconds, and the median over seeds of steps / steps at the
     reference (same seed)."""
-    ref = runs[runs["safety"] == reference].set_index("seed")
     rows = []
-    for s, g in runs.groupby("safety"):
-        g = g.set_index("seed")
-        common = g.index.intersection(ref.index)
+    for s, g, ref, common in _paired(runs, reference):
         ratio = (g.loc[common, "steps"] / ref.loc[common, "steps"]).to_numpy(float)
         rows.append({"safety": s, "runs": len(g), "steps": float(g["steps"].median()),
                      "compaction_steps": float(g["compaction_steps"].median()),
@@ -76,14 +79,15 @@ def cost_table(runs, reference=REFERENCE_SAFETY):
 
 
 def markdown(cost, paired, failed):
-    out = ["| safety | runs | steps | compaction | shear | wall s | steps / steps at 0.3 |",
+    out = [f"| safety | runs | steps | compaction | shear | wall s | steps / steps at {REFERENCE_SAFETY:g} |",
            "|---|---|---|---|---|---|---|"]
     for _, r in cost.iterrows():
         out.append(f"| {r['safety']:g} | {int(r['runs'])} | {r['steps']:.0f} | {r['compaction_steps']:.0f} | "
                    f"{r['shear_steps']:.0f} | {r['wall_seconds']:.0f} | {r['steps_ratio']:.2f} |")
     safeties = sorted(paired["safety"].unique())
     others = [s for s in safeties if s != REFERENCE_SAFETY]
-    out += ["", "| quantity | at 0.3 (sd over seeds) | " + " | ".join(f"{s:g} − 0.3" for s in others) + " |",
+    out += ["", f"| quantity | at {REFERENCE_SAFETY:g} (sd over seeds) | "
+            + " | ".join(f"{s:g} − {REFERENCE_SAFETY:g}" for s in others) + " |",
             "|---|---|" + "---|" * len(others)]
     for q in QUANTITIES:
         ref = paired[(paired["safety"] == REFERENCE_SAFETY) & (paired["quantity"] == q)]

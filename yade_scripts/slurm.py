@@ -83,12 +83,13 @@ def estimate(params):
     The kernel's speed-up on more threads is not in the model."""
     s = params["sample"]
     r = REFERENCE[s]
-    root = math.sqrt(params["kappa"] / r["kappa"]) * r["safety"] / params.get("safety", r["safety"])
+    # steps per unit of simulated time, relative to r's: 1 / dt, dt = safety x dt_crit ~ kappa^-1/2
+    step_scale = math.sqrt(params["kappa"] / r["kappa"]) * r["safety"] / params.get("safety", r["safety"])
     place = PLACEMENT_FACTOR[params.get("placement", r["placement"])] / PLACEMENT_FACTOR[r["placement"]] \
         if s == "polyhedra" else 1.0
-    comp = (COMPACTION_STEPS[s] * root * (r["compaction_inertial_number"] / params["compaction_inertial_number"])
+    comp = (COMPACTION_STEPS[s] * step_scale * (r["compaction_inertial_number"] / params["compaction_inertial_number"])
             ** COMPACTION_IC_EXPONENT * place)
-    shear = (SHEAR_STEPS[s] * root * r["inertial_number"] / params["inertial_number"]
+    shear = (SHEAR_STEPS[s] * step_scale * r["inertial_number"] / params["inertial_number"]
              * (1 - math.exp(-params["final_strain"])) / (1 - math.exp(-r["final_strain"])))
     steps = comp + shear
     contacts = params["n_particles"] * CONTACTS_PER_GRAIN[s]
