@@ -408,10 +408,11 @@ TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_pe
                 ("ct_simple", "simple contacts (fraction)"))
 
 
-def plot_front_trends(points, fits, path, kappa_d, inertial_d):
+def plot_front_trends(points, fits, path, kappa_d, inertial_d, reference=None):
     """The kappa and I trends of the front, one row per sample, one panel per
     quantity (kappa_d, inertial_d: the default point, the fit's units;
-    postproc.study.front.FRONT_KAPPA, FRONT_I): point means over seeds with
+    postproc.study.front.FRONT_KAPPA, FRONT_I; ``reference``, {sample:
+    (kappa_d, I_d)}, sets it per sample): point means over seeds with
     their 95 % intervals against
     x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
     at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
@@ -423,7 +424,10 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     panels = [p for p in TREND_PANELS if p[0] in points]
     fig, axes = plt.subplots(len(samples), len(panels), figsize=(2.6 * len(panels), 2.7 * len(samples)),
                              squeeze=False)
+    k_all, i_all = kappa_d, inertial_d
     for r, s in enumerate(samples):
+        kappa_d, inertial_d = (float(reference[s][0]), float(reference[s][1])) if reference and s in reference \
+            else (k_all, i_all)
         g = points[points["sample"] == s]
         base_n = g["n_particles"].mode().iloc[0] if "n_particles" in g else None
         if base_n is not None:
@@ -444,12 +448,13 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d):
             f = fits[(fits["sample"] == s) & (fits["quantity"] == q)]
             if len(f) and np.isfinite(f["X0"].iloc[0]):
                 f = f.iloc[0]
-                xs = np.linspace(0, 3.1, 32)
+                xmax = max(float(np.max(kappa_d / g["kappa"])), float(np.max(g["inertial_number"] / inertial_d)))
+                xs = np.linspace(0, 1.03 * xmax, 64)
                 ax.plot(xs, f["X0"] + f["A"] * xs ** f["alpha"] + f["B"], "C0-", lw=0.8)
                 ax.plot(xs, f["X0"] + f["A"] + f["B"] * xs ** f["beta"], "C1-", lw=0.8)
                 ax.errorbar([0], [f["X0"]], yerr=[f["ci_X0"]] if np.isfinite(f["ci_X0"]) else None,
                             fmt="*", color="k", ms=8, capsize=2, label="κ→∞, I→0")
-            ax.set_title(f"{s}: {label}", fontsize=8)
+            ax.set_title(f"{s} (κd {kappa_d:g}, Id {inertial_d:g}): {label}", fontsize=7)
             ax.tick_params(labelsize=7)
             if r == len(samples) - 1:
                 ax.set_xlabel("κd/κ or I/Id (default at 1)", fontsize=7)

@@ -66,6 +66,40 @@ def test_rigid_quasistatic_fit_recovers_an_exact_law():
     assert t["X0_min"] - 1e-12 <= 0.40 <= t["X0_max"] + 1e-12 and t["X0_max"] - t["X0_min"] > 0.01
 
 
+def test_fit_and_cost_take_each_samples_own_default_point():
+    """Two samples around two default points (the plan's "reference"): each
+    fit recovers its exact law in its own units (kappa_d/kappa, I/I_d), so
+    A and B are the effects at that sample's default; the cost model scales
+    each sample's steps to its own point."""
+    ref = {"polyhedra": (3000.0, 5e-3), "spheres": (3000.0, 1e-3)}
+    law = {"polyhedra": (0.40, 0.03, 0.05), "spheres": (0.25, -0.01, 0.02)}
+    pts = {"polyhedra": [(3000, 5e-3), (300, 5e-3), (1000, 5e-3), (10000, 5e-3), (3000, 1e-2), (1000, 1e-2)],
+           "spheres": [(3000, 1e-3), (300, 1e-3), (10000, 1e-3), (3000, 5e-4), (3000, 5e-3), (1000, 2e-3)]}
+    rows = []
+    for s, (kd, idd) in ref.items():
+        x0, A, B = law[s]
+        for seed, off in ((1, 0.01), (2, -0.02), (3, 0.01)):
+            for k, i in pts[s]:
+                c, sh = 4000 * math.sqrt(k / kd), 9000 * math.sqrt(k / kd) * idd / i
+                rows.append({"sample": s, "kappa": float(k), "inertial_number": i, "n_particles": 200,
+                             "library": "shapes.h5", "seed": seed, "final_strain": 0.3,
+                             "qp_plateau": x0 + A * kd / k + B * i / idd + off,
+                             "compaction_steps": c, "shear_steps": sh, "steps": c + sh,
+                             "touch_steps": 2 * (c + sh), "contact_steps": np.nan, "wall_seconds": c + sh})
+    runs = pd.DataFrame(rows)
+    t = fit_table(runs, ("qp_plateau",), forms=((1.0, 1.0),), reference=ref).set_index("sample")
+    for s, (x0, A, B) in law.items():
+        assert (t.loc[s, "kappa_d"], t.loc[s, "inertial_d"]) == ref[s]
+        assert t.loc[s, "X0"] == pytest.approx(x0, abs=1e-12) and t.loc[s, "A"] == pytest.approx(A, abs=1e-12)
+        assert t.loc[s, "B"] == pytest.approx(B, abs=1e-12) and t.loc[s, "corner_residual"] == pytest.approx(0, abs=1e-12)
+        assert t.loc[s, "default_mean"] == pytest.approx(x0 + A + B, abs=1e-12)
+    # without the mapping the spheres' default point (300, 2e-2) has no runs: no default mean
+    assert np.isnan(fit_table(runs, ("qp_plateau",)).set_index("sample").loc["spheres", "default_mean"])
+    m = cost_model(runs, reference=ref).set_index("sample")
+    assert m["compaction_steps_ref"].tolist() == pytest.approx([4000, 4000])
+    assert m["shear_steps_ref"].tolist() == pytest.approx([9000, 9000]) and (m["shear_steps_ref_rsd"] < 1e-12).all()
+
+
 def test_rigid_quasistatic_fit_intervals_cover_the_truth():
     """With Gaussian noise of sd 0.01, the 95 % intervals of X0 and of the
     bias cover the truth in about 95 % of 400 sweeps (binomial sd 1.1 %:

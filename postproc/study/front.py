@@ -59,8 +59,19 @@ FRONT_QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
 # was measured around (the default preset of that time, kappa = 300,
 # I = 2e-2), fixed here rather than read from the presets: moving the default
 # must not change what the measured front says.
+# A sweep around another point names it per sample in its plan
+# (``front-plan.json``: "reference": {sample: [kappa_d, I_d]}).
 FRONT_KAPPA = 300.0
 FRONT_I = 2e-2
+
+
+def reference_point(reference, sample, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I):
+    """(kappa_d, I_d) of one sample: ``reference[sample]`` when the mapping
+    names it, else (kappa_d, inertial_d)."""
+    if reference and sample in reference:
+        k, i = reference[sample]
+        return float(k), float(i)
+    return float(kappa_d), float(inertial_d)
 
 
 def _run_values(df, sample, reference):
@@ -262,7 +273,8 @@ def size_effect(runs, q, n_small, n_large, kappa_d=FRONT_KAPPA, inertial_d=FRONT
 FORMS = ((1.0, 1.0), (0.5, 1.0), (1.0, 0.5), (0.5, 0.5))
 
 
-def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, forms=FORMS):
+def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, forms=FORMS,
+              reference=None):
     """Per sample (at its most common N and library) and quantity: the fit of
     :func:`fit_rigid_quasistatic` in the form (alpha, beta) of ``forms`` with
     the smallest residual (all forms have the same number of parameters),
@@ -271,10 +283,14 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d
     monotone, the seed-to-seed standard deviation at the default point
     (``seed_sd``), the size effect (largest N minus the base N at the
     default) and the prediction error of the corner points (stiff and slow
-    at once), which tests that the two effects add."""
+    at once), which tests that the two effects add. The default point is
+    (kappa_d, inertial_d), or per sample ``reference`` ({sample: (kappa_d,
+    I_d)}); each row names it (columns ``kappa_d``, ``inertial_d``)."""
 
     rows = []
+    k_all, i_all = kappa_d, inertial_d
     for s, gs in runs.groupby("sample"):
+        kappa_d, inertial_d = reference_point(reference, s, k_all, i_all)
         base_n = gs["n_particles"].mode().iloc[0]
         base_lib = gs["library"].mode().iloc[0]
         g = gs[(gs["n_particles"] == base_n) & (gs["library"] == base_lib)]
@@ -288,7 +304,8 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d
             f = min(ok, key=lambda f: f["resid_sd"]) if ok else fits[0]
             at = g[np.isclose(g["kappa"], kappa_d) & np.isclose(g["inertial_number"], inertial_d)][q]
             corner = g[~np.isclose(g["kappa"], kappa_d) & ~np.isclose(g["inertial_number"], inertial_d)]
-            row = {"sample": s, "quantity": q, "n_particles": int(base_n), **f,
+            row = {"sample": s, "quantity": q, "n_particles": int(base_n), "kappa_d": kappa_d,
+                   "inertial_d": inertial_d, **f,
                    "X0_min": min((x["X0"] for x in ok), default=np.nan),
                    "X0_max": max((x["X0"] for x in ok), default=np.nan),
                    "monotone_kappa": monotone(pts, q, "kappa", inertial_d),
@@ -311,7 +328,7 @@ def fit_table(runs, quantities=FRONT_QUANTITIES, kappa_d=FRONT_KAPPA, inertial_d
     return pd.DataFrame(rows)
 
 
-def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
+def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3, reference=None):
     """Per sample, the cost constants measured on the sweep's runs, as the
     medians over runs:
 
@@ -328,11 +345,15 @@ def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
 
     with the relative spread (``*_rsd``, sd / median) of each scaled step
     count, which says how well the kappa^-1/2 and I^-1 laws hold.
-    Returns a DataFrame, one row per sample and particle count.
+    ``reference`` ({sample: (kappa_d, I_d)}) sets the point per sample.
+    Returns a DataFrame, one row per sample and particle count, with its
+    ``kappa_d`` and ``inertial_d``.
     """
 
     rows = []
+    k_all, i_all = kappa_d, inertial_d
     for (s, n), g in runs.groupby(["sample", "n_particles"]):
+        kappa_d, inertial_d = reference_point(reference, s, k_all, i_all)
         scale = np.sqrt(kappa_d / g["kappa"].to_numpy(float))
         comp = g["compaction_steps"].to_numpy(float) * scale
         shear = (g["shear_steps"].to_numpy(float) * scale * g["inertial_number"].to_numpy(float)
@@ -341,7 +362,7 @@ def cost_model(runs, kappa_d=FRONT_KAPPA, inertial_d=FRONT_I, strain=0.3):
         touch = np.where(np.isfinite(touch), touch, g["contact_steps"].to_numpy(float))
         steps = g["steps"].to_numpy(float)
         wall = g["wall_seconds"].to_numpy(float)
-        row = {"sample": s, "n_particles": int(n), "runs": len(g)}
+        row = {"sample": s, "n_particles": int(n), "runs": len(g), "kappa_d": kappa_d, "inertial_d": inertial_d}
         for name, v in (("compaction_steps_ref", comp), ("shear_steps_ref", shear)):
             v = v[np.isfinite(v)]
             row[name] = float(np.median(v)) if len(v) else np.nan
@@ -365,7 +386,9 @@ def front_markdown(fits, cost):
     sd at the default point; then the cost model."""
     out = []
     for s, g in fits.groupby("sample"):
-        out += [f"### {s} ({int(g['n_particles'].iloc[0])} particles)", "",
+        at = (f"; default κ = {g['kappa_d'].iloc[0]:g}, I = {g['inertial_d'].iloc[0]:g}"
+              if "kappa_d" in g else "")
+        out += [f"### {s} ({int(g['n_particles'].iloc[0])} particles{at})", "",
                 "| quantity | default (mean) | κ→∞, I→0 | range over forms | bias of the default | "
                 "κ part A | I part B | form (α, β) | monotone κ / I | corner residual | seed sd |",
                 "|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -377,24 +400,36 @@ def front_markdown(fits, cost):
                        f"({r['alpha']:g}, {r['beta']:g}) | {mono} | {_f(r['corner_residual'])} | "
                        f"{_f(r['seed_sd'])} |")
         out.append("")
-    out += ["### cost", "", "| sample | N | runs | compaction steps | shear steps to ε1 = 0.3 | "
-            "contacts per grain | µs per contact-step | µs per grain-step |", "|---|---|---|---|---|---|---|---|"]
+    out += ["### cost (steps scaled to the sample's default κ, I)", "",
+            "| sample | N | runs | default κ, I | compaction steps | shear steps to ε1 = 0.3 | "
+            "contacts per grain | µs per contact-step | µs per grain-step |", "|---|---|---|---|---|---|---|---|---|"]
     for _, r in cost.iterrows():
-        out.append(f"| {r['sample']} | {int(r['n_particles'])} | {int(r['runs'])} | "
+        kd = f"{r['kappa_d']:g}, {r['inertial_d']:g}" if "kappa_d" in r else "n/a"
+        out.append(f"| {r['sample']} | {int(r['n_particles'])} | {int(r['runs'])} | {kd} | "
                    f"{r['compaction_steps_ref']:.0f} (± {100 * r['compaction_steps_ref_rsd']:.0f} %) | "
                    f"{r['shear_steps_ref']:.0f} (± {100 * r['shear_steps_ref_rsd']:.0f} %) | "
                    f"{r['contacts_per_grain']:.2f} | {r['us_per_contact_step']:.2f} | {r['us_per_grain_step']:.2f} |")
     return "\n".join(out) + "\n"
 
 
-def write_front(folder):
+def write_front(folder, reference=None):
     """Write into the sweep folder: ``front.csv`` (one row per run),
     ``front-points.csv`` (means over seeds per point), ``front-fit.csv``
     (the extrapolation and the default's bias per quantity),
     ``front-cost.csv`` (the cost model), ``front.md`` (the fit and the cost
-    as markdown tables), ``front.png`` and ``front-trends.png``. Returns the
-    run table."""
+    as markdown tables), ``front.png`` and ``front-trends.png``. The default
+    point of each sample (the fit's units) is ``reference`` ({sample:
+    (kappa_d, I_d)}), else the plan's (``front-plan.json``, key
+    "reference"), else (FRONT_KAPPA, FRONT_I). Returns the run table."""
 
+    if reference is None:
+        plan = os.path.join(folder, "front-plan.json")
+        if os.path.exists(plan):
+            try:
+                with open(plan) as fh:
+                    reference = json.load(fh).get("reference")
+            except (OSError, ValueError) as exc:
+                raise InputError(f"{plan}: not a readable plan ({exc})") from None
     runs = collect_runs(folder)
     if runs.empty:
         raise InputError(f"{folder}: no analysed runs to build a front from")
@@ -405,14 +440,15 @@ def write_front(folder):
     runs.to_csv(os.path.join(folder, "front.csv"), index=False)
     points = point_table(runs)
     points.to_csv(os.path.join(folder, "front-points.csv"), index=False)
-    fits = fit_table(runs)
+    fits = fit_table(runs, reference=reference)
     fits.to_csv(os.path.join(folder, "front-fit.csv"), index=False)
-    cost = cost_model(runs)
+    cost = cost_model(runs, reference=reference)
     cost.to_csv(os.path.join(folder, "front-cost.csv"), index=False)
     with open(os.path.join(folder, "front.md"), "w") as fh:
         fh.write(front_markdown(fits, cost))
     plot_front(runs, os.path.join(folder, "front.png"))
-    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), FRONT_KAPPA, FRONT_I)
+    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), FRONT_KAPPA, FRONT_I,
+                      reference=reference)
     return runs
 
 
