@@ -14,16 +14,22 @@ group between them, and the mean normal force of each group over the mean.
 A criterion whose proportions stop changing as kappa grows measures the
 rigid grains of contact dynamics; one that is also stable under its
 tolerance (moves <= 0.03) gives the paper's claim-6 counts a meaning.
+With several seeds per (kappa, I) (a front's dumps, e.g.
+``runs/front-default/polyhedra/*.h5``), OUT/contact_types_points.csv and
+the second table of the .md give, per criterion and point, the means over
+seeds with 95 % Student's t half-widths.
 """
 from __future__ import annotations
 
 import argparse
 import os
 
+import numpy as np
 import pandas as pd
 
 from postproc.pipeline import AnalysisOptions, analyze_path
 from postproc.schema import DumpReader
+from postproc.statistics import plateau_estimate
 
 GROUPS = ("simple", "double", "triple")
 
@@ -37,6 +43,7 @@ def one(dump, out, types, from_eps1):
     with DumpReader(dump) as r:
         p = r.parameters
     row = {"dump": os.path.basename(dump), "criterion": types, "kappa": p["kappa"], "I": p["inertial_number"],
+           "seed": p.get("seed"),
            "n_grains": p["n_particles"], "snapshots": len(sh), "contacts": int(sh["n_contacts_pp"].sum())}
     row.update(proportions(sh))
     for g in GROUPS:
@@ -52,6 +59,23 @@ def proportions(frame):
     row = {f"{g}{s}": float(frame[f"ct_frac_{g}{s}"].mean()) for g in GROUPS for s in ("", "_lo", "_hi")}
     row["move"] = max(abs(row[f"{g}{s}"] - row[g]) for g in GROUPS for s in ("_lo", "_hi"))
     return row
+
+
+def point_means(table):
+    """Per criterion and (kappa, I): ``seeds``, the mean over seeds of each
+    group's proportion at the tolerance, of ``move`` and of the force
+    ratios, with 95 % Student's t half-widths over seeds (``<col>_ci``, nan
+    with one seed)."""
+    cols = list(GROUPS) + ["move"] + [f"fratio_{g}" for g in GROUPS]
+    rows = []
+    for (c, k, i), g in table.groupby(["criterion", "kappa", "I"], sort=True):
+        row = {"criterion": c, "kappa": k, "I": i, "seeds": len(g), "contacts": int(g["contacts"].sum())}
+        for col in cols:
+            e = plateau_estimate([[v] for v in g[col].to_numpy(float)])
+            lo, hi = e.ci()
+            row[col], row[col + "_ci"] = e.mean, (hi - lo) / 2
+        rows.append(row)
+    return pd.DataFrame(rows)
 
 
 def main():
@@ -71,6 +95,17 @@ def main():
         lines.append(f"| {r['criterion']} | {r['kappa']:g} | {r['I']:g} | {r['contacts']} | {f('')} | {f('_lo')} | "
                      f"{f('_hi')} | {r['move']:.3f} | "
                      + " / ".join(f"{r['fratio_' + g]:.2f}" for g in GROUPS) + " |")
+    points = point_means(table)
+    if (points["seeds"] > 1).any():
+        points.to_csv(os.path.join(args.out, "contact_types_points.csv"), index=False)
+        lines += ["", "Means over seeds (95 % t):", "",
+                  "| criterion | κ | I | seeds | contacts | simple | double | triple | move | f ratio s / d / t |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        ci = lambda r, c: f"{r[c]:.2f} ± {r[c + '_ci']:.2f}" if np.isfinite(r[c + "_ci"]) else f"{r[c]:.2f}"  # noqa: E731
+        for _, r in points.iterrows():
+            lines.append(f"| {r['criterion']} | {r['kappa']:g} | {r['I']:g} | {r['seeds']} | {r['contacts']} | "
+                         + " | ".join(ci(r, g) for g in GROUPS) + f" | {ci(r, 'move')} | "
+                         + " / ".join(f"{r['fratio_' + g]:.2f}" for g in GROUPS) + " |")
     text = "\n".join(lines) + "\n"
     with open(os.path.join(args.out, "contact_types_kappa.md"), "w") as fh:
         fh.write(text)
