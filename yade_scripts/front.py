@@ -101,13 +101,12 @@ PLANS["timestep"] = {
 # The front around the default preset (docs/front.md, "The front at the
 # default"): kappa = 3000, S1 at I = 5e-3 with 200 grains, S2 at I = 1e-3
 # with 1000 spheres, 3 paired seeds per point. A kappa sweep 300, 1000, 3000,
-# 10 000 at the default I, an I sweep at kappa = 3000 (S1 5e-3, 1e-2, 2e-2:
-# below 5e-3 a 200-grain run costs over 20 core-minutes; S2 5e-4 to 5e-3) and
-# one corner per sample. "reference" is each sample's default point, the
+# 10 000 at the default I, an I sweep at kappa = 3000 (S1 2.5e-3 to 2e-2, S2
+# 5e-4 to 5e-3) and one corner per sample. "reference" is each sample's default point, the
 # units of the fit (postproc.study.front.write_front).
 DEFAULT_FRONT_POINTS = {
     "polyhedra": [(3000, 5e-3), (300, 5e-3), (1000, 5e-3), (10000, 5e-3),
-                  (3000, 1e-2), (3000, 2e-2), (1000, 1e-2)],
+                  (3000, 1e-2), (3000, 2e-2), (1000, 1e-2), (3000, 2.5e-3)],
     "spheres": [(3000, 1e-3), (300, 1e-3), (1000, 1e-3), (10000, 1e-3),
                 (3000, 5e-4), (3000, 2e-3), (3000, 5e-3), (1000, 2e-3)],
 }
