@@ -100,6 +100,27 @@ def test_fit_and_cost_take_each_samples_own_default_point():
     assert m["shear_steps_ref"].tolist() == pytest.approx([9000, 9000]) and (m["shear_steps_ref_rsd"] < 1e-12).all()
 
 
+def test_the_default_front_is_centred_on_the_default_preset():
+    """The plan "default" names each sample's default point as its reference,
+    that point is the preset's (kappa, I), it has 3 paired seeds, and both
+    sweeps and a corner surround it (what the fit needs: two kappa and two I
+    values besides the reference, one point off both sweeps)."""
+    from yade_scripts.front import PLANS
+    from yade_scripts.presets import resolve
+
+    plan = PLANS["default"]
+    for s in ("polyhedra", "spheres"):
+        p = resolve(plan["preset"], s)
+        kd, idd = plan["reference"][s]
+        assert (kd, idd) == (p["kappa"], p["inertial_number"])
+        pts = {(o["kappa"], o["inertial_number"]) for _, o in plan[s]}
+        assert {o["seed"] for _, o in plan[s]} == {1, 2, 3}
+        assert all(sum(1 for _, o in plan[s] if (o["kappa"], o["inertial_number"]) == q) == 3 for q in pts)
+        assert len({k for k, i in pts if i == idd} - {kd}) >= 2 and len({i for k, i in pts if k == kd} - {idd}) >= 2
+        assert any(k != kd and i != idd for k, i in pts)
+        assert min(i for k, i in pts if k == kd) < idd < max(i for k, i in pts if k == kd)
+
+
 def test_rigid_quasistatic_fit_intervals_cover_the_truth():
     """With Gaussian noise of sd 0.01, the 95 % intervals of X0 and of the
     bias cover the truth in about 95 % of 400 sweeps (binomial sd 1.1 %:
