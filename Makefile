@@ -76,7 +76,7 @@ study: system venv kernel $(SHAPES_LIB)
 
 # Speed against error: a yade-batch sweep over kappa and I around the
 # default preset, 3 seeds per point, S1 200 grains and S2 1000 spheres
-# (FRONT_PLAN=default, about 1.5 h on 2 cores; FRONT_PLAN=kernel is the sweep
+# (FRONT_PLAN=default, about 2.2 h on 2 cores; FRONT_PLAN=kernel is the sweep
 # around the soft preset, FRONT_PLAN=quick the older 24-grain, one-seed one),
 # then the analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front
