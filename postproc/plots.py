@@ -408,11 +408,11 @@ TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_pe
                 ("ct_simple", "simple contacts (fraction)"))
 
 
-def plot_front_trends(points, fits, path, kappa_d, inertial_d, reference=None):
+def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     """The kappa and I trends of the front, one row per sample, one panel per
     quantity (kappa_d, inertial_d: the default point, the fit's units;
-    postproc.study.front.FRONT_KAPPA, FRONT_I; ``reference``, {sample:
-    (kappa_d, I_d)}, sets it per sample): point means over seeds with
+    postproc.study.front.FRONT_KAPPA, FRONT_I; a sample whose fit rows name
+    their own, columns ``kappa_d`` and ``inertial_d``, uses those): point means over seeds with
     their 95 % intervals against
     x = kappa_d / kappa (kappa sweep at I_d, circles) and x = I / I_d (I sweep
     at kappa_d, squares), the fitted lines X0 + A x + B and X0 + A + B x
@@ -426,8 +426,9 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d, reference=None):
                              squeeze=False)
     k_all, i_all = kappa_d, inertial_d
     for r, s in enumerate(samples):
-        kappa_d, inertial_d = (float(reference[s][0]), float(reference[s][1])) if reference and s in reference \
-            else (k_all, i_all)
+        fs = fits[fits["sample"] == s]
+        kappa_d, inertial_d = ((float(fs["kappa_d"].iloc[0]), float(fs["inertial_d"].iloc[0]))
+                               if "kappa_d" in fs and len(fs) else (k_all, i_all))
         g = points[points["sample"] == s]
         base_n = g["n_particles"].mode().iloc[0] if "n_particles" in g else None
         if base_n is not None:

@@ -447,8 +447,7 @@ def write_front(folder, reference=None):
     with open(os.path.join(folder, "front.md"), "w") as fh:
         fh.write(front_markdown(fits, cost))
     plot_front(runs, os.path.join(folder, "front.png"))
-    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), FRONT_KAPPA, FRONT_I,
-                      reference=reference)
+    plot_front_trends(points, fits, os.path.join(folder, "front-trends.png"), FRONT_KAPPA, FRONT_I)
     return runs
 
 
