@@ -32,18 +32,18 @@ import shlex
 #: with their exact shapes, 1000 grains, eps_1 to 0.3): 34 850 steps to the
 #: isotropic state (seed 1, 2026-11-25) and 339 810 of shear (2026-11-24; the
 #: same as (1 - exp(-0.3)) / (shear rate x dt)).
-#: Spheres: the front's point (kappa = 300, I = 2e-2, I_c = 5e-2; ``make
-#: front``, plan ``kernel``, 2026-11-23, ``front-cost.csv``): medians over its
-#: runs scaled to it (spread 8-9 % for polyhedra over a 30-fold range of kappa
-#: and an 8-fold range of I; the spheres' frictionless compaction spreads by 43 %).
+#: Spheres: the default (kappa = 3000, I = 1e-3, I_c = 0.1, 1000 spheres;
+#: ``make front``, plan ``default``, 2026-11-25, ``front-cost.csv``): medians
+#: over the front's 24 sphere runs scaled to it (their frictionless compaction
+#: spreads by 37 %, their shear by < 1 %).
 REFERENCE = {
     "polyhedra": {"kappa": 3000.0, "inertial_number": 5e-3, "compaction_inertial_number": 0.1,
                   "final_strain": 0.3, "placement": "grains", "safety": 0.3},
-    "spheres": {"kappa": 300.0, "inertial_number": 2e-2, "compaction_inertial_number": 5e-2,
+    "spheres": {"kappa": 3000.0, "inertial_number": 1e-3, "compaction_inertial_number": 0.1,
                 "final_strain": 0.3, "placement": "spheres", "safety": 0.3},
 }
-COMPACTION_STEPS = {"polyhedra": 34_850, "spheres": 15_100}
-SHEAR_STEPS = {"polyhedra": 339_810, "spheres": 3_077}
+COMPACTION_STEPS = {"polyhedra": 34_850, "spheres": 57_400}
+SHEAR_STEPS = {"polyhedra": 339_810, "spheres": 194_487}
 #: compaction steps go as I_c^-0.55: the same 1000-grain S1 (kappa 3000,
 #: grains placed at 0.25) took 51 000 steps at I_c = 0.05 and 34 850 at 0.1
 COMPACTION_IC_EXPONENT = 0.55
@@ -55,8 +55,8 @@ PLACEMENT_FACTOR = {"grains": 1.0, "spheres": 118_550 / 51_000}
 #: 1000-grain S1 at the reference point over its steps x the contacts of the
 #: model (26.7 core-min for 459 860 steps on a quiet core, 2026-11-24: the
 #: kernel, poses, forces, Newton, controller); YADE's own sphere loop for S2
-#: (the front's runs)
-US_PER_CONTACT_STEP = {"polyhedra": 1.41, "spheres": 0.39}
+#: (the default front's sphere runs, median)
+US_PER_CONTACT_STEP = {"polyhedra": 1.41, "spheres": 0.33}
 #: touching contacts per grain in a large sample: polyhedra 2.47 at the
 #: isotropic state of the reference run (a face-face pair counting once);
 #: spheres z / 2 of the 1000-sphere default study (3.96 / 2)
