@@ -82,6 +82,15 @@ def test_cost_model_scaling():
     assert estimate(q)["steps"] == pytest.approx(e["steps"] / 2, rel=1e-12)
     d = estimate(resolve("default", "polyhedra"))
     assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
+    # the spheres' constants are measured at the default's own point (I = 1e-3), and
+    # their placement factor does not apply: the soft preset (kappa 300, I 2e-2,
+    # I_c 5e-2) scales them by sqrt(0.1), 2^0.55 and 1/20 only
+    d = estimate(resolve("default", "spheres"))
+    assert d["steps"] == pytest.approx(COMPACTION_STEPS["spheres"] + SHEAR_STEPS["spheres"], rel=1e-12)
+    soft = estimate(resolve("soft", "spheres"))
+    assert soft["compaction_steps"] == pytest.approx(COMPACTION_STEPS["spheres"] * math.sqrt(0.1) * 2 ** 0.55,
+                                                     rel=1e-12)
+    assert soft["shear_steps"] == pytest.approx(SHEAR_STEPS["spheres"] * math.sqrt(0.1) / 20, rel=1e-12)
     soft = estimate(resolve("soft", "polyhedra"))
     assert soft["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * math.sqrt(0.1) * 2 ** 0.55
                                                      * PLACEMENT_FACTOR["spheres"], rel=1e-12)
