@@ -16,10 +16,21 @@ from postproc.contactset import resolve
 from postproc.schema import DumpReader
 from postproc.stress import contact_stress, wall_stress
 from yade_scripts.generate import generate
+from yade_scripts.host import SIMD_FLAGS
 from yade_scripts.servo import wall_stresses
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 YADE = shutil.which("yade")
+
+
+def yade_numpy():
+    """numpy's version on the Python YADE runs on (its script's #! line)."""
+    with open(YADE) as fh:
+        interpreter = fh.readline()[2:].split()[0]
+    return subprocess.run([interpreter, "-c", "import numpy; print(numpy.__version__)"], capture_output=True,
+                          text=True, check=True).stdout.strip()
+
+
 pytestmark = [pytest.mark.yade,
               pytest.mark.skipif(YADE is None, reason="Debian yade is not installed")]
 SIGMA0 = 1.0e4
@@ -117,6 +128,9 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
     out = tiny_runs[kind]
     info = json.loads((out / "run.info.json").read_text())
     assert 0.3 < info["solid_fraction_isotropic"] < 0.75
+    # the host, read inside YADE: its Python's numpy (Debian's), the CPU
+    assert info["host"]["numpy"] == yade_numpy() and info["host"]["libc"].startswith("glibc")
+    assert info["host"]["machine"] and set(info["host"]["cpu_flags"]) <= set(SIMD_FLAGS)
     with DumpReader(str(out / "run.h5")) as r:
         assert r.complete and r.sample_kind == kind.split("-")[0]
         # derived quantities are stored with the run parameters

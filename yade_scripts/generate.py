@@ -42,6 +42,7 @@ LIB_FILES = {  # copied name: source
     "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
     "checkpoint.py": os.path.join(HERE, "checkpoint.py"),
     "attempt.py": os.path.join(HERE, "attempt.py"),
+    "host.py": os.path.join(HERE, "host.py"),
     "loading.py": os.path.join(HERE, "loading.py"),
     "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
     "engine.py": os.path.join(ROOT, "shapes", "engine.py"),

@@ -7,7 +7,7 @@ isotropically to sigma0, then sheared: the top wall moves down at constant
 speed, the bottom wall is fixed and the four lateral walls hold sigma0 on
 their current area. Snapshots of every contact go to an HDF5 dump
 (postproc/schema.py, copied as lib/dumpschema.py), wall stresses to
-OUT.log.csv and a summary (solid fraction, time step, costs) to
+OUT.log.csv and a summary (solid fraction, time step, costs, the host) to
 OUT.info.json, where OUT is the dump name without .h5 (run.h5 by default).
 
 This file is a template: ``python -m yade_scripts.generate`` copies it into a
@@ -102,6 +102,7 @@ sys.path.insert(0, os.path.join(HERE, "lib"))
 import attempt  # noqa: E402
 import checkpoint  # noqa: E402
 import dumpschema  # noqa: E402
+import host  # noqa: E402
 import loading  # noqa: E402
 import sample as sampling  # noqa: E402
 import servo  # noqa: E402
@@ -557,7 +558,8 @@ info = {"steps": O.iter, "time": O.time, "wall_seconds": runner.wall_seconds(),
         "solid_fraction_isotropic": program.phi_iso, "snapshots": writer.n_snapshots,
         "contact_steps": program.contact_steps, "interaction_steps": program.interaction_steps,
         "shear_start_step": program.shear_start_step, "shear_start_wall_seconds": program.shear_start_wall,
-        "engine_seconds": runner.history(engine_times())["engine_seconds"], "resumes": runner.resumes, **derived}
+        "engine_seconds": runner.history(engine_times())["engine_seconds"], "resumes": runner.resumes, **derived,
+        "host": host.host_info()}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
                       "memory_bytes": kernel.memory_bytes()}

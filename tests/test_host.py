@@ -1,0 +1,37 @@
+"""The host facts a run records (yade_scripts/host.py): hand-built
+/proc/cpuinfo texts with known answers, and a host whose facts cannot be read."""
+import platform
+
+from yade_scripts.host import SIMD_FLAGS, cpu_from_cpuinfo, host_info
+
+CPUINFO = """processor\t: 0
+vendor_id\t: AuthenticAMD
+cpu family\t: 25
+model\t\t: 17
+model name\t: AMD EPYC 9454 48-Core Processor
+stepping\t: 1
+flags\t\t: fpu sse4_2 avx avx2 fma avx512f avx512dq avx512bw avx512vl avx512_bf16
+
+processor\t: 1
+model name\t: another CPU
+flags\t\t: fpu sse4_2
+"""
+
+
+def test_first_processor_block_gives_model_and_simd_flags():
+    model, flags = cpu_from_cpuinfo(CPUINFO)
+    assert model == "AMD EPYC 9454 48-Core Processor (family 25, model 17, stepping 1)"
+    # avx512_bf16 is not one of SIMD_FLAGS; fpu is not a vector flag
+    assert flags == ["avx", "avx2", "avx512bw", "avx512dq", "avx512f", "avx512vl", "fma", "sse4_2"]
+
+
+def test_a_virtual_cpu_without_ids_or_flags():
+    assert cpu_from_cpuinfo("processor\t: 0\nmodel name\t: QEMU Virtual CPU\n") == ("QEMU Virtual CPU", [])
+    assert cpu_from_cpuinfo("") == ("", [])
+
+
+def test_unreadable_cpuinfo_leaves_the_cpu_empty(tmp_path):
+    info = host_info(str(tmp_path / "no-such-file"))
+    assert (info["cpu"], info["cpu_flags"]) == ("", [])
+    assert info["python"] == platform.python_version() and info["machine"] == platform.machine()
+    assert set(host_info()["cpu_flags"]) <= set(SIMD_FLAGS)
