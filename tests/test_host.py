@@ -35,3 +35,21 @@ def test_unreadable_cpuinfo_leaves_the_cpu_empty(tmp_path):
     assert (info["cpu"], info["cpu_flags"]) == ("", [])
     assert info["python"] == platform.python_version() and info["machine"] == platform.machine()
     assert set(host_info()["cpu_flags"]) <= set(SIMD_FLAGS)
+
+
+def test_the_report_names_each_distinct_host_with_its_runs():
+    """Two runs on one host and one on another give two lines, each naming
+    its runs; runs that recorded no host (older dumps) give none."""
+    from postproc.study.report import host_lines
+
+    a = {"cpu": "AMD EPYC (family 25, model 1, stepping 1)", "cpu_flags": ["avx", "avx2", "fma"],
+         "libc": "glibc 2.36", "numpy": "1.24.2"}
+    b = dict(a, cpu_flags=["avx", "avx2", "avx512f", "fma"])
+    infos = [("polyhedra", "seed 1", {"host": a}), ("spheres", "seed 1", {"host": a}),
+             ("polyhedra", "seed 2", {"host": b}), ("spheres", "seed 2", {})]
+    assert host_lines(infos) == [
+        "Host: AMD EPYC (family 25, model 1, stepping 1), avx/avx2/fma, glibc 2.36, numpy 1.24.2 in YADE's "
+        "Python (S1 polyhedra seed 1, S2 spheres seed 1).",
+        "Host: AMD EPYC (family 25, model 1, stepping 1), avx/avx2/avx512f/fma, glibc 2.36, numpy 1.24.2 in "
+        "YADE's Python (S1 polyhedra seed 2)."]
+    assert host_lines([("spheres", "seed 1", {})]) == []

@@ -54,6 +54,9 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     assert sched["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(sched["attempts"], 2))
     assert sched["summary"]["busy_core_s"] > 0
     assert "Schedule (`schedule.json`)" in md and "idle" in md
+    # all four runs ran on this host, named once
+    hosts = [line for line in md.splitlines() if line.startswith("Host: ")]
+    assert len(hosts) == 1 and hosts[0].count("seed") == 4
 
 
 def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):

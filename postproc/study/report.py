@@ -141,20 +141,46 @@ def comparison_table(summaries, reference):
     return rows
 
 
-def _cost_rows(runs):
-    rows = []
+def _run_infos(runs):
+    """[(sample, run label, its run.info.json as a dict)] of the runs that wrote one."""
+    out = []
     for s, rs in runs.items():
         for r in rs:
             info = r.get("info")
             if info and os.path.exists(info):
                 with open(info) as fh:
-                    d = json.load(fh)
-                eng = sum(d.get("engine_seconds", {}).values())
-                cs = d.get("contact_steps") or 0
-                rows.append((LABEL.get(s, s), r["label"], d.get("steps"), d.get("shear_start_step"),
-                             d.get("wall_seconds"), 1e6 * eng / cs if cs else np.nan,
-                             d.get("solid_fraction_isotropic")))
+                    out.append((s, r["label"], json.load(fh)))
+    return out
+
+
+def _cost_rows(infos):
+    rows = []
+    for s, label, d in infos:
+        eng = sum(d.get("engine_seconds", {}).values())
+        cs = d.get("contact_steps") or 0
+        rows.append((LABEL.get(s, s), label, d.get("steps"), d.get("shear_start_step"),
+                     d.get("wall_seconds"), 1e6 * eng / cs if cs else np.nan,
+                     d.get("solid_fraction_isotropic")))
     return rows
+
+
+def host_lines(infos):
+    """Lines naming the hosts the runs ran on (the ``host`` of each
+    run.info.json, :mod:`yade_scripts.host`), one per distinct host with
+    the runs it ran; [] when no run recorded one. A run repeats step for
+    step only on hosts whose CPUs make glibc's maths library pick the same
+    code (docs/scenes.md, "Preparation"), so this says which per-seed
+    numbers a rerun can match."""
+    hosts = {}
+    for s, label, d in infos:
+        h = d.get("host")
+        if not h:
+            continue
+        key = (h.get("cpu") or "unknown CPU", "/".join(h.get("cpu_flags") or []) or "no vector flags read",
+               h.get("libc") or "unknown libc", h.get("numpy") or "?")
+        hosts.setdefault(key, []).append(f"{LABEL.get(s, s)} {label}")
+    return [f"Host: {cpu}, {flags}, {libc}, numpy {npv} in YADE's Python ({', '.join(names)})."
+            for (cpu, flags, libc, npv), names in hosts.items()]
 
 
 def _schedule_lines(study):
@@ -422,12 +448,16 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
             if r.get("note"):
                 status += f" ({r['note']})"
             lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
-    cost = _cost_rows(runs)
+    infos = _run_infos(runs)
+    cost = _cost_rows(infos)
     if cost:
         lines += ["", "| sample | run | steps | of which compaction | wall time (s) | µs per contact-step | "
                   "solid fraction after compression |", "|---|---|---|---|---|---|---|"]
         lines += [f"| {a} | {b} | {c} | {cc} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
                   for a, b, c, cc, d, e, f in cost]
+    hosts = host_lines(infos)
+    if hosts:
+        lines += [""] + hosts
     lines += _schedule_lines(study)
     if problems:
         lines += ["", "**Problems** (the rest of the report is built without them):", ""]
