@@ -1,12 +1,15 @@
 """Where a run ran: the host facts that can change its numbers bit for bit.
 
-A run repeats step for step on one host and one set of installed packages,
-not across them (docs/scenes.md, "Preparation"): numpy and glibc's libm pick
-their vector code by CPU, and a packing's dynamics amplify a last-bit
-difference. The scene records these facts in ``run.info.json`` (``"host"``)
-so that two runs that differ can be told apart by their hosts.
+A run repeats step for step only on hosts whose CPUs make glibc's maths
+library pick the same code (docs/scenes.md, "Preparation": switching off
+glibc's AVX2/FMA code moved the isotropic state by 50 steps; numpy's vector
+dispatch, the kernel's thread count and the venv's numpy/scipy did not), and a
+packing's dynamics amplify a last-bit difference. The scene records these
+facts in ``run.info.json`` (``"host"``, read by the attempt that finished the
+run) so that two runs that differ can be told apart by their hosts.
 
-Standard library only (runs on YADE's Python and in the venv).
+Standard library, and numpy when it is there (runs on YADE's Python and in
+the venv).
 """
 from __future__ import annotations
 
