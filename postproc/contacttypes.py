@@ -57,13 +57,16 @@ class ShapeTables:
     float32 unit outward normals of the geometric faces that contain each
     vertex, padded with 0; edge_length (S, Vmax, Vmax) float32 length of
     the geometric edge between two vertices, 0 when they are not the ends
-    of an edge.
+    of an edge; vertex_face_size (S, Vmax, Dmax) float32 m, the diameter
+    (largest distance between two of its vertices) of each of those faces,
+    0 for padding.
     """
 
     vertices: np.ndarray
     pad: np.ndarray
     vertex_normals: np.ndarray
     edge_length: np.ndarray
+    vertex_face_size: np.ndarray
 
 
 def shape_tables(vertices, triangles, triangle_faces):
@@ -77,6 +80,7 @@ def shape_tables(vertices, triangles, triangle_faces):
     fmax = max(int(np.max(f)) + 1 for f in triangle_faces)
     V = np.full((S, vmax, 3), np.nan)
     N = np.zeros((S, fmax + 1, 3))
+    D = np.zeros((S, fmax + 1))
     A = np.zeros((S, vmax, vmax), bool)
     incident = []
     for s, (v, t, f) in enumerate(zip(vertices, triangles, triangle_faces)):
@@ -91,6 +95,10 @@ def shape_tables(vertices, triangles, triangle_faces):
         if np.any(norm == 0):
             raise InputError(f"shape {s}: a face has zero area")
         N[s, :len(nf)] = nf / norm[:, None]
+        member = np.zeros((len(nf), len(v)), bool)  # face diameters: the largest vertex distance in each face
+        member[np.repeat(f, 3), t.ravel()] = True
+        dist = np.linalg.norm(v[:, None] - v[None], axis=-1)
+        D[s, :len(nf)] = np.where(member[:, :, None] & member[:, None, :], dist, 0.0).max(axis=(1, 2))
         for a, b in ((0, 1), (1, 2), (2, 0)):       # edges between two different faces
             e1, e2 = t[:, a], t[:, b]
             A[s, e1, e2] = True
@@ -102,13 +110,16 @@ def shape_tables(vertices, triangles, triangle_faces):
         incident.append([sorted(set(f[(t == k).any(axis=1)].tolist())) for k in range(len(v))])
     dmax = max(len(x) for inc in incident for x in inc)
     VN = np.zeros((S, vmax, dmax, 3))
+    VD = np.zeros((S, vmax, dmax))
     for s, inc in enumerate(incident):
         for k, faces in enumerate(inc):
             VN[s, k, :len(faces)] = N[s, faces]
+            VD[s, k, :len(faces)] = D[s, faces]
     pad = np.where(np.isnan(V[:, :, 0]), -np.inf, 0.0).astype(np.float32)
     V = np.nan_to_num(V)
     EL = np.where(A, np.linalg.norm(V[:, :, None, :] - V[:, None, :, :], axis=-1), 0.0)
-    return ShapeTables(V.astype(np.float32), pad, VN.astype(np.float32), EL.astype(np.float32))
+    return ShapeTables(V.astype(np.float32), pad, VN.astype(np.float32), EL.astype(np.float32),
+                       VD.astype(np.float32))
 
 
 def _inner_edges(t, f):

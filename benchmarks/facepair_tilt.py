@@ -1,0 +1,207 @@
+"""Do face-face contacts vanish as the grains stiffen? The face-pair tilt
+against the overlap thickness, at kappa = 300, 1000, 3000 and 10 000.
+
+    python benchmarks/facepair_tilt.py [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
+        [--figure docs/figures/facepair-tilt.png]
+
+Runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on the default
+preset, 200 grains, seed 1, I = 5e-3, sheared to eps_1 = 0.15, the same
+grains and positions at every kappa; finished runs are not run again). On
+each shear snapshot with eps_1 >= --from-eps1, every polyhedron pair gets
+(:mod:`postproc.facetilt`) its face-pair tilt phi and rise
+min(L_A, L_B) sin(phi), its overlap's mean thickness h = V / area (dumped by
+the kernel), and its class under the overlap-based point count (``points``,
+alpha = 0.1) and LMGC90's common plane (``commonplane``, tau = 0.1).
+
+Writes OUT/facepair_tilt.csv.gz (one row per contact and snapshot),
+OUT/facepair_tilt.csv and .md (per kappa: contacts, the medians of h / d and
+of the band g + alpha h is measured against, the quartiles of phi, the
+fractions with phi below 1, 2, 5 and 10 deg, the triple share of each
+criterion, and the share of contacts whose rise is below h (the point
+count's scale) and below tau ref (the common plane's)), and the figure: (a)
+phi against h / d for every contact, coloured by kappa; (b) the
+distribution of phi per kappa; (c) the distribution of h / d per kappa.
+If phi's distribution does not move with kappa while h shrinks as 1/kappa,
+the face-face contacts of the grains do not vanish as they stiffen: only a
+count whose band is the overlap loses them.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+import numpy as np
+import pandas as pd
+
+from postproc.classify import Classifier
+from postproc.commonplane import DEFAULT_NEIGHBOR
+from postproc.contactpoints import DEFAULT_ALPHA
+from postproc.contactset import lookup
+from postproc.facetilt import face_pair_tilt
+from postproc.footprint import pair_size
+from postproc.pipeline import open_source
+from postproc.schema import DumpReader
+from postproc.strain import box_strains
+from yade_scripts.front import FACEPAIR_KAPPAS, run_front
+
+THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
+
+
+def contacts_of(dump, from_eps1):
+    """One row per polyhedron pair and shear snapshot with eps_1 >=
+    from_eps1: kappa, step, eps_1, phi (deg), tilt1/tilt2 (deg), rise / d,
+    h / d, the smaller contact face's diameter / d, tau ref / d, and the pair
+    type under each criterion; d the pair's size (the harmonic mean of the
+    two grains' d, the kernel's d_pair)."""
+    with DumpReader(dump) as r:
+        kappa = float(r.parameters["kappa"])
+    count, snaps, close, shapes = open_source(dump)
+    rows = []
+    try:
+        points = Classifier(shapes, "points")
+        plane = Classifier(shapes, "commonplane")
+        tables = points.tables
+        radius = np.sqrt((tables.vertices.astype(float) ** 2).sum(axis=2)).max(axis=1)   # centre to extreme vertex
+        ref_box = None
+        for snap in snaps:
+            if isinstance(snap, Exception):
+                raise SystemExit(f"{dump}: {snap}")
+            if snap.stage == "isotropic":
+                ref_box = snap.box_lengths
+            if snap.stage != "shear" or ref_box is None:
+                continue
+            eps1 = float(box_strains(snap.box_lengths, ref_box)["eps_1"][0])
+            if eps1 < from_eps1:
+                continue
+            lab_p = points.classify(snap, variants=False)
+            lab_c = plane.classify(snap, variants=False)
+            poly = lab_p.poly
+            i1, i2 = lookup(snap.id1[poly], snap.body_ids), lookup(snap.id2[poly], snap.body_ids)
+            s1, s2 = snap.shape_index[i1], snap.shape_index[i2]
+            ft = face_pair_tilt(tables, s1, snap.orientations[i1], s2, snap.orientations[i2], snap.normal[poly])
+            area = np.asarray(snap.footprint_area, float)[poly]
+            vol = np.asarray(snap.overlap, float)[poly]
+            h = np.where(area > 0, vol / np.where(area > 0, area, 1.0), np.nan)
+            d = pair_size(snap.sizes[i1], snap.sizes[i2])
+            rows.append(pd.DataFrame({
+                "kappa": kappa, "step": snap.step, "eps_1": eps1,
+                "phi_deg": np.degrees(ft.tilt), "tilt1_deg": np.degrees(ft.tilt1),
+                "tilt2_deg": np.degrees(ft.tilt2), "rise_d": ft.rise / d, "h_d": h / d,
+                "face_d": np.minimum(ft.size1, ft.size2) / d,
+                "band_cp_d": DEFAULT_NEIGHBOR * np.minimum(radius[s1], radius[s2]) / d,
+                "points": lab_p.labels[poly], "commonplane": lab_c.labels[poly]}))
+    finally:
+        close()
+    if not rows:
+        raise SystemExit(f"{dump}: no shear snapshot with eps_1 >= {from_eps1}")
+    return pd.concat(rows, ignore_index=True)
+
+
+def summary(df):
+    """Per kappa: the table's columns (see the module docstring)."""
+    out = []
+    for kappa, g in df.groupby("kappa"):
+        phi = g["phi_deg"].to_numpy()
+        row = {"kappa": kappa, "snapshots": g["step"].nunique(), "contacts": len(g),
+               "h_d_median": float(np.nanmedian(g["h_d"])),
+               "band_points_d_median": float(np.nanmedian((1 + DEFAULT_ALPHA) * g["h_d"])),
+               "band_cp_d_median": float(np.median(g["band_cp_d"])),
+               "phi_q25": float(np.percentile(phi, 25)), "phi_median": float(np.median(phi)),
+               "phi_q75": float(np.percentile(phi, 75))}
+        for t in THRESHOLDS_DEG:
+            row[f"phi_below_{t:g}"] = float(np.mean(phi < t))
+        row["triple_points"] = float(np.mean(g["points"] == "FF"))
+        row["triple_commonplane"] = float(np.mean(g["commonplane"] == "FF"))
+        row["rise_below_h"] = float(np.mean(g["rise_d"] < g["h_d"]))
+        row["rise_below_band_cp"] = float(np.mean(g["rise_d"] < g["band_cp_d"]))
+        out.append(row)
+    return pd.DataFrame(out)
+
+
+def markdown(tab):
+    lines = ["| κ | contacts | h/d median | φ quartiles (deg) | φ < 1° / 2° / 5° / 10° | "
+             "rise < h | rise < τ ref | triple, point count | triple, common plane |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for _, r in tab.iterrows():
+        below = " / ".join(f"{r[f'phi_below_{t:g}']:.2f}" for t in THRESHOLDS_DEG)
+        lines.append(f"| {r['kappa']:g} | {int(r['contacts'])} | {r['h_d_median']:.2e} | "
+                     f"{r['phi_q25']:.1f} / {r['phi_median']:.1f} / {r['phi_q75']:.1f} | {below} | "
+                     f"{r['rise_below_h']:.3f} | {r['rise_below_band_cp']:.2f} | {r['triple_points']:.3f} | "
+                     f"{r['triple_commonplane']:.2f} |")
+    return "\n".join(lines) + "\n"
+
+
+def figure(df, tab, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    kappas = sorted(df["kappa"].unique())
+    colours = plt.cm.viridis(np.linspace(0, 0.9, len(kappas)))
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
+    rng = np.random.default_rng(0)
+    for k, c in zip(kappas, colours):
+        g = df[df["kappa"] == k]
+        g = g.iloc[rng.permutation(len(g))[:4000]]
+        ax[0].scatter(g["h_d"], np.maximum(g["phi_deg"], 1e-3), s=2, color=c, alpha=0.35, lw=0,
+                      label=f"κ = {k:g}")
+    # the point count keeps a face flat while its rise stays within about
+    # (1 + alpha) h: phi = asin((1 + alpha) h / L) for the median face size
+    L = float(np.median(df["face_d"]))
+    hh = np.logspace(np.log10(np.nanpercentile(df["h_d"], 0.5)), np.log10(np.nanpercentile(df["h_d"], 99.5)), 50)
+    ax[0].plot(hh, np.degrees(np.arcsin(np.clip((1 + DEFAULT_ALPHA) * hh / L, 0, 1))), "k-",
+               label=f"rise = (1 + α) h, face {L:.2f} d")
+    cp = float(np.median(df["band_cp_d"]))
+    ax[0].axhline(np.degrees(np.arcsin(min(1.0, cp / L))), color="k", ls="--",
+                  label=f"rise = τ ref = {cp:.3f} d")
+    ax[0].set(xscale="log", yscale="log", xlabel="overlap thickness h / d (V / area)",
+              ylabel="face-pair tilt φ (deg)", title="(a) every contact, ε1 ≥ 0.1")
+    ax[0].set_ylim(1e-2, 100)
+    ax[0].legend(fontsize=7, markerscale=4, loc="lower right")
+    for k, c in zip(kappas, colours):
+        g = df[df["kappa"] == k]
+        phi = np.sort(g["phi_deg"].to_numpy())
+        ax[1].plot(np.maximum(phi, 1e-3), np.arange(1, len(phi) + 1) / len(phi), color=c, label=f"κ = {k:g}")
+        h = np.sort(g["h_d"].dropna().to_numpy())
+        ax[2].plot(h, np.arange(1, len(h) + 1) / len(h), color=c, label=f"κ = {k:g}")
+    ax[1].set(xscale="log", xlabel="face-pair tilt φ (deg)", ylabel="fraction of contacts below",
+              title="(b) φ does not follow κ")
+    ax[1].set_xlim(1e-2, 100)
+    ax[2].set(xscale="log", xlabel="overlap thickness h / d", ylabel="fraction of contacts below",
+              title="(c) h shrinks as κ grows")
+    for a in ax[1:]:
+        a.legend(fontsize=8)
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default="runs/facepair")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--from-eps1", type=float, default=0.1)
+    ap.add_argument("--figure", default=None, help="default OUT/facepair-tilt.png")
+    args = ap.parse_args()
+    status = run_front(args.out, "facepair", jobs=args.jobs, samples=("polyhedra",))
+    failed = [d for d, c in status["polyhedra"].items() if c != 0]
+    if failed:
+        raise SystemExit(f"facepair_tilt: failed runs: {', '.join(failed)}")
+    dumps = [os.path.join(args.out, "polyhedra", f"polyhedra-k{k:g}-s1.h5") for k in FACEPAIR_KAPPAS]
+    df = pd.concat([contacts_of(d, args.from_eps1) for d in dumps], ignore_index=True)
+    df.to_csv(os.path.join(args.out, "facepair_tilt.csv.gz"), index=False)
+    tab = summary(df)
+    tab.to_csv(os.path.join(args.out, "facepair_tilt.csv"), index=False)
+    md = markdown(tab)
+    with open(os.path.join(args.out, "facepair_tilt.md"), "w") as fh:
+        fh.write(md)
+    print(md)
+    figure(df, tab, args.figure or os.path.join(args.out, "facepair-tilt.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
