@@ -5,25 +5,30 @@ against the overlap thickness, at kappa = 300, 1000, 3000 and 10 000.
         [--figure docs/figures/facepair-tilt.png]
 
 Runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on the default
-preset, 200 grains, seed 1, I = 5e-3, sheared to eps_1 = 0.15, the same
-grains and positions at every kappa; finished runs are not run again). On
-each shear snapshot with eps_1 >= --from-eps1, every polyhedron pair gets
-(:mod:`postproc.facetilt`) its face-pair tilt phi and rise
-min(L_A, L_B) sin(phi), its overlap's mean thickness h = V / area (dumped by
-the kernel), and its class under the overlap-based point count (``points``,
-alpha = 0.1) and LMGC90's common plane (``commonplane``, tau = 0.1).
+preset, 200 grains, I = 5e-3, sheared to eps_1 = 0.15, seeds 1-3; a seed
+starts from the same grains and positions at every kappa; finished runs are
+not run again). On each shear snapshot with eps_1 >= --from-eps1, every
+polyhedron pair gets (:mod:`postproc.facetilt`) its face-pair tilt phi and
+rise min(L_A, L_B) sin(phi), its overlap's mean thickness h = V / area
+(dumped by the kernel), and its class under the overlap-based point count
+(``points``, alpha = 0.1) and LMGC90's common plane (``commonplane``,
+tau = 0.1).
 
 Writes OUT/facepair_tilt.csv.gz (one row per contact and snapshot),
-OUT/facepair_tilt.csv and .md (per kappa: contacts, the medians of h / d and
-of the band g + alpha h is measured against, the quartiles of phi, the
-fractions with phi below 1, 2, 5 and 10 deg, the triple share of each
-criterion, and the share of contacts whose rise is below h (the point
-count's scale) and below tau ref (the common plane's)), and the figure: (a)
-phi against h / d for every contact, coloured by kappa; (b) the
-distribution of phi per kappa; (c) the distribution of h / d per kappa.
-If phi's distribution does not move with kappa while h shrinks as 1/kappa,
-the face-face contacts of the grains do not vanish as they stiffen: only a
-count whose band is the overlap loses them.
+OUT/facepair_tilt.csv (per kappa and seed: contacts, the medians of h / d,
+of tau ref / d and of the smaller contact face's diameter, the quartiles
+and 15th percentile of phi (the face-face tolerance at which a tilt
+criterion gives the paper's triple share of 0.15), the fractions with phi
+below 1, 2, 5 and 10 deg, the triple share of each criterion, and the
+shares whose rise is below h (the point count's scale) and below tau ref
+(the common plane's)), OUT/facepair_tilt.md (per kappa, the main columns as
+mean [95 % Student's t interval] over seeds, and each kappa's paired
+difference from the stiffest), and the figure: (a) phi against h / d for
+every contact, coloured by kappa; (b) the distribution of phi per kappa;
+(c) the distribution of h / d per kappa.
+If phi's distribution does not lose its flush pairs as kappa grows while h
+shrinks, the face-face contacts of the grains do not vanish as they stiffen:
+only a count whose band is the overlap loses them.
 """
 from __future__ import annotations
 
@@ -42,20 +47,21 @@ from postproc.facetilt import face_pair_tilt
 from postproc.footprint import pair_size
 from postproc.pipeline import open_source
 from postproc.schema import DumpReader
+from postproc.statistics import plateau_estimate
 from postproc.strain import box_strains
-from yade_scripts.front import FACEPAIR_KAPPAS, run_front
+from yade_scripts.front import PLANS, run_front
 
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
 
 
 def contacts_of(dump, from_eps1):
     """One row per polyhedron pair and shear snapshot with eps_1 >=
-    from_eps1: kappa, step, eps_1, phi (deg), tilt1/tilt2 (deg), rise / d,
+    from_eps1: kappa, seed, step, eps_1, phi (deg), tilt1/tilt2 (deg), rise / d,
     h / d, the smaller contact face's diameter / d, tau ref / d, and the pair
     type under each criterion; d the pair's size (the harmonic mean of the
     two grains' d, the kernel's d_pair)."""
     with DumpReader(dump) as r:
-        kappa = float(r.parameters["kappa"])
+        kappa, seed = float(r.parameters["kappa"]), int(r.parameters["seed"])
     count, snaps, close, shapes = open_source(dump)
     rows = []
     try:
@@ -85,7 +91,7 @@ def contacts_of(dump, from_eps1):
             h = np.where(area > 0, vol / np.where(area > 0, area, 1.0), np.nan)
             d = pair_size(snap.sizes[i1], snap.sizes[i2])
             rows.append(pd.DataFrame({
-                "kappa": kappa, "step": snap.step, "eps_1": eps1,
+                "kappa": kappa, "seed": seed, "step": snap.step, "eps_1": eps1,
                 "phi_deg": np.degrees(ft.tilt), "tilt1_deg": np.degrees(ft.tilt1),
                 "tilt2_deg": np.degrees(ft.tilt2), "rise_d": ft.rise / d, "h_d": h / d,
                 "face_d": np.minimum(ft.size1, ft.size2) / d,
@@ -99,16 +105,19 @@ def contacts_of(dump, from_eps1):
 
 
 def summary(df):
-    """Per kappa: the table's columns (see the module docstring)."""
+    """Per kappa and seed: the table's columns (see the module docstring)."""
     out = []
-    for kappa, g in df.groupby("kappa"):
+    for (kappa, seed), g in df.groupby(["kappa", "seed"]):
         phi = g["phi_deg"].to_numpy()
-        row = {"kappa": kappa, "snapshots": g["step"].nunique(), "contacts": len(g),
+        row = {"kappa": kappa, "seed": seed, "snapshots": g["step"].nunique(), "contacts": len(g),
                "h_d_median": float(np.nanmedian(g["h_d"])),
-               "band_points_d_median": float(np.nanmedian((1 + DEFAULT_ALPHA) * g["h_d"])),
                "band_cp_d_median": float(np.median(g["band_cp_d"])),
+               "face_d_median": float(np.median(g["face_d"])),
                "phi_q25": float(np.percentile(phi, 25)), "phi_median": float(np.median(phi)),
-               "phi_q75": float(np.percentile(phi, 75))}
+               "phi_q75": float(np.percentile(phi, 75)),
+               # the tilt below which 15 % of the contacts lie: the face-face
+               # tolerance at which a tilt criterion gives the paper's triple share
+               "phi_q15": float(np.percentile(phi, 15))}
         for t in THRESHOLDS_DEG:
             row[f"phi_below_{t:g}"] = float(np.mean(phi < t))
         row["triple_points"] = float(np.mean(g["points"] == "FF"))
@@ -119,16 +128,57 @@ def summary(df):
     return pd.DataFrame(out)
 
 
+COLUMNS = {  # column: (heading, digits)
+    "h_d_median": ("h/d, median", None), "phi_median": ("φ median (deg)", 1),
+    "phi_q15": ("φ of the lowest 15 % (deg)", 1), "phi_below_2": ("φ < 2°", 3),
+    "phi_below_5": ("φ < 5°", 3), "rise_below_h": ("rise < h", 4),
+    "rise_below_band_cp": ("rise < τ ref", 3), "triple_points": ("triple, point count", 3),
+    "triple_commonplane": ("triple, common plane", 3)}
+
+
+def _est(values):
+    """Mean over seeds with its 95 % Student's t interval (one value per seed)."""
+    return plateau_estimate([[v] for v in values])
+
+
+def _cell(e, digits):
+    if digits is None:
+        lo, hi = e.ci()
+        return f"{e.mean:.2e} [{lo:.2e}, {hi:.2e}]" if np.isfinite(lo) else f"{e.mean:.2e}"
+    return e.text(digits)
+
+
+def over_seeds(tab):
+    """Per kappa, every column of COLUMNS as mean [95 % interval] over seeds,
+    and the paired difference (same seed) of each kappa from the stiffest."""
+    stiff = tab[tab["kappa"] == tab["kappa"].max()].set_index("seed")
+    rows = []
+    for kappa, g in tab.groupby("kappa"):
+        g = g.set_index("seed")
+        row = {"kappa": kappa, "seeds": len(g), "contacts": int(g["contacts"].sum())}
+        for c in COLUMNS:
+            row[c] = _est(g[c].to_numpy())
+            common = g.index.intersection(stiff.index)
+            row[f"{c}_minus_stiffest"] = _est((g.loc[common, c] - stiff.loc[common, c]).to_numpy())
+        rows.append(row)
+    return rows
+
+
 def markdown(tab):
-    lines = ["| κ | contacts | h/d median | φ quartiles (deg) | φ < 1° / 2° / 5° / 10° | "
-             "rise < h | rise < τ ref | triple, point count | triple, common plane |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    for _, r in tab.iterrows():
-        below = " / ".join(f"{r[f'phi_below_{t:g}']:.2f}" for t in THRESHOLDS_DEG)
-        lines.append(f"| {r['kappa']:g} | {int(r['contacts'])} | {r['h_d_median']:.2e} | "
-                     f"{r['phi_q25']:.1f} / {r['phi_median']:.1f} / {r['phi_q75']:.1f} | {below} | "
-                     f"{r['rise_below_h']:.3f} | {r['rise_below_band_cp']:.2f} | {r['triple_points']:.3f} | "
-                     f"{r['triple_commonplane']:.2f} |")
+    rows = over_seeds(tab)
+    stiffest = max(r["kappa"] for r in rows)
+    head = "| κ | seeds | contacts | " + " | ".join(h for h, _ in COLUMNS.values()) + " |"
+    lines = [head, "|" + "---|" * (3 + len(COLUMNS))]
+    for r in rows:
+        lines.append(f"| {r['kappa']:g} | {r['seeds']} | {r['contacts']} | "
+                     + " | ".join(_cell(r[c], d) for c, (_, d) in COLUMNS.items()) + " |")
+    lines += ["", f"Paired by seed, each κ minus κ = {stiffest:g} (mean [95 % interval]):", "",
+              "| κ | " + " | ".join(h for h, _ in COLUMNS.values()) + " |", "|" + "---|" * (1 + len(COLUMNS))]
+    for r in rows:
+        if r["kappa"] != stiffest:
+            lines.append(f"| {r['kappa']:g} | "
+                         + " | ".join(_cell(r[f"{c}_minus_stiffest"], d) for c, (_, d) in COLUMNS.items())
+                         + " |")
     return "\n".join(lines) + "\n"
 
 
@@ -156,7 +206,7 @@ def figure(df, tab, path):
     ax[0].axhline(np.degrees(np.arcsin(min(1.0, cp / L))), color="k", ls="--",
                   label=f"rise = τ ref = {cp:.3f} d")
     ax[0].set(xscale="log", yscale="log", xlabel="overlap thickness h / d (V / area)",
-              ylabel="face-pair tilt φ (deg)", title="(a) every contact, ε1 ≥ 0.1")
+              ylabel="face-pair tilt φ (deg)", title="(a) contacts at ε1 ≥ 0.1 (up to 4000 per κ)")
     ax[0].set_ylim(1e-2, 100)
     ax[0].legend(fontsize=7, markerscale=4, loc="lower right")
     for k, c in zip(kappas, colours):
@@ -165,11 +215,13 @@ def figure(df, tab, path):
         ax[1].plot(np.maximum(phi, 1e-3), np.arange(1, len(phi) + 1) / len(phi), color=c, label=f"κ = {k:g}")
         h = np.sort(g["h_d"].dropna().to_numpy())
         ax[2].plot(h, np.arange(1, len(h) + 1) / len(h), color=c, label=f"κ = {k:g}")
+    ax[1].axhline(0.15, color="k", ls=":", lw=1, label="the paper's triple share, 0.15")
     ax[1].set(xscale="log", xlabel="face-pair tilt φ (deg)", ylabel="fraction of contacts below",
-              title="(b) φ does not follow κ")
+              title="(b) the face-pair tilt per κ")
     ax[1].set_xlim(1e-2, 100)
+    ax[2].axvline(cp, color="k", ls="--", lw=1, label=f"τ ref = {cp:.3f} d")
     ax[2].set(xscale="log", xlabel="overlap thickness h / d", ylabel="fraction of contacts below",
-              title="(c) h shrinks as κ grows")
+              title="(c) the overlap thickness per κ")
     for a in ax[1:]:
         a.legend(fontsize=8)
         a.grid(alpha=0.3)
@@ -190,7 +242,7 @@ def main():
     failed = [d for d, c in status["polyhedra"].items() if c != 0]
     if failed:
         raise SystemExit(f"facepair_tilt: failed runs: {', '.join(failed)}")
-    dumps = [os.path.join(args.out, "polyhedra", f"polyhedra-k{k:g}-s1.h5") for k in FACEPAIR_KAPPAS]
+    dumps = [os.path.join(args.out, "polyhedra", f"polyhedra-{desc}.h5") for desc, _ in PLANS["facepair"]["polyhedra"]]
     df = pd.concat([contacts_of(d, args.from_eps1) for d in dumps], ignore_index=True)
     df.to_csv(os.path.join(args.out, "facepair_tilt.csv.gz"), index=False)
     tab = summary(df)

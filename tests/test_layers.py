@@ -14,7 +14,7 @@ LAYERS = [
     ("base", {"errors", "schema", "axes", "statistics", "periodic"}),
     ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
-                 "contactpoints", "commonplane", "footprint", "classify", "pertype", "slab"}),
+                 "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.report", "study.front", "study.dilatancy", "study.branchlength"}),
     ("interface", {"many", "cli"}),

@@ -117,13 +117,16 @@ PLANS["default"] = {
     "spheres": _grid(DEFAULT_FRONT_POINTS["spheres"], (1, 2, 3), 1000),
 }
 # The face-pair tilt against the overlap thickness
-# (benchmarks/facepair_tilt.py): S1 on the default preset at 200 grains, seed 1,
+# (benchmarks/facepair_tilt.py): S1 on the default preset at 200 grains,
 # kappa 10 000, 3000, 1000 and 300 at the default I (longest first), sheared to
-# eps_1 = 0.15; the same grains and positions at every kappa.
+# eps_1 = 0.15, 3 seeds, seed-major; the same seed starts from the same grains
+# and positions at every kappa.
 FACEPAIR_KAPPAS = (10000.0, 3000.0, 1000.0, 300.0)
+FACEPAIR_SEEDS = (1, 2, 3)
 PLANS["facepair"] = {
     "preset": "default", "common": {"n_particles": 200, "final_strain": 0.15},
-    "polyhedra": [(f"k{k:g}-s1", {"kappa": k, "seed": 1}) for k in FACEPAIR_KAPPAS],
+    "polyhedra": [(f"k{k:g}-s{seed}", {"kappa": k, "seed": seed})
+                  for seed in FACEPAIR_SEEDS for k in FACEPAIR_KAPPAS],
     "spheres": [],
 }
 LOW_DETAIL = {"v_min": 8, "v_max": 12}
