@@ -23,9 +23,12 @@ below 1, 2, 5 and 10 deg, the triple share of each criterion, and the
 shares whose rise is below h (the point count's scale) and below tau ref
 (the common plane's)), OUT/facepair_tilt.md (per kappa, the main columns as
 mean [95 % Student's t interval] over seeds, and each kappa's paired
-difference from the stiffest), and the figure: (a) phi against h / d for
+difference from the stiffest; a last row gives the tilt of random contacts
+between the same grains, the geometric chance), and the figure: (a) phi against h / d for
 every contact, coloured by kappa; (b) the distribution of phi per kappa;
-(c) the distribution of h / d per kappa.
+(c) the distribution of h / d per kappa; (d) for the tilt criterion
+"face-face when phi < theta", its face-face share against its move at
+theta / 2 and 2 theta, per kappa.
 If phi's distribution does not lose its flush pairs as kappa grows while h
 shrinks, the face-face contacts of the grains do not vanish as they stiffen:
 only a count whose band is the overlap loses them.
@@ -52,6 +55,23 @@ from postproc.strain import box_strains
 from yade_scripts.front import PLANS, run_front
 
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
+STABILITY = 0.03                                   # the largest move allowed at half and twice a tolerance
+TOLERANCES_DEG = np.logspace(-1, 1.5, 126)         # 0.1 to 31.6 deg
+
+
+def tolerance_moves(phi, tolerances=TOLERANCES_DEG):
+    """A tilt criterion "face-face when phi < theta": per tolerance theta
+    (deg), the share F(theta) it calls face-face and its move, the larger of
+    F(2 theta) - F(theta) and F(theta) - F(theta / 2) (the stability test of
+    the contact types, which asks for <= 0.03). phi (n,) deg."""
+    phi = np.sort(np.asarray(phi, float))
+
+    def share(t):
+        return np.searchsorted(phi, t, side="left") / len(phi)
+
+    F = share(tolerances)
+    move = np.maximum(share(2 * tolerances) - F, F - share(tolerances / 2))
+    return F, move
 
 
 def contacts_of(dump, from_eps1):
@@ -104,6 +124,23 @@ def contacts_of(dump, from_eps1):
     return pd.concat(rows, ignore_index=True)
 
 
+def random_tilts(dump, n=20000, seed=0):
+    """(n,) deg, the face-pair tilt of random contacts between the dump's
+    grains: shapes drawn uniformly, orientations uniform (normalised
+    Gaussian quaternions), normals uniform on the sphere. The geometric
+    chance of a flush pair, against which the packing's selection shows."""
+    count, snaps, close, shapes = open_source(dump)
+    close()
+    tables = Classifier(shapes, "points").tables
+    rng = np.random.default_rng(seed)
+    S = len(tables.vertices)
+    normal = rng.normal(size=(n, 3))
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    ft = face_pair_tilt(tables, rng.integers(0, S, n), rng.normal(size=(n, 4)), rng.integers(0, S, n),
+                        rng.normal(size=(n, 4)), normal)
+    return np.degrees(ft.tilt)
+
+
 def summary(df):
     """Per kappa and seed: the table's columns (see the module docstring)."""
     out = []
@@ -120,6 +157,13 @@ def summary(df):
                "phi_q15": float(np.percentile(phi, 15))}
         for t in THRESHOLDS_DEG:
             row[f"phi_below_{t:g}"] = float(np.mean(phi < t))
+        F, move = tolerance_moves(phi)
+        ok = move <= STABILITY
+        # the largest face-face share a stable tilt criterion gives, and the
+        # move of the one that gives the paper's 0.15
+        row["stable_share_max"] = float(F[ok].max()) if ok.any() else 0.0
+        _, m15 = tolerance_moves(phi, np.array([row["phi_q15"]]))
+        row["move_at_015"] = float(m15[0])
         row["triple_points"] = float(np.mean(g["points"] == "FF"))
         row["triple_commonplane"] = float(np.mean(g["commonplane"] == "FF"))
         row["rise_below_h"] = float(np.mean(g["rise_d"] < g["h_d"]))
@@ -131,7 +175,8 @@ def summary(df):
 COLUMNS = {  # column: (heading, digits)
     "h_d_median": ("h/d, median", None), "phi_median": ("φ median (deg)", 1),
     "phi_q15": ("φ of the lowest 15 % (deg)", 1), "phi_below_2": ("φ < 2°", 3),
-    "phi_below_5": ("φ < 5°", 3), "rise_below_h": ("rise < h", 4),
+    "phi_below_5": ("φ < 5°", 3), "move_at_015": ("move of φ < θ at share 0.15", 3),
+    "stable_share_max": ("largest share with move ≤ 0.03", 3), "rise_below_h": ("rise < h", 4),
     "rise_below_band_cp": ("rise < τ ref", 3), "triple_points": ("triple, point count", 3),
     "triple_commonplane": ("triple, common plane", 3)}
 
@@ -164,7 +209,7 @@ def over_seeds(tab):
     return rows
 
 
-def markdown(tab):
+def markdown(tab, random_phi=None):
     rows = over_seeds(tab)
     stiffest = max(r["kappa"] for r in rows)
     head = "| κ | seeds | contacts | " + " | ".join(h for h, _ in COLUMNS.values()) + " |"
@@ -172,6 +217,11 @@ def markdown(tab):
     for r in rows:
         lines.append(f"| {r['kappa']:g} | {r['seeds']} | {r['contacts']} | "
                      + " | ".join(_cell(r[c], d) for c, (_, d) in COLUMNS.items()) + " |")
+    if random_phi is not None:
+        cells = {"phi_median": f"{np.median(random_phi):.1f}", "phi_q15": f"{np.percentile(random_phi, 15):.1f}",
+                 "phi_below_2": f"{np.mean(random_phi < 2):.4f}", "phi_below_5": f"{np.mean(random_phi < 5):.4f}"}
+        lines.append(f"| random orientations | | {len(random_phi)} | "
+                     + " | ".join(cells.get(c, "") for c in COLUMNS) + " |")
     lines += ["", f"Paired by seed, each κ minus κ = {stiffest:g} (mean [95 % interval]):", "",
               "| κ | " + " | ".join(h for h, _ in COLUMNS.values()) + " |", "|" + "---|" * (1 + len(COLUMNS))]
     for r in rows:
@@ -182,14 +232,15 @@ def markdown(tab):
     return "\n".join(lines) + "\n"
 
 
-def figure(df, tab, path):
+def figure(df, tab, path, random_phi=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     kappas = sorted(df["kappa"].unique())
     colours = plt.cm.viridis(np.linspace(0, 0.9, len(kappas)))
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, ax = plt.subplots(2, 2, figsize=(12, 9.5))
+    ax = ax.ravel()
     rng = np.random.default_rng(0)
     for k, c in zip(kappas, colours):
         g = df[df["kappa"] == k]
@@ -215,6 +266,10 @@ def figure(df, tab, path):
         ax[1].plot(np.maximum(phi, 1e-3), np.arange(1, len(phi) + 1) / len(phi), color=c, label=f"κ = {k:g}")
         h = np.sort(g["h_d"].dropna().to_numpy())
         ax[2].plot(h, np.arange(1, len(h) + 1) / len(h), color=c, label=f"κ = {k:g}")
+    if random_phi is not None:
+        r = np.sort(random_phi)
+        ax[1].plot(np.maximum(r, 1e-3), np.arange(1, len(r) + 1) / len(r), color="0.5", ls="--",
+                   label="random orientations")
     ax[1].axhline(0.15, color="k", ls=":", lw=1, label="the paper's triple share, 0.15")
     ax[1].set(xscale="log", xlabel="face-pair tilt φ (deg)", ylabel="fraction of contacts below",
               title="(b) the face-pair tilt per κ")
@@ -222,6 +277,13 @@ def figure(df, tab, path):
     ax[2].axvline(cp, color="k", ls="--", lw=1, label=f"τ ref = {cp:.3f} d")
     ax[2].set(xscale="log", xlabel="overlap thickness h / d", ylabel="fraction of contacts below",
               title="(c) the overlap thickness per κ")
+    for k, c in zip(kappas, colours):
+        F, move = tolerance_moves(df.loc[df["kappa"] == k, "phi_deg"])
+        ax[3].plot(F, move, color=c, label=f"κ = {k:g}")
+    ax[3].axhline(STABILITY, color="k", ls="--", lw=1, label=f"stability target {STABILITY}")
+    ax[3].axvline(0.15, color="k", ls=":", lw=1, label="the paper's triple share, 0.15")
+    ax[3].set(xlabel="face-face share of the criterion φ < θ", ylabel="its move at θ/2 and 2θ",
+              title="(d) a tilt tolerance against its stability", xlim=(0, 0.6), ylim=(0, 0.4))
     for a in ax[1:]:
         a.legend(fontsize=8)
         a.grid(alpha=0.3)
@@ -247,11 +309,12 @@ def main():
     df.to_csv(os.path.join(args.out, "facepair_tilt.csv.gz"), index=False)
     tab = summary(df)
     tab.to_csv(os.path.join(args.out, "facepair_tilt.csv"), index=False)
-    md = markdown(tab)
+    random_phi = random_tilts(dumps[0])
+    md = markdown(tab, random_phi)
     with open(os.path.join(args.out, "facepair_tilt.md"), "w") as fh:
         fh.write(md)
     print(md)
-    figure(df, tab, args.figure or os.path.join(args.out, "facepair-tilt.png"))
+    figure(df, tab, args.figure or os.path.join(args.out, "facepair-tilt.png"), random_phi)
     return 0
 
 
