@@ -46,7 +46,7 @@ from postproc.classify import Classifier
 from postproc.commonplane import DEFAULT_NEIGHBOR
 from postproc.contactpoints import DEFAULT_ALPHA
 from postproc.contactset import lookup
-from postproc.facetilt import face_pair_tilt
+from postproc.facetilt import face_pair_tilt, tolerance_moves
 from postproc.footprint import pair_size
 from postproc.pipeline import open_source
 from postproc.schema import DumpReader
@@ -57,21 +57,6 @@ from yade_scripts.front import PLANS, run_front
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
 STABILITY = 0.03                                   # the largest move allowed at half and twice a tolerance
 TOLERANCES_DEG = np.logspace(-1, 1.5, 126)         # 0.1 to 31.6 deg
-
-
-def tolerance_moves(phi, tolerances=TOLERANCES_DEG):
-    """A tilt criterion "face-face when phi < theta": per tolerance theta
-    (deg), the share F(theta) it calls face-face and its move, the larger of
-    F(2 theta) - F(theta) and F(theta) - F(theta / 2) (the stability test of
-    the contact types, which asks for <= 0.03). phi (n,) deg."""
-    phi = np.sort(np.asarray(phi, float))
-
-    def share(t):
-        return np.searchsorted(phi, t, side="left") / len(phi)
-
-    F = share(tolerances)
-    move = np.maximum(share(2 * tolerances) - F, F - share(tolerances / 2))
-    return F, move
 
 
 def contacts_of(dump, from_eps1):
@@ -157,7 +142,7 @@ def summary(df):
                "phi_q15": float(np.percentile(phi, 15))}
         for t in THRESHOLDS_DEG:
             row[f"phi_below_{t:g}"] = float(np.mean(phi < t))
-        F, move = tolerance_moves(phi)
+        F, move = tolerance_moves(phi, TOLERANCES_DEG)
         ok = move <= STABILITY
         # the largest face-face share a stable tilt criterion gives, and the
         # move of the one that gives the paper's 0.15
@@ -278,7 +263,7 @@ def figure(df, tab, path, random_phi=None):
     ax[2].set(xscale="log", xlabel="overlap thickness h / d", ylabel="fraction of contacts below",
               title="(c) the overlap thickness per κ")
     for k, c in zip(kappas, colours):
-        F, move = tolerance_moves(df.loc[df["kappa"] == k, "phi_deg"])
+        F, move = tolerance_moves(df.loc[df["kappa"] == k, "phi_deg"], TOLERANCES_DEG)
         ax[3].plot(F, move, color=c, label=f"κ = {k:g}")
     ax[3].axhline(STABILITY, color="k", ls="--", lw=1, label=f"stability target {STABILITY}")
     ax[3].axvline(0.15, color="k", ls=":", lw=1, label="the paper's triple share, 0.15")

@@ -133,3 +133,27 @@ def face_pair_tilt(tables, shape1, quat1, shape2, quat2, normal):
         out["size1"][sl], out["size2"][sl] = l1, l2
     rise = np.minimum(out["size1"], out["size2"]) * np.sin(np.minimum(out["tilt"], np.pi / 2))
     return FaceTilt(rise=rise, **out)
+
+
+def tolerance_moves(tilt, tolerances):
+    """The stability of a tilt criterion "face-face when phi < theta".
+
+    tilt (n,) face-pair tilts; tolerances (k,) theta, in the same unit
+    (rad or deg). Returns (share (k,), move (k,)): the share F(theta) of
+    contacts the criterion calls face-face, and its move, the larger of
+    F(2 theta) - F(theta) and F(theta) - F(theta / 2): the stability test of
+    the contact types at half and twice the tolerance (target <= 0.03).
+    For tilts log-uniform on [a, b] the move is log 2 / log(b / a) wherever
+    theta / 2 and 2 theta lie in [a, b]: a criterion is stable only where the
+    tilts leave a gap.
+    """
+    phi = np.sort(np.asarray(tilt, float))
+    if phi.ndim != 1 or len(phi) == 0 or not np.all(np.isfinite(phi)):
+        raise InputError("tolerance_moves: the tilts must be a non-empty 1-d array of finite values")
+    t = np.asarray(tolerances, float)
+
+    def share(x):
+        return np.searchsorted(phi, x, side="left") / len(phi)
+
+    F = share(t)
+    return F, np.maximum(share(2 * t) - F, F - share(t / 2))

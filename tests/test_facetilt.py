@@ -161,3 +161,26 @@ def test_bad_input_is_one_line(cube_tables):
         face_pair_tilt(cube_tables, [0], q, [0], q, np.array([[0.0, 0, np.nan]]))
     with pytest.raises(InputError, match="same 1 contacts"):
         face_pair_tilt(cube_tables, [0], q, [0, 0], q, n)
+
+
+def test_tolerance_moves_log_uniform_and_gap():
+    """Tilts log-uniform on [a, b] (n points at exact quantiles): F(theta) =
+    log(theta / a) / log(b / a), so the move is log 2 / log(b / a) for theta
+    in [2a, b/2], to the 1/n of the empirical distribution. With a gap (half
+    the tilts at 1e-6, half in [10, 20] deg) a tolerance of 0.1 deg is
+    exactly stable (share 0.5, move 0)."""
+    from postproc.facetilt import tolerance_moves
+
+    a, b, n = 0.1, 100.0, 100_000
+    phi = a * (b / a) ** ((np.arange(n) + 0.5) / n)
+    theta = np.array([0.2, 1.0, 7.0, 50.0])
+    F, move = tolerance_moves(phi, theta)
+    assert F == pytest.approx(np.log(theta / a) / np.log(b / a), abs=1.0 / n)
+    assert move == pytest.approx(np.log(2) / np.log(b / a), abs=2.0 / n)
+    gap = np.concatenate([np.full(500, 1e-6), np.linspace(10, 20, 500)])
+    F, move = tolerance_moves(gap, [0.1])
+    assert F[0] == 0.5 and move[0] == 0.0
+    with pytest.raises(InputError, match="non-empty"):
+        tolerance_moves([], [1.0])
+    with pytest.raises(InputError, match="finite"):
+        tolerance_moves([1.0, np.nan], [1.0])
