@@ -26,8 +26,9 @@ unit normal n from A to B (global frame):
 * the *rise* (m): min(L_A, L_B) sin(phi), with L the faces' diameters (the
   largest distance between two of a face's vertices): how far the smaller
   face's far end stands off the other face's plane when one of its ends
-  touches it (sin(min(phi, pi/2)), so the rise grows with phi). A count whose band is b calls the pair face-face roughly when
-  the rise is below b: b = g + alpha h for the overlap-based point count
+  touches it (sin(min(phi, pi/2)), so the rise grows with phi). A count
+  whose band is b calls the pair face-face roughly when the rise is below
+  b: b = g + alpha h for the overlap-based point count
   (h = V / area, the overlap's mean thickness; g the penetration), b =
   tau ref for LMGC90's common plane (ref the centre-to-extreme-vertex
   distance, tau = 0.1).
@@ -42,6 +43,7 @@ import numpy as np
 
 from shapes.overlap import rotation_matrices
 
+from .contacttypes import first_degenerate_normal
 from .errors import InputError
 
 _BLOCK = 1 << 12
@@ -118,11 +120,10 @@ def face_pair_tilt(tables, shape1, quat1, shape2, quat2, normal):
         if bad.any():
             raise InputError(f"face_pair_tilt: contact {int(np.flatnonzero(bad)[0])} has a zero or "
                              "non-finite orientation")
-    nn = np.linalg.norm(n, axis=1)
-    bad = ~(np.abs(nn - 1) < 1e-6)
-    if bad.any():
-        raise InputError(f"face_pair_tilt: contact {int(np.flatnonzero(bad)[0])} has a normal of length "
-                         f"{float(nn[bad][0])!r}, not a unit vector")
+    k = first_degenerate_normal(n)
+    if k >= 0:
+        raise InputError(f"face_pair_tilt: contact {k} has a normal of length "
+                         f"{float(np.linalg.norm(n[k]))!r}, not a unit vector")
     out = {k: np.empty(C) for k in ("tilt", "tilt1", "tilt2", "size1", "size2")}
     for s0 in range(0, C, _BLOCK):
         sl = slice(s0, min(s0 + _BLOCK, C))
