@@ -91,23 +91,32 @@ def _brute(vertices, triangles, faces, R1, R2, s1, s2, n):
     return np.array(out)
 
 
+def _library(n, seed):
+    """(vertices, triangles, faces) lists of n generated ballast grains."""
+    from shapes.generate import generate_library
+
+    shapes, _ = generate_library(n, seed=seed)
+    return ([np.asarray(s.vertices, float) for s in shapes], [np.asarray(s.triangles, np.int64) for s in shapes],
+            [np.asarray(s.triangle_face, np.int64) for s in shapes])
+
+
+def _random_contacts(n_shapes, C, seed):
+    """Shape rows, orientations (uniform) and unit normals (uniform) of C
+    random contacts."""
+    rng = np.random.default_rng(seed)
+    n = rng.normal(size=(C, 3))
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    return (rng.integers(0, n_shapes, C), rng.normal(size=(C, 4)), rng.integers(0, n_shapes, C),
+            rng.normal(size=(C, 4)), n)
+
+
 def test_library_grains_against_brute_force():
     """Random orientations and normals on generated ballast grains: the
     tilt and both face diameters equal the brute-force ones. arccos there
     loses precision near 0 (float64: ~1e-8 rad), far below the tolerance."""
-    from shapes.generate import generate_library
-
-    shapes, _ = generate_library(8, seed=3)
-    vertices = [np.asarray(s.vertices, float) for s in shapes]
-    triangles = [np.asarray(s.triangles, np.int64) for s in shapes]
-    faces = [np.asarray(s.triangle_face, np.int64) for s in shapes]
+    vertices, triangles, faces = _library(8, seed=3)
     tables = shape_tables(vertices, triangles, faces)
-    rng = np.random.default_rng(11)
-    C = 300
-    s1, s2 = rng.integers(0, 8, C), rng.integers(0, 8, C)
-    q1, q2 = rng.normal(size=(C, 4)), rng.normal(size=(C, 4))
-    n = rng.normal(size=(C, 3))
-    n /= np.linalg.norm(n, axis=1)[:, None]
+    s1, q1, s2, q2, n = _random_contacts(8, 300, seed=11)
     r = face_pair_tilt(tables, s1, q1, s2, q2, n)
     ref = _brute(vertices, triangles, faces, rotation_matrices(q1), rotation_matrices(q2), s1, s2, n)
     assert np.max(np.abs(r.tilt - ref[:, 0])) < ANGLE_TOL
@@ -119,17 +128,8 @@ def test_library_grains_against_brute_force():
 def test_rotation_and_swap_invariance():
     """A common rotation of both bodies and the normal changes nothing;
     swapping the sides (n -> -n) swaps tilt1/tilt2 and size1/size2."""
-    from shapes.generate import generate_library
-
-    shapes, _ = generate_library(6, seed=4)
-    tables = shape_tables([s.vertices for s in shapes], [s.triangles for s in shapes],
-                          [s.triangle_face for s in shapes])
-    rng = np.random.default_rng(2)
-    C = 200
-    s1, s2 = rng.integers(0, 6, C), rng.integers(0, 6, C)
-    q1, q2 = rng.normal(size=(C, 4)), rng.normal(size=(C, 4))
-    n = rng.normal(size=(C, 3))
-    n /= np.linalg.norm(n, axis=1)[:, None]
+    tables = shape_tables(*_library(6, seed=4))
+    s1, q1, s2, q2, n = _random_contacts(6, 200, seed=2)
     r = face_pair_tilt(tables, s1, q1, s2, q2, n)
     G = rot([0.3, -1.0, 0.7], 71.0)
     qg = quat_from_matrix(G)
