@@ -23,12 +23,11 @@ import numpy as np
 import pandas as pd
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from contact_types_kappa import GROUPS, proportions as type_proportions  # noqa: E402
+from contact_types_kappa import GROUPS, proportions as type_proportions, shear_snapshots  # noqa: E402
 from postproc.analysis import analyze_snapshot  # noqa: E402
 from postproc.classify import Classifier  # noqa: E402
 from postproc.commonplane import REFERENCES  # noqa: E402
 from postproc.pipeline import open_source  # noqa: E402
-from postproc.strain import box_strains  # noqa: E402
 
 
 def by_reference(dump, tau, from_eps1, every):
@@ -39,15 +38,8 @@ def by_reference(dump, tau, from_eps1, every):
     try:
         clfs = {r: Classifier(shapes, "commonplane", tolerance=tau, reference=r) for r in REFERENCES}
         rows = {r: [] for r in REFERENCES}
-        ref_box, k = None, 0
-        for snap in snaps:
-            if isinstance(snap, Exception):
-                raise SystemExit(f"{dump}: {snap}")
-            if snap.stage == "isotropic":
-                ref_box = snap.box_lengths          # zero strain: the last isotropic state
-            if snap.stage != "shear" or ref_box is None or \
-                    float(box_strains(snap.box_lengths, ref_box)["eps_1"][0]) < from_eps1:
-                continue
+        k = 0
+        for snap, _ in shear_snapshots(dump, snaps, from_eps1):
             k += 1
             if (k - 1) % every:
                 continue

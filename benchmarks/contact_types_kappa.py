@@ -30,8 +30,28 @@ import pandas as pd
 from postproc.pipeline import AnalysisOptions, analyze_path
 from postproc.schema import DumpReader
 from postproc.statistics import plateau_estimate
+from postproc.strain import box_strains
 
 GROUPS = ("simple", "double", "triple")
+
+
+def shear_snapshots(dump, snaps, from_eps1):
+    """(snapshot, eps_1) for each shear snapshot of ``snaps`` (an
+    :func:`postproc.pipeline.open_source` iterator of ``dump``) with eps_1
+    >= from_eps1, eps_1 measured from the last isotropic snapshot (zero
+    strain); a snapshot that could not be read ends the benchmark with its
+    one-line error."""
+    ref_box = None
+    for snap in snaps:
+        if isinstance(snap, Exception):
+            raise SystemExit(f"{dump}: {snap}")
+        if snap.stage == "isotropic":
+            ref_box = snap.box_lengths
+        if snap.stage != "shear" or ref_box is None:
+            continue
+        eps1 = float(box_strains(snap.box_lengths, ref_box)["eps_1"][0])
+        if eps1 >= from_eps1:
+            yield snap, eps1
 
 
 def one(dump, out, types, from_eps1):

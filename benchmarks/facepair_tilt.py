@@ -46,13 +46,16 @@ from postproc.classify import Classifier
 from postproc.commonplane import DEFAULT_NEIGHBOR
 from postproc.contactpoints import DEFAULT_ALPHA
 from postproc.contactset import lookup
+from postproc.contacttypes import shape_tables
 from postproc.facetilt import face_pair_tilt, tolerance_moves
 from postproc.footprint import pair_size
 from postproc.pipeline import open_source
 from postproc.schema import DumpReader
 from postproc.statistics import plateau_estimate
-from postproc.strain import box_strains
 from yade_scripts.front import PLANS, run_front
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from contact_types_kappa import shear_snapshots  # noqa: E402
 
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
 STABILITY = 0.03                                   # the largest move allowed at half and twice a tolerance
@@ -73,18 +76,8 @@ def contacts_of(dump, from_eps1):
         points = Classifier(shapes, "points")
         plane = Classifier(shapes, "commonplane")
         tables = points.tables
-        radius = np.sqrt((tables.vertices.astype(float) ** 2).sum(axis=2)).max(axis=1)   # centre to extreme vertex
-        ref_box = None
-        for snap in snaps:
-            if isinstance(snap, Exception):
-                raise SystemExit(f"{dump}: {snap}")
-            if snap.stage == "isotropic":
-                ref_box = snap.box_lengths
-            if snap.stage != "shear" or ref_box is None:
-                continue
-            eps1 = float(box_strains(snap.box_lengths, ref_box)["eps_1"][0])
-            if eps1 < from_eps1:
-                continue
+        radius = plane.plane_tables.radius          # the common plane's ref: centre to extreme vertex
+        for snap, eps1 in shear_snapshots(dump, snaps, from_eps1):
             lab_p = points.classify(snap, variants=False)
             lab_c = plane.classify(snap, variants=False)
             poly = lab_p.poly
@@ -116,7 +109,7 @@ def random_tilts(dump, n=20000, seed=0):
     chance of a flush pair, against which the packing's selection shows."""
     count, snaps, close, shapes = open_source(dump)
     close()
-    tables = Classifier(shapes, "points").tables
+    tables = shape_tables(*shapes)
     rng = np.random.default_rng(seed)
     S = len(tables.vertices)
     normal = rng.normal(size=(n, 3))
