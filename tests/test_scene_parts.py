@@ -24,7 +24,13 @@ def test_presets_resolve_and_reject_bad_config():
     assert resolve("paper", "polyhedra")["compaction_friction"] == 0.5
     assert resolve("paper", "spheres")["compaction_friction"] == 0.0
     assert resolve("paper", "polyhedra")["safety"] == 0.45       # docs/front.md, the time step
-    assert resolve("default", "polyhedra")["safety"] == 0.3
+    # the default's polyhedra and every preset built on it step at 0.45 too;
+    # the spheres (not swept), the soft preset and the tests' tiny one at 0.3
+    for name in ("default", "intermediate", "loose", "dense", "matched"):
+        assert resolve(name, "polyhedra")["safety"] == 0.45
+    for name in PRESETS:
+        assert resolve(name, "spheres")["safety"] == 0.3
+    assert resolve("soft", "polyhedra")["safety"] == resolve("tiny", "polyhedra")["safety"] == 0.3
     with pytest.raises(ConfigError, match="unknown parameter 'kapa' .*kappa"):
         resolve("tiny", "spheres", {"kapa": 3})
     with pytest.raises(ConfigError, match="friction = -1.0 is outside"):

@@ -80,8 +80,12 @@ def test_cost_model_scaling():
     assert estimate(q)["shear_steps"] == pytest.approx(e["shear_steps"], rel=1e-12)
     q = dict(p, safety=2 * p["safety"])                   # a time step twice as long: half the steps
     assert estimate(q)["steps"] == pytest.approx(e["steps"] / 2, rel=1e-12)
+    # the default's polyhedra step at 0.45 too: the reference point (0.3) in 2/3 of its steps
     d = estimate(resolve("default", "polyhedra"))
-    assert d["steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
+    assert d["steps"] == pytest.approx((COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45,
+                                       rel=1e-12)
+    assert estimate(resolve("default", "polyhedra", {"safety": 0.3}))["steps"] == pytest.approx(
+        COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
     # the spheres' constants are measured at the default's own point (I = 1e-3), and
     # their placement factor does not apply: the soft preset (kappa 300, I 2e-2,
     # I_c 5e-2) scales them by sqrt(0.1), 2^0.55 and 1/20 only
@@ -95,7 +99,7 @@ def test_cost_model_scaling():
     assert soft["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * math.sqrt(0.1) * 2 ** 0.55
                                                      * PLACEMENT_FACTOR["spheres"], rel=1e-12)
     # half the strain: the top wall travels 1 - exp(-eps) of the height
-    h = estimate(dict(resolve("default", "polyhedra"), final_strain=0.15))
+    h = estimate(dict(resolve("default", "polyhedra"), final_strain=0.15, safety=0.3))
     assert h["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * (1 - math.exp(-0.15))
                                              / (1 - math.exp(-0.3)), rel=1e-12)
 
@@ -132,7 +136,7 @@ def test_intermediate_preset_fills_a_16_core_node(tmp_path):
     assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5
     assert resolve("intermediate", "spheres")["n_particles"] == 1000
     e = estimate(p)
-    steps = COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]
+    steps = (COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45     # the default's time step
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
                                             * US_PER_CONTACT_STEP["polyhedra"] / 3.6e9, rel=1e-12)
     out = tmp_path / "node"

@@ -55,7 +55,7 @@ PARAMETERS = (
               "... times this until the mean wall stress first reaches sigma0 / 2"),
     Parameter("damping", float, (0.0, 0.99), 0.2, "NewtonIntegrator's local damping during shear"),
     Parameter("compaction_damping", float, (0.0, 0.99), 0.2, "... and during the isotropic compression"),
-    Parameter("safety", float, (1e-3, 1.0), 0.3, "dt = safety * critical time step"),
+    Parameter("safety", float, (1e-3, 1.0), 0.45, "dt = safety * critical time step"),
     Parameter("servo_gain", float, (1e-3, 1e3), 10.0, "proportional gain of the wall servo (lowered if unstable)"),
     Parameter("servo_time", float, (1e-6, 10.0), 0.01,
               "integral time of the servo, as the strain (of the loading rate) it spans"),

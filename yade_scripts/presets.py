@@ -12,9 +12,13 @@
              q/p is rate-sensitive, and they are cheap). The compaction starts from the grains placed with their
              exact shapes at a solid fraction of 0.25 (``placement``) and
              runs at I_c = 0.1: a third of the steps of the bounding-sphere
-             start (docs/scenes.md, "Preparation").
+             start (docs/scenes.md, "Preparation"). The polyhedra step at
+             0.45 of the critical time step (``safety``, the parameter's
+             default): 2/3 of the steps of 0.3, with no change the time-step
+             sweep could tell from chance (docs/front.md, "The time step");
+             the spheres, cheap and not swept, keep 0.3 in every preset.
 ``soft``     the earlier default: kappa = 300, I = 2e-2, bounding-sphere
-             placement, I_c = 5e-2 (ten times softer and four times faster
+             placement, I_c = 5e-2, time step 0.3 of the critical one (ten times softer and four times faster
              than the default; the front of docs/front.md was measured on it).
 ``matched``  the default with the polyhedra compacted at friction 0.58: the
              solid fraction of the earlier bounding-sphere start (about
@@ -31,8 +35,8 @@
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres) at
              kappa = 1e4, I = 1e-3, I_c = 1e-2, prepared like the default
              (polyhedra compacted at 0.5, spheres frictionless), the
-             polyhedra's time step at 0.45 of the critical one, for a
-             cluster through yade-batch; not run here.
+             polyhedra's time step at 0.45 of the critical one as in the
+             default, for a cluster through yade-batch; not run here.
 
 Every key is a parameter of :mod:`yade_scripts.parameters` (names, types,
 ranges, units, defaults); a preset lists only what it changes from the
@@ -42,9 +46,13 @@ from __future__ import annotations
 
 from .parameters import ConfigError, check
 
+# The spheres step at 0.3 of the critical time step in every preset; the
+# polyhedra at the parameter's default, 0.45, but in ``tiny`` and ``soft``.
+_SPHERES_STEP = {"safety": 0.3}
+
 PRESETS = {
     "tiny": {
-        "common": {"kappa": 150.0, "inertial_number": 1e-2, "compaction_inertial_number": 1e-1,
+        "common": {"safety": 0.3, "kappa": 150.0, "inertial_number": 1e-2, "compaction_inertial_number": 1e-1,
                    "compaction_friction": 0.0, "initial_fraction": 0.3, "dump_strain": 0.01,
                    "final_strain": 0.02, "unbalanced_tolerance": 0.05, "iso_tolerance": 0.02,
                    "log_every": 50, "check_every": 50, "compaction_damping": 0.5, "servo_time": 0.003},
@@ -61,10 +69,10 @@ PRESETS = {
         # bias that falls only as sqrt(I) (docs/front.md: +0.074 at 2e-2, so
         # about +0.017 at 1e-3, inside the seed noise); S1's is within its
         # noise at the common I = 5e-3. Spheres are cheap, so this costs minutes.
-        "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3},
+        "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3, **_SPHERES_STEP},
     },
     "soft": {
-        "common": {"kappa": 300.0, "inertial_number": 2e-2, "placement": "spheres",
+        "common": {"safety": 0.3, "kappa": 300.0, "inertial_number": 2e-2, "placement": "spheres",
                    "compaction_inertial_number": 5e-2},
         "polyhedra": {},
         "spheres": {"compaction_friction": 0.0},
@@ -72,26 +80,24 @@ PRESETS = {
     "intermediate": {
         "common": {},
         "polyhedra": {"n_particles": 5000},
-        "spheres": {"compaction_friction": 0.0},
+        "spheres": {"compaction_friction": 0.0, **_SPHERES_STEP},
     },
     # prepared like the default (solid fraction about 0.6 in both): the
     # polyhedra compacted at mu = 0.5 (frictionless they reach 0.71), the
-    # spheres frictionless. The polyhedra step at 0.45 of the critical one
-    # (2/3 of the steps of 0.3): on the time-step sweep (docs/front.md,
-    # benchmarks/timestep_front.py) no quantity moved beyond chance from 0.3
-    # (q/p +0.005 [-0.021, 0.031]), and 0.9 was still stable.
+    # spheres frictionless. The polyhedra step at 0.45 of the critical one,
+    # as in the default.
     "paper": {
         "common": {"kappa": 1.0e4, "inertial_number": 1e-3, "compaction_inertial_number": 1e-2,
                    "dump_strain": 0.005, "unbalanced_tolerance": 0.01},
-        "polyhedra": {"n_particles": 36933, "safety": 0.45},
-        "spheres": {"n_particles": 19998, "compaction_friction": 0.0},
+        "polyhedra": {"n_particles": 36933},
+        "spheres": {"n_particles": 19998, "compaction_friction": 0.0, **_SPHERES_STEP},
     },
 }
 
 # The default's loose and dense twins: both samples compacted with the
 # shear friction 0.5 (loose start) or frictionless (densest start).
 for _name, _mu in (("loose", 0.5), ("dense", 0.0)):
-    PRESETS[_name] = {"common": {"compaction_friction": _mu}, "polyhedra": {}, "spheres": {}}
+    PRESETS[_name] = {"common": {"compaction_friction": _mu}, "polyhedra": {}, "spheres": dict(_SPHERES_STEP)}
 # The earlier bounding-sphere start's solid fraction (about 0.562) with the
 # default's faster preparation: polyhedra compacted at 0.58, the friction
 # lowered to 0.5 before shear; the spheres as in the default.

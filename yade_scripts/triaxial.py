@@ -62,7 +62,7 @@ readParamsFromTable(
     approach_factor=1.0,             # ... times this until the mean wall stress first reaches sigma0 / 2
     damping=0.2,                     # NewtonIntegrator's local damping during shear
     compaction_damping=0.2,          # ... and during the isotropic compression
-    safety=0.3,                      # dt = safety * critical time step
+    safety=0.45,                     # dt = safety * critical time step
     servo_gain=10.0,                 # proportional gain of the wall servo (lowered if unstable)
     servo_time=0.01,                 # integral time of the servo, as the strain (of the loading rate) it spans
     placement='grains',              # start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)
