@@ -18,8 +18,9 @@
              sweep could tell from chance (docs/front.md, "The time step");
              the spheres, cheap and not swept, keep 0.3 in every preset.
 ``soft``     the earlier default: kappa = 300, I = 2e-2, bounding-sphere
-             placement, I_c = 5e-2, time step 0.3 of the critical one (ten times softer and four times faster
-             than the default; the front of docs/front.md was measured on it).
+             placement, I_c = 5e-2, time step 0.3 of the critical one (ten
+             times softer and four times faster than the default; the front
+             of docs/front.md was measured on it).
 ``matched``  the default with the polyhedra compacted at friction 0.58: the
              solid fraction of the earlier bounding-sphere start (about
              0.562, within 0.005 on 3 seeds) in under a third of its steps
@@ -46,9 +47,11 @@ from __future__ import annotations
 
 from .parameters import ConfigError, check
 
-# The spheres step at 0.3 of the critical time step in every preset; the
-# polyhedra at the parameter's default, 0.45, but in ``tiny`` and ``soft``.
-_SPHERES_STEP = {"safety": 0.3}
+# What a sample changes from the parameter table's defaults (those of the
+# default preset's polyhedra) before any preset: the spheres step at 0.3 of
+# the critical time step (cheap, and not swept); the polyhedra at the
+# parameter's 0.45, but in ``tiny`` and ``soft``, whose common part sets 0.3.
+SAMPLE_DEFAULTS = {"polyhedra": {}, "spheres": {"safety": 0.3}}
 
 PRESETS = {
     "tiny": {
@@ -69,7 +72,7 @@ PRESETS = {
         # bias that falls only as sqrt(I) (docs/front.md: +0.074 at 2e-2, so
         # about +0.017 at 1e-3, inside the seed noise); S1's is within its
         # noise at the common I = 5e-3. Spheres are cheap, so this costs minutes.
-        "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3, **_SPHERES_STEP},
+        "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3},
     },
     "soft": {
         "common": {"safety": 0.3, "kappa": 300.0, "inertial_number": 2e-2, "placement": "spheres",
@@ -80,7 +83,7 @@ PRESETS = {
     "intermediate": {
         "common": {},
         "polyhedra": {"n_particles": 5000},
-        "spheres": {"compaction_friction": 0.0, **_SPHERES_STEP},
+        "spheres": {"compaction_friction": 0.0},
     },
     # prepared like the default (solid fraction about 0.6 in both): the
     # polyhedra compacted at mu = 0.5 (frictionless they reach 0.71), the
@@ -90,14 +93,14 @@ PRESETS = {
         "common": {"kappa": 1.0e4, "inertial_number": 1e-3, "compaction_inertial_number": 1e-2,
                    "dump_strain": 0.005, "unbalanced_tolerance": 0.01},
         "polyhedra": {"n_particles": 36933},
-        "spheres": {"n_particles": 19998, "compaction_friction": 0.0, **_SPHERES_STEP},
+        "spheres": {"n_particles": 19998, "compaction_friction": 0.0},
     },
 }
 
 # The default's loose and dense twins: both samples compacted with the
 # shear friction 0.5 (loose start) or frictionless (densest start).
 for _name, _mu in (("loose", 0.5), ("dense", 0.0)):
-    PRESETS[_name] = {"common": {"compaction_friction": _mu}, "polyhedra": {}, "spheres": dict(_SPHERES_STEP)}
+    PRESETS[_name] = {"common": {"compaction_friction": _mu}, "polyhedra": {}, "spheres": {}}
 # The earlier bounding-sphere start's solid fraction (about 0.562) with the
 # default's faster preparation: polyhedra compacted at 0.58, the friction
 # lowered to 0.5 before shear; the spheres as in the default.
@@ -107,11 +110,12 @@ PRESETS["matched"] = {"common": {}, "polyhedra": {"compaction_friction": 0.58},
 
 def resolve(preset, sample, overrides=None):
     """The full, checked parameter dict of a preset for one sample: the
-    defaults, the preset's common changes, its changes for ``sample``, then
+    defaults, the sample's (:data:`SAMPLE_DEFAULTS`), the preset's common changes, its changes for ``sample``, then
     ``overrides`` (dict of name -> value or string). Raises
     :class:`ConfigError`."""
     if preset not in PRESETS:
         raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")
     if sample not in ("polyhedra", "spheres"):
         raise ConfigError(f"sample must be 'polyhedra' or 'spheres', got {sample!r}")
-    return check({**PRESETS[preset]["common"], **PRESETS[preset][sample], "sample": sample, **(overrides or {})})
+    return check({**SAMPLE_DEFAULTS[sample], **PRESETS[preset]["common"], **PRESETS[preset][sample], "sample": sample,
+                  **(overrides or {})})
