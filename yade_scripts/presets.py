@@ -110,9 +110,9 @@ PRESETS["matched"] = {"common": {}, "polyhedra": {"compaction_friction": 0.58},
 
 def resolve(preset, sample, overrides=None):
     """The full, checked parameter dict of a preset for one sample: the
-    defaults, the sample's (:data:`SAMPLE_DEFAULTS`), the preset's common changes, its changes for ``sample``, then
-    ``overrides`` (dict of name -> value or string). Raises
-    :class:`ConfigError`."""
+    defaults, the sample's (:data:`SAMPLE_DEFAULTS`), the preset's common
+    changes, its changes for ``sample``, then ``overrides`` (dict of name ->
+    value or string). Raises :class:`ConfigError`."""
     if preset not in PRESETS:
         raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")
     if sample not in ("polyhedra", "spheres"):
