@@ -10,17 +10,24 @@ into STUDY/claim6/<run>-<T>/); the claims are evaluated
 (:func:`postproc.study.claims.evaluate`) with those S1 summaries and the
 study's S2 ones, and claim 6's numbers and verdict are printed per criterion
 and written to STUDY/claim6/claim6.md, with the number of contacts behind
-the VF and EE leanings (the steady window of every seed).
+the VF and EE leanings (the steady window of every seed). For each
+criterion it also gives every seed's leanings beside its solid fraction
+after compaction, how their scatter splits into window noise and a
+persistent per-sample part (:func:`postproc.statistics.seed_scatter`), and
+how many seeds would exclude 0 at the present mean and scatter
+(:func:`postproc.statistics.seeds_needed`).
 """
 from __future__ import annotations
 
 import argparse
+import json
 import os
 
+import numpy as np
 import pandas as pd
 
 from postproc.pipeline import AnalysisOptions, analyze_path
-from postproc.statistics import steady_indices
+from postproc.statistics import seed_scatter, seeds_needed, steady_indices
 from postproc.study.claims import evaluate
 from postproc.study.report import _summaries, _usable, discover
 
@@ -38,6 +45,7 @@ def main():
     out = os.path.join(args.study, "claim6")
     os.makedirs(out, exist_ok=True)
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
+    scatter = []
     for types in args.types:
         frames = []
         for r in s1:
@@ -53,8 +61,41 @@ def main():
         n = sum(int(df["n_contacts_pp"].to_numpy()[steady_indices(df["eps_q"], df["stage"])].sum()) for df in frames)
         lines.append(f"| {types} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
         print(f"{types}: {c6['verdict']}: {c6['numbers']}", flush=True)
+        scatter += _scatter_lines(types, s1, frames)
     with open(os.path.join(out, "claim6.md"), "w") as fh:
-        fh.write("\n".join(lines) + "\n")
+        fh.write("\n".join(lines + scatter) + "\n")
+    print("\n".join(scatter), flush=True)
+
+
+def _solid_fraction(run):
+    """The run's solid fraction after compaction (its info file), or NaN."""
+    try:
+        with open(run["info"]) as fh:
+            return float(json.load(fh)["solid_fraction_isotropic"])
+    except (OSError, KeyError, TypeError, ValueError):
+        return float("nan")
+
+
+def _scatter_lines(types, runs, frames):
+    """Markdown: each seed's VF and EE leanings (steady-window means) beside
+    its solid fraction, then the scatter split and the seeds needed."""
+    cols = ("ct_fabric_VF", "ct_fabric_EE")
+    series = {c: [df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])] for df in frames]
+              for c in cols}
+    out = ["", f"Leanings per seed ({types}; negative is lateral)", "",
+           "| seed | solid fraction | VF | EE |", "|---|---|---|---|"]
+    for k, r in enumerate(runs):
+        out.append(f"| {r['label']} | {_solid_fraction(r):.4f} | "
+                   + " | ".join(f"{np.nanmean(series[c][k]):+.3f}" for c in cols) + " |")
+    out += ["", "| leaning | mean | sd over seeds | window noise | persistent | seeds to exclude 0 |",
+            "|---|---|---|---|---|---|"]
+    for c in cols:
+        sc = seed_scatter(series[c])
+        mean = float(np.mean([np.nanmean(x) for x in series[c]]))
+        need = seeds_needed(mean, sc.between) if np.isfinite(sc.between) else None
+        out.append(f"| {c[-2:]} | {mean:+.3f} | {sc.between:.3f} | {sc.within:.3f} | {sc.persistent:.3f} | "
+                   f"{need if need else 'n/a'} |")
+    return out
 
 
 if __name__ == "__main__":

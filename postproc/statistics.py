@@ -12,7 +12,10 @@ one run are correlated, so their spread is not an error bar:
   ensemble interval, and is labelled so.
 
 Differences of independent estimates use Welch's t (Welch-Satterthwaite
-degrees of freedom).
+degrees of freedom). How the seeds scatter (:func:`seed_scatter`: the part a
+longer steady window would average away and the part it would not) and how
+many seeds an interval needs to exclude 0 (:func:`seeds_needed`) say what
+more computing would buy.
 """
 from __future__ import annotations
 
@@ -103,3 +106,71 @@ def difference(e1, e2):
         dof = se ** 4 / (e1.se ** 4 / max(e1.dof, 1) + e2.se ** 4 / max(e2.dof, 1))
     method = e1.method if e1.method == e2.method else f"{e1.method} / {e2.method}"
     return Estimate(e1.mean - e2.mean, float(se), float(dof), min(e1.n, e2.n), method)
+
+
+@dataclass
+class SeedScatter:
+    """How the plateau means of an ensemble scatter, in the quantity's units.
+
+    ``between``: standard deviation of the per-seed plateau means (ddof 1);
+    ``within``: root mean square over seeds of each seed's batch-means
+    standard error (the noise of a plateau mean from its own window);
+    ``persistent``: sqrt(max(between² - within², 0)), the part of a seed's
+    plateau set by its sample, which a longer window would not remove;
+    ``n``: seeds with values."""
+
+    between: float
+    within: float
+    persistent: float
+    n: int
+
+
+def seed_scatter(series):
+    """Split the scatter of per-seed plateau means into window noise and a
+    persistent, per-sample part (one-way random effects, method of moments:
+    var(seed means) = persistent² + mean of the seeds' squared standard errors).
+
+    series: list with one (K_s,) array of steady-state values per seed (NaNs
+    dropped); each seed's standard error is the batch-means one of
+    :func:`plateau_estimate` (N_BATCHES batches), which underestimates the
+    noise when the series is correlated over more than a batch, so
+    ``persistent`` is an upper bound in that case. Needs 2 seeds with at
+    least 4 values each; otherwise every field is NaN.
+    """
+    series = [np.asarray(s, float) for s in series]
+    series = [s[np.isfinite(s)] for s in series]
+    series = [s for s in series if len(s) >= 4]
+    if len(series) < 2:
+        return SeedScatter(np.nan, np.nan, np.nan, len(series))
+    means = np.array([s.mean() for s in series])
+    se = np.array([plateau_estimate([s]).se for s in series])
+    between = float(means.std(ddof=1))
+    within = float(np.sqrt(np.mean(se ** 2)))
+    return SeedScatter(between, within, float(np.sqrt(max(between ** 2 - within ** 2, 0.0))), len(series))
+
+
+def seeds_needed(mean, sd, level=0.95, n_max=100000):
+    """Smallest number of seeds n >= 2 whose Student's t interval,
+    mean ± t_{n-1} sd / sqrt(n), excludes 0, for an ensemble whose seed
+    means have this ``mean`` and standard deviation ``sd`` (same units).
+    A planning figure: the next seeds move both. Returns None when
+    mean == 0 or n would exceed n_max; 1 is never returned (one seed gives
+    no interval over seeds)."""
+    mean, sd = abs(float(mean)), float(sd)
+    if not (np.isfinite(mean) and np.isfinite(sd)) or sd < 0:
+        raise ValueError(f"seeds_needed: mean and sd must be finite and sd >= 0, got {mean}, {sd}")
+    if sd == 0:
+        return 2 if mean > 0 else None
+    if mean == 0:
+        return None
+    half = lambda n: t.ppf(0.5 + level / 2, n - 1) * sd / np.sqrt(n)  # noqa: E731
+    lo = 2
+    if half(lo) < mean:
+        return lo
+    if half(n_max) >= mean:
+        return None
+    hi = n_max                                  # half(n) falls with n: bisect
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (lo, mid) if half(mid) < mean else (mid, hi)
+    return hi
