@@ -13,9 +13,11 @@ and written to STUDY/claim6/claim6.md, with the number of contacts behind
 the VF and EE leanings (the steady window of every seed). For each
 criterion it also gives every seed's leanings beside its solid fraction
 after compaction, how their scatter splits into window noise and a
-persistent per-sample part (:func:`postproc.statistics.seed_scatter`), and
+persistent per-sample part (:func:`postproc.statistics.seed_scatter`),
 how many seeds would exclude 0 at the present mean and scatter
-(:func:`postproc.statistics.seeds_needed`).
+(:func:`postproc.statistics.seeds_needed`), and the least-squares slope of
+the seeds' leanings on their solid fractions with its 95 % interval
+(Student's t, n - 2 degrees of freedom).
 """
 from __future__ import annotations
 
@@ -25,6 +27,7 @@ import os
 
 import numpy as np
 import pandas as pd
+from scipy.stats import linregress, t
 
 from postproc.pipeline import AnalysisOptions, analyze_path
 from postproc.statistics import seed_scatter, seeds_needed, steady_indices
@@ -87,14 +90,21 @@ def _scatter_lines(types, runs, frames):
     for k, r in enumerate(runs):
         out.append(f"| {r['label']} | {_solid_fraction(r):.4f} | "
                    + " | ".join(f"{np.nanmean(series[c][k]):+.3f}" for c in cols) + " |")
-    out += ["", "| leaning | mean | sd over seeds | window noise | persistent | seeds to exclude 0 |",
-            "|---|---|---|---|---|---|"]
+    out += ["", "| leaning | mean | sd over seeds | window noise | persistent | seeds to exclude 0 "
+                "| slope on solid fraction [95 %] |", "|---|---|---|---|---|---|---|"]
+    phi = np.array([_solid_fraction(r) for r in runs])
     for c in cols:
         sc = seed_scatter(series[c])
-        mean = float(np.mean([np.nanmean(x) for x in series[c]]))
-        need = seeds_needed(mean, sc.between) if np.isfinite(sc.between) else None
-        out.append(f"| {c[-2:]} | {mean:+.3f} | {sc.between:.3f} | {sc.within:.3f} | {sc.persistent:.3f} | "
-                   f"{need if need else 'n/a'} |")
+        means = np.array([np.nanmean(x) for x in series[c]])
+        need = seeds_needed(means.mean(), sc.between) if np.isfinite(sc.between) else None
+        ok = np.isfinite(phi) & np.isfinite(means)
+        slope = "n/a"
+        if ok.sum() >= 3 and np.ptp(phi[ok]) > 0:
+            fit = linregress(phi[ok], means[ok])
+            h = t.ppf(0.975, ok.sum() - 2) * fit.stderr
+            slope = f"{fit.slope:+.1f} [{fit.slope - h:+.1f}, {fit.slope + h:+.1f}] (r {fit.rvalue:+.2f})"
+        out.append(f"| {c[-2:]} | {means.mean():+.3f} | {sc.between:.3f} | {sc.within:.3f} | "
+                   f"{sc.persistent:.3f} | {need if need else 'n/a'} | {slope} |")
     return out
 
 
