@@ -131,6 +131,26 @@ def test_claims_inconclusive_with_noise_or_missing_runs():
     assert out[5]["verdict"] == "reproduced"
 
 
+def test_claim6_says_how_many_seeds_would_decide_a_straddling_leaning():
+    """EE leanings constant per seed at -0.1, +0.1, -0.2 (mean -0.0667, sd
+    0.1528, t_2 interval straddles 0): seeds_needed gives 23 (t_21 x 0.1528 /
+    sqrt(22) = 0.0678 > 0.0667 > t_22 x 0.1528 / sqrt(23) = 0.0661) and the
+    text names it; a decided condition gets no such words."""
+    s = {k: _frames(v) for k, v in PAPER_LIKE.items()}
+    for df, v in zip(s["polyhedra"], (-0.1, 0.1, -0.2)):
+        df["ct_fabric_EE"] = v
+    from scipy.stats import t
+    sd = np.std([-0.1, 0.1, -0.2], ddof=1)
+    n = seeds_needed(-0.2 / 3, sd)
+    assert n == 23
+    assert t.ppf(0.975, n - 1) * sd / np.sqrt(n) < 0.2 / 3 <= t.ppf(0.975, n - 2) * sd / np.sqrt(n - 1)
+    c6 = evaluate(s)[5]
+    assert c6["verdict"] == "inconclusive"
+    assert f"EE signed branch anisotropy -0.07 [-0.45, 0.31] (< 0, about {n} seeds would tell it from 0)" \
+        in c6["numbers"], c6["numbers"]
+    assert c6["numbers"].count("seeds would tell") == 1
+
+
 def test_claim6_names_the_criterion_it_was_read_with():
     for method, words in (("points", "contact-point count, tolerance 0.1 V/area"),
                           ("commonplane", "LMGC90's common-plane count, band 0.1 x the radius"),

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..statistics import Estimate, difference, plateau_estimate, steady_indices
+from ..statistics import Estimate, difference, plateau_estimate, seeds_needed, steady_indices
 
 NEGLIGIBLE = 0.05
 SFF_TOLERANCE = 0.15
@@ -59,6 +59,16 @@ def _side(est, threshold=0.0):
     if not np.isfinite(lo):
         return 0
     return 1 if lo > threshold else (-1 if hi < threshold else 0)
+
+
+def _seeds_hint(est, threshold):
+    """For an interval over seeds that straddles ``threshold``: ", about N
+    seeds would tell it from T" (N from :func:`seeds_needed` at the present
+    mean and seed-to-seed standard deviation, se x sqrt(n)); else ""."""
+    if est.method != "seeds" or _side(est, threshold) != 0 or not np.isfinite(est.se):
+        return ""
+    n = seeds_needed(est.mean - threshold, est.se * np.sqrt(est.n))
+    return f", about {n} seeds would tell it from {threshold:g}" if n else ""
 
 
 def _verdict(conditions):
@@ -193,7 +203,7 @@ def evaluate(samples):
             ("ct_fabric_EE", -1, 0.0, "EE signed branch anisotropy")):
         e = est(s1, col)
         conds.append(sign * _side(e, thr))
-        checks.append(f"{what} {e.text()} ({'>' if sign > 0 else '<'} {thr:g})")
+        checks.append(f"{what} {e.text()} ({'>' if sign > 0 else '<'} {thr:g}{_seeds_hint(e, thr)})")
     fs, fw = est(s1, "strong_frac_FF"), est(s1, "weak_frac_FF")
     dfw = difference(fs, fw)
     conds.append(_side(dfw))
