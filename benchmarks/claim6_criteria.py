@@ -85,17 +85,17 @@ def _scatter_lines(types, runs, frames):
     cols = ("ct_fabric_VF", "ct_fabric_EE")
     series = {c: [df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])] for df in frames]
               for c in cols}
+    seed_means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in cols}
+    phi = np.array([_solid_fraction(r) for r in runs])
     out = ["", f"Leanings per seed ({types}; negative is lateral)", "",
            "| seed | solid fraction | VF | EE |", "|---|---|---|---|"]
     for k, r in enumerate(runs):
-        out.append(f"| {r['label']} | {_solid_fraction(r):.4f} | "
-                   + " | ".join(f"{np.nanmean(series[c][k]):+.3f}" for c in cols) + " |")
+        out.append(f"| {r['label']} | {phi[k]:.4f} | " + " | ".join(f"{seed_means[c][k]:+.3f}" for c in cols) + " |")
     out += ["", "| leaning | mean | sd over seeds | window noise | persistent | seeds to exclude 0 "
                 "| slope on solid fraction [95 %] |", "|---|---|---|---|---|---|---|"]
-    phi = np.array([_solid_fraction(r) for r in runs])
     for c in cols:
         sc = seed_scatter(series[c])
-        means = np.array([np.nanmean(x) for x in series[c]])
+        means = seed_means[c]
         need = seeds_needed(means.mean(), sc.between) if np.isfinite(sc.between) else None
         ok = np.isfinite(phi) & np.isfinite(means)
         slope = "n/a"
