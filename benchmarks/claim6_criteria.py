@@ -1,12 +1,14 @@
 """Claim 6 (face-face contacts strong and axial, vertex-face and edge-edge
 weak and lateral) on one study, decided with each contact-type criterion.
 
-    python benchmarks/claim6_criteria.py STUDY [--types points commonplane]
+    python benchmarks/claim6_criteria.py STUDY [--types points commonplane] [--tolerance T ...]
 
 STUDY is a ``make study`` folder (its ``manifest.json``). Each usable S1
 dump is analysed with every criterion that its study analysis did not use
 (``postproc analyze --types T`` through :func:`postproc.pipeline.analyze_path`,
-into STUDY/claim6/<run>-<T>/); the claims are evaluated
+into STUDY/claim6/<run>-<T>/, or <run>-<T>-tol<X>/ with ``--tolerance X``, the
+criterion's tolerance: alpha of "points", tau of "commonplane"; several
+values give one row each, the stability test of a verdict); the claims are evaluated
 (:func:`postproc.study.claims.evaluate`) with those S1 summaries and the
 study's S2 ones, and claim 6's numbers and verdict are printed per criterion
 and written to STUDY/claim6/claim6.md, with the number of contacts behind
@@ -39,6 +41,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("study")
     ap.add_argument("--types", nargs="+", default=["points", "commonplane"])
+    ap.add_argument("--tolerance", nargs="+", type=float, default=[None],
+                    help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
     args = ap.parse_args()
     runs = discover(args.study)
     s1, s2 = _usable(runs, "polyhedra"), _usable(runs, "spheres")
@@ -50,21 +54,24 @@ def main():
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
     scatter = []
     for types in args.types:
-        frames = []
-        for r in s1:
-            own = pd.read_csv(os.path.join(r["analysis"], "summary.csv"))
-            if own["ct_method"].iloc[0] == types:
-                frames.append(own)
-                continue
-            folder = os.path.join(out, f"{r['label'].replace(' ', '')}-{types}")
-            if not os.path.exists(os.path.join(folder, "summary.csv")):
-                analyze_path(r["dump"], folder, AnalysisOptions(types=types), progress=False)
-            frames.append(pd.read_csv(os.path.join(folder, "summary.csv")))
-        c6 = evaluate({"polyhedra": frames, "spheres": s2_frames})[5]
-        n = sum(int(df["n_contacts_pp"].to_numpy()[steady_indices(df["eps_q"], df["stage"])].sum()) for df in frames)
-        lines.append(f"| {types} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
-        print(f"{types}: {c6['verdict']}: {c6['numbers']}", flush=True)
-        scatter += _scatter_lines(types, s1, frames)
+        for tol in args.tolerance:
+            name = types if tol is None else f"{types}-tol{tol:g}"
+            frames = []
+            for r in s1:
+                own = pd.read_csv(os.path.join(r["analysis"], "summary.csv"))
+                if tol is None and own["ct_method"].iloc[0] == types:
+                    frames.append(own)
+                    continue
+                folder = os.path.join(out, f"{r['label'].replace(' ', '')}-{name}")
+                if not os.path.exists(os.path.join(folder, "summary.csv")):
+                    analyze_path(r["dump"], folder, AnalysisOptions(types=types, tolerance=tol), progress=False)
+                frames.append(pd.read_csv(os.path.join(folder, "summary.csv")))
+            c6 = evaluate({"polyhedra": frames, "spheres": s2_frames})[5]
+            n = sum(int(df["n_contacts_pp"].to_numpy()[steady_indices(df["eps_q"], df["stage"])].sum())
+                    for df in frames)
+            lines.append(f"| {name} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
+            print(f"{name}: {c6['verdict']}: {c6['numbers']}", flush=True)
+            scatter += _scatter_lines(name, s1, frames)
     with open(os.path.join(out, "claim6.md"), "w") as fh:
         fh.write("\n".join(lines + scatter) + "\n")
     print("\n".join(scatter), flush=True)

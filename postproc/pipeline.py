@@ -124,7 +124,8 @@ class AnalysisOptions:
     errors : compute standard errors.
     types : contact-type criterion of polyhedra: "points" (LMGC90's count
         of contact points), "footprint" or "angular".
-    tolerance : alpha of "points", in units of the overlap's mean thickness.
+    tolerance : alpha of "points", in units of the overlap's mean thickness;
+        tau of "commonplane", in units of the centre-to-extreme-vertex distance.
     threshold : "footprint" threshold, in units of the pair size d.
     theta_deg : "angular" tolerance, degrees.
     """
