@@ -31,6 +31,7 @@ import numpy as np
 import pandas as pd
 from scipy.stats import linregress, t
 
+from postproc.errors import InputError
 from postproc.pipeline import AnalysisOptions, analyze_path
 from postproc.statistics import seed_scatter, seeds_needed, steady_indices
 from postproc.study.claims import evaluate
@@ -44,6 +45,12 @@ def main():
     ap.add_argument("--tolerance", nargs="+", type=float, default=[None],
                     help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
     args = ap.parse_args()
+    try:
+        for types in args.types:
+            for tol in args.tolerance:
+                AnalysisOptions(types=types, tolerance=tol).check()
+    except InputError as exc:
+        raise SystemExit(f"claim6: {exc}")
     runs = discover(args.study)
     s1, s2 = _usable(runs, "polyhedra"), _usable(runs, "spheres")
     if not s1:

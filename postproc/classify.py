@@ -351,7 +351,9 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
         raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
     if threshold is not None:
         fpm.check_threshold(threshold)
-    if tolerance is not None:
+    if tolerance is not None and method == "commonplane":
+        cpl.check_neighbor(tolerance, "--tolerance (commonplane: tau, the band in units of the radius)")
+    elif tolerance is not None:
         cpm.check_alpha(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):
         raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")

@@ -253,6 +253,11 @@ def test_cli_default_is_the_point_count(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--tolerance must be finite and > 0" in err[0]
     assert not (tmp_path / "b").exists()
+    assert main(["analyze", str(tmp_path / "kernel.h5"), "--out", str(tmp_path / "c"), "--types", "commonplane",
+                 "--tolerance", "0"]) == 2                           # commonplane's tolerance is its band tau
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "tau" in err[0] and "must be finite and > 0" in err[0]
+    assert not (tmp_path / "c").exists()
 
 
 def test_a_contact_without_overlap_keeps_its_angular_class():
