@@ -60,14 +60,14 @@ def main():
     os.makedirs(out, exist_ok=True)
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
     scatter = []
+    own = [pd.read_csv(os.path.join(r["analysis"], "summary.csv")) for r in s1]
     for types in args.types:
         for tol in args.tolerance:
             name = types if tol is None else f"{types}-tol{tol:g}"
             frames = []
-            for r in s1:
-                own = pd.read_csv(os.path.join(r["analysis"], "summary.csv"))
-                if tol is None and own["ct_method"].iloc[0] == types:
-                    frames.append(own)
+            for r, summary in zip(s1, own):
+                if tol is None and summary["ct_method"].iloc[0] == types:
+                    frames.append(summary)
                     continue
                 folder = os.path.join(out, f"{r['label'].replace(' ', '')}-{name}")
                 if not os.path.exists(os.path.join(folder, "summary.csv")):

@@ -123,7 +123,8 @@ class AnalysisOptions:
     nbins : theta bins on [0, 90 deg].
     errors : compute standard errors.
     types : contact-type criterion of polyhedra: "points" (LMGC90's count
-        of contact points), "footprint" or "angular".
+        of contact points), "footprint", "angular" or "commonplane"
+        (LMGC90's common-plane detection redone from the poses).
     tolerance : alpha of "points", in units of the overlap's mean thickness;
         tau of "commonplane", in units of the centre-to-extreme-vertex distance.
     threshold : "footprint" threshold, in units of the pair size d.
