@@ -8,7 +8,8 @@ dump is analysed with every criterion that its study analysis did not use
 (``postproc analyze --types T`` through :func:`postproc.pipeline.analyze_path`,
 into STUDY/claim6/<run>-<T>/, or <run>-<T>-tol<X>/ with ``--tolerance X``, the
 criterion's tolerance: alpha of "points", tau of "commonplane"; several
-values give one row each, the stability test of a verdict); the claims are evaluated
+values give one row each, and the criterion's own tolerance is then added
+as the nominal row, read from the analyses already made); the claims are evaluated
 (:func:`postproc.study.claims.evaluate`) with those S1 summaries and the
 study's S2 ones, and claim 6's numbers and verdict are printed per criterion
 and written to STUDY/claim6/claim6.md, with the number of contacts behind
@@ -20,6 +21,14 @@ how many seeds would exclude 0 at the present mean and scatter
 (:func:`postproc.statistics.seeds_needed`), and the least-squares slope of
 the seeds' leanings on their solid fractions with its 95 % interval
 (Student's t, n - 2 degrees of freedom).
+
+With ``--tolerance``, the stability test of the leanings: each tolerance's
+VF and EE leanings beside the nominal ones, their paired shift over seeds
+with its 95 % interval, and whether the shift is inside the +-0.03 the
+contact-type proportions are held to (STABLE, its interval inside; MOVES,
+its interval outside; else undecided), in claim6.md, and the figure
+STUDY/claim6/<criterion>-tolerance.png
+(:func:`postproc.plots.plot_leanings_by_tolerance`).
 """
 from __future__ import annotations
 
@@ -31,12 +40,19 @@ import numpy as np
 import pandas as pd
 from scipy.stats import linregress, t
 
+from postproc.commonplane import DEFAULT_NEIGHBOR
+from postproc.contactpoints import DEFAULT_ALPHA
 from postproc.errors import InputError
 from postproc.pipeline import AnalysisOptions, analyze_path
-from postproc.statistics import seed_scatter, seeds_needed, steady_indices
+from postproc.plots import plot_leanings_by_tolerance
+from postproc.statistics import plateau_estimate, seed_scatter, seeds_needed, steady_indices
 from postproc.study.claims import evaluate
 from postproc.study.report import _summaries, _usable, discover
 
+NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each criterion's own tolerance
+STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
+LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
+CRITERION = {"points": "our contact-point count", "commonplane": "LMGC90's common-plane count"}
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -61,8 +77,10 @@ def main():
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
     scatter = []
     own = [pd.read_csv(os.path.join(r["analysis"], "summary.csv")) for r in s1]
+    band = []
     for types in args.types:
-        for tol in args.tolerance:
+        rows = []
+        for tol in _tolerances(types, args.tolerance):
             name = types if tol is None else f"{types}-tol{tol:g}"
             frames = []
             for r, summary in zip(s1, own):
@@ -79,9 +97,61 @@ def main():
             lines.append(f"| {name} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
             print(f"{name}: {c6['verdict']}: {c6['numbers']}", flush=True)
             scatter += _scatter_lines(name, s1, frames)
+            rows.append((NOMINAL.get(types) if tol is None else tol, _seed_leanings(frames)))
+        if len(rows) > 1:
+            band += _band_lines(types, rows)
+            if all(t is not None for t, _ in rows):
+                order = np.argsort([t for t, _ in rows])
+                plot_leanings_by_tolerance(
+                    [rows[k][0] for k in order],
+                    {c[-2:]: np.array([rows[k][1][c] for k in order]) for c in LEANINGS},
+                    os.path.join(out, f"{types}-tolerance.png"), criterion=CRITERION.get(types, types),
+                    unit="(tau x the radius)" if types == "commonplane" else "(alpha x V/area)")
     with open(os.path.join(out, "claim6.md"), "w") as fh:
-        fh.write("\n".join(lines + scatter) + "\n")
-    print("\n".join(scatter), flush=True)
+        fh.write("\n".join(lines + band + scatter) + "\n")
+    print("\n".join(band + scatter), flush=True)
+
+
+def _tolerances(types, asked):
+    """The tolerances of one criterion's rows: None alone without
+    ``--tolerance``; else None (the criterion's own, nominal) first, then
+    the asked values other than the nominal one."""
+    if asked == [None]:
+        return [None]
+    nominal = NOMINAL.get(types)
+    return [None] + [x for x in asked if x is not None and not (nominal is not None and np.isclose(x, nominal))]
+
+
+def _seed_leanings(frames):
+    """{column: (S,) steady-window mean per seed} of the VF and EE leanings."""
+    return {c: np.array([np.nanmean(df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])])
+                         for df in frames]) for c in LEANINGS}
+
+
+def _band_lines(types, rows):
+    """Markdown: the stability test, each tolerance's leanings and their
+    paired shift from the nominal row (the first), over seeds."""
+    nominal_tol, nominal = rows[0]
+    out = ["", f"Stability of the leanings ({types}; shift from the nominal tolerance "
+               f"{nominal_tol if nominal_tol is not None else 'own'}, paired over seeds, 95 %; "
+               f"stable when inside +-{STABLE})", "",
+           "| tolerance | VF | VF shift | EE | EE shift |", "|---|---|---|---|---|"]
+    for k, (tol, lean) in enumerate(rows):
+        cells = []
+        for c in LEANINGS:
+            level = plateau_estimate([[v] for v in lean[c]])
+            cells.append(level.text(3))
+            if k == 0:
+                cells.append("nominal")
+                continue
+            shift = plateau_estimate([[v] for v in lean[c] - nominal[c]])
+            lo, hi = shift.ci()
+            word = ("STABLE" if -STABLE < lo and hi < STABLE else
+                    "MOVES" if lo > STABLE or hi < -STABLE else "undecided")
+            cells.append(f"{shift.text(3)} {word}")
+        label = "own" if tol is None else f"{tol:g}"
+        out.append(f"| {label} | " + " | ".join(cells) + " |")
+    return out
 
 
 def _solid_fraction(run):
@@ -96,7 +166,7 @@ def _solid_fraction(run):
 def _scatter_lines(types, runs, frames):
     """Markdown: each seed's VF and EE leanings (steady-window means) beside
     its solid fraction, then the scatter split and the seeds needed."""
-    cols = ("ct_fabric_VF", "ct_fabric_EE")
+    cols = LEANINGS
     series = {c: [df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])] for df in frames]
               for c in cols}
     seed_means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in cols}

@@ -535,3 +535,45 @@ def plot_footprint(extents, threshold, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def plot_leanings_by_tolerance(tolerances, leanings, path, criterion="", unit=""):
+    """The stability test of claim 6's leanings: every seed's signed branch
+    anisotropy of vertex-face and edge-edge contacts (the deviatoric part of
+    the fabric per type along the compression axis, seed eq. 3 per type;
+    negative is lateral, toward the minor principal direction) against the
+    contact-type criterion's tolerance, one panel per type.
+
+    tolerances: (T,) tolerance values (the criterion's units, e.g. tau x the
+    radius for LMGC90's band), drawn on a log axis; leanings: {"VF": (T, S),
+    "EE": (T, S)} steady-window means per tolerance and seed (S seeds, the
+    same seeds in every row; NaN skipped). Thin grey lines join one seed
+    across tolerances; black: the mean over seeds with its 95 % Student's t
+    interval. Writes a PNG to path.
+    """
+    from .statistics import plateau_estimate
+
+    plt = _plt()
+    tol = np.asarray(tolerances, float)
+    fig, axes = plt.subplots(1, len(leanings), figsize=(4.4 * len(leanings), 3.8), sharey=True, squeeze=False)
+    for ax, (name, values) in zip(axes[0], leanings.items()):
+        v = np.asarray(values, float)
+        ax.plot(tol, v, "-", color="0.75", lw=0.7)
+        est = [plateau_estimate([[x] for x in row]) for row in v]
+        m = np.array([e.mean for e in est])
+        h = np.array([e.ci()[1] - e.mean for e in est])
+        ax.errorbar(tol, m, yerr=h, fmt="-o", color="k", capsize=3, ms=4, label="mean, 95 % over seeds")
+        ax.axhline(0, color="C3", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_xticks(tol)
+        ax.set_xticklabels([f"{x:g}" for x in tol])
+        ax.minorticks_off()
+        ax.set_xlabel(f"tolerance{(' ' + unit) if unit else ''}")
+        ax.set_title(f"{name} leaning, {v.shape[1]} seeds", fontsize=10)
+        ax.legend(fontsize=7, loc="lower left")
+    axes[0][0].set_ylabel("signed branch anisotropy (negative: lateral)")
+    fig.suptitle(f"claim 6 against the tolerance of {criterion}" if criterion else "claim 6 against the tolerance",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
