@@ -100,8 +100,8 @@ def main():
             rows.append((NOMINAL.get(types) if tol is None else tol, _seed_leanings(frames)))
         if len(rows) > 1:
             band += _band_lines(types, rows)
-            if all(t is not None for t, _ in rows):
-                order = np.argsort([t for t, _ in rows])
+            if all(x is not None for x, _ in rows):
+                order = np.argsort([x for x, _ in rows])
                 plot_leanings_by_tolerance(
                     [rows[k][0] for k in order],
                     {c[-2:]: np.array([rows[k][1][c] for k in order]) for c in LEANINGS},
