@@ -96,8 +96,10 @@ def main():
                     for df in frames)
             lines.append(f"| {name} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
             print(f"{name}: {c6['verdict']}: {c6['numbers']}", flush=True)
-            scatter += _scatter_lines(name, s1, frames)
-            rows.append((NOMINAL.get(types) if tol is None else tol, _seed_leanings(frames)))
+            series = _steady_leanings(frames)
+            scatter += _scatter_lines(name, s1, series)
+            rows.append((NOMINAL.get(types) if tol is None else tol,
+                         {c: np.array([np.nanmean(x) for x in series[c]]) for c in LEANINGS}))
         if len(rows) > 1:
             band += _band_lines(types, rows)
             if all(x is not None for x, _ in rows):
@@ -122,10 +124,11 @@ def _tolerances(types, asked):
     return [None] + [x for x in asked if x is not None and not (nominal is not None and np.isclose(x, nominal))]
 
 
-def _seed_leanings(frames):
-    """{column: (S,) steady-window mean per seed} of the VF and EE leanings."""
-    return {c: np.array([np.nanmean(df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])])
-                         for df in frames]) for c in LEANINGS}
+def _steady_leanings(frames):
+    """{column: one (K_s,) array per seed}: the VF and EE leanings of each
+    seed's steady-window snapshots."""
+    return {c: [df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])] for df in frames]
+            for c in LEANINGS}
 
 
 def _band_lines(types, rows):
@@ -163,12 +166,11 @@ def _solid_fraction(run):
         return float("nan")
 
 
-def _scatter_lines(types, runs, frames):
-    """Markdown: each seed's VF and EE leanings (steady-window means) beside
-    its solid fraction, then the scatter split and the seeds needed."""
+def _scatter_lines(types, runs, series):
+    """Markdown: each seed's VF and EE leanings (steady-window means of
+    ``series``, from :func:`_steady_leanings`) beside its solid fraction,
+    then the scatter split and the seeds needed."""
     cols = LEANINGS
-    series = {c: [df[c].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])] for df in frames]
-              for c in cols}
     seed_means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in cols}
     phi = np.array([_solid_fraction(r) for r in runs])
     out = ["", f"Leanings per seed ({types}; negative is lateral)", "",

@@ -4,6 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from .angular import AngularFunctions, harmonic_curves
+from .statistics import plateau_estimate
 
 
 def _plt():
@@ -539,10 +540,12 @@ def plot_footprint(extents, threshold, path, label=""):
 
 def plot_leanings_by_tolerance(tolerances, leanings, path, criterion="", unit=""):
     """The stability test of claim 6's leanings: every seed's signed branch
-    anisotropy of vertex-face and edge-edge contacts (the deviatoric part of
-    the fabric per type along the compression axis, seed eq. 3 per type;
-    negative is lateral, toward the minor principal direction) against the
-    contact-type criterion's tolerance, one panel per type.
+    anisotropy of vertex-face and edge-edge contacts (the anisotropy a of the
+    seed's P_Omega(theta) fit, restricted to one contact type, i.e.
+    (5/2)(F_3 - F_1) of that type's fabric tensor,
+    :func:`postproc.pertype.class_statistics`; negative is lateral, toward
+    the minor principal direction) against the contact-type criterion's
+    tolerance, one panel per type.
 
     tolerances: (T,) tolerance values (the criterion's units, e.g. tau x the
     radius for LMGC90's band), drawn on a log axis; leanings: {"VF": (T, S),
@@ -551,8 +554,6 @@ def plot_leanings_by_tolerance(tolerances, leanings, path, criterion="", unit=""
     across tolerances; black: the mean over seeds with its 95 % Student's t
     interval. Writes a PNG to path.
     """
-    from .statistics import plateau_estimate
-
     plt = _plt()
     tol = np.asarray(tolerances, float)
     fig, axes = plt.subplots(1, len(leanings), figsize=(4.4 * len(leanings), 3.8), sharey=True, squeeze=False)
