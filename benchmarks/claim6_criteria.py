@@ -97,9 +97,9 @@ def main():
             lines.append(f"| {name} | {len(frames)} | {n} | {c6['verdict']} | {c6['numbers']} |")
             print(f"{name}: {c6['verdict']}: {c6['numbers']}", flush=True)
             series = _steady_leanings(frames)
-            scatter += _scatter_lines(name, s1, series)
-            rows.append((NOMINAL.get(types) if tol is None else tol,
-                         {c: np.array([np.nanmean(x) for x in series[c]]) for c in LEANINGS}))
+            means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in LEANINGS}
+            scatter += _scatter_lines(name, s1, series, means)
+            rows.append((NOMINAL.get(types) if tol is None else tol, means))
         if len(rows) > 1:
             band += _band_lines(types, rows)
             if all(x is not None for x, _ in rows):
@@ -166,12 +166,11 @@ def _solid_fraction(run):
         return float("nan")
 
 
-def _scatter_lines(types, runs, series):
-    """Markdown: each seed's VF and EE leanings (steady-window means of
-    ``series``, from :func:`_steady_leanings`) beside its solid fraction,
-    then the scatter split and the seeds needed."""
+def _scatter_lines(types, runs, series, seed_means):
+    """Markdown: each seed's VF and EE leanings (``seed_means``, the
+    steady-window means of ``series`` from :func:`_steady_leanings`) beside
+    its solid fraction, then the scatter split and the seeds needed."""
     cols = LEANINGS
-    seed_means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in cols}
     phi = np.array([_solid_fraction(r) for r in runs])
     out = ["", f"Leanings per seed ({types}; negative is lateral)", "",
            "| seed | solid fraction | VF | EE |", "|---|---|---|---|"]
