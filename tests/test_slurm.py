@@ -134,7 +134,10 @@ def test_intermediate_preset_fills_a_16_core_node(tmp_path):
     p = resolve("intermediate", "polyhedra")
     assert (p["n_particles"], p["kappa"], p["inertial_number"]) == (5000, 3000.0, 5e-3)
     assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5
-    assert resolve("intermediate", "spheres")["n_particles"] == 1000
+    # S2 at the same N and as in the default (frictionless compaction, I = 1e-3)
+    for name, n in (("small", 200), ("intermediate", 5000)):
+        assert resolve(name, "spheres") == {**resolve("default", "spheres"), "n_particles": n}
+        assert resolve(name, "polyhedra") == {**resolve("default", "polyhedra"), "n_particles": n}
     e = estimate(p)
     steps = (COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45     # the default's time step
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]

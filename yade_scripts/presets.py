@@ -28,10 +28,13 @@
              denser state (about 0.572) is nearer the paper's 0.6.
 ``loose``    the default with both samples compacted at friction 0.5.
 ``dense``    the default with both samples compacted frictionless.
-``intermediate``  the default's kappa and I with 5000 polyhedra and 1000
-             spheres (the same box: a sphere of size d has 5.2 x the volume
-             of our polyhedra); one 16-core node, e.g.
-             ``make study PRESET=intermediate ENSEMBLE=16 JOBS=16``
+``small``    the default with 200 polyhedra and 200 spheres: the small end
+             of the size front (docs/front.md, "The size front").
+``intermediate``  the default with 5000 polyhedra and 5000 spheres (the
+             same kappa, I and preparation; S2 at the same N as S1, so the
+             two samples compare as at 1000): the large end of the size
+             front, e.g. ``make study PRESET=intermediate`` (3 + 3 seeds on
+             2 cores) or ``ENSEMBLE=16 JOBS=16`` on one 16-core node
              (yade_scripts.slurm.estimate gives the core-hours).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres) at
              kappa = 1e4, I = 1e-3, I_c = 1e-2, prepared like the default
@@ -80,11 +83,11 @@ PRESETS = {
         "polyhedra": {},
         "spheres": {"compaction_friction": 0.0},
     },
-    "intermediate": {
-        "common": {},
-        "polyhedra": {"n_particles": 5000},
-        "spheres": {"compaction_friction": 0.0},
-    },
+    # the size front: the default at 200 and at 5000 grains per sample
+    "small": {"common": {"n_particles": 200}, "polyhedra": {},
+              "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3}},
+    "intermediate": {"common": {"n_particles": 5000}, "polyhedra": {},
+                     "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3}},
     # prepared like the default (solid fraction about 0.6 in both): the
     # polyhedra compacted at mu = 0.5 (frictionless they reach 0.71), the
     # spheres frictionless. The polyhedra step at 0.45 of the critical one,
