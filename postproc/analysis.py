@@ -79,7 +79,10 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     over all contacts (walls as their own class) and sum to the total;
     ``ct_qp_<k>`` is class k's share of q_axial/p. ``ct_frac_<k>_lo`` /
     ``_hi`` are the proportions with the criterion's parameter (footprint
-    threshold or angular tolerance) halved and doubled. ``z_points`` counts
+    threshold, angular tolerance, the point count's alpha or the common
+    plane's band) halved and doubled, and so are ``ct_fratio_<k>_lo``,
+    ``ct_fabric_<k>_lo``, ``strong_frac_FF_lo``, ``weak_frac_FF_lo`` (and
+    ``_hi``), claim 6's quantities for its band test. ``z_points`` counts
     a contact as 1, 2 or 3 points (simple, double, triple), as a multi-point
     contact code would, beside ``z`` which counts every pair once (the
     paper's convention). ``total`` is the (3, 3) stress over all contacts
@@ -107,6 +110,7 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
             row[f"ct_qp_{k}"] = qk
         if lab is labels:
             row["ct_partial_sum_reldiff"] = relative_difference(sum(parts.values()), total)
+    strong = strong_mask(fn) if len(fn) else np.zeros(0, bool)
     for tag, other in res.variants.items():
         other = other[sel]
         og = group_labels_of(other)
@@ -114,6 +118,15 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
             row[f"ct_frac_{k}_{tag}"] = float(np.mean(other == k))
         for k in GROUPS:
             row[f"ct_frac_{k}_{tag}"] = float(np.mean(og == k))
+        # claim 6 with the parameter halved and doubled (the band test):
+        # force ratio and signed fabric of each type, FF's share of each network
+        st = class_statistics(other, fn, L, axis) if len(fn) else {}
+        for k in PAIR_TYPES:
+            d = st.get(k)
+            row[f"ct_fratio_{k}_{tag}"] = d["mean_force_ratio"] if d else np.nan
+            row[f"ct_fabric_{k}_{tag}"] = d["fabric_a"] if d else np.nan
+        for name, net in (("strong", strong), ("weak", ~strong)):
+            row[f"{name}_frac_FF_{tag}"] = float(np.mean(other[net] == "FF")) if net.any() else np.nan
     rel = None
     if res.rel is not None and len(res.rel):
         # the footprint extents of the force-bearing polyhedra pairs, over d

@@ -31,19 +31,23 @@ from .tables import read_contact_table
 BAD_INPUT = (InputError, DumpFormatError)
 
 
-def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None):
+def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None, snapshots=None):
     """(count, iterator of Snapshot or exception, close, shapes) for a dump
-    or table; ``shapes`` is the dump's (vertices, triangles, faces) or None."""
+    or table; ``shapes`` is the dump's (vertices, triangles, faces) or None.
+    ``snapshots``: indices of a dump's snapshots to read (None: all)."""
 
     if fmt is not None or atoms is not None or sniff(path) is not None:
         if volume is not None or box is not None or cell is not None:
             raise InputError("--volume, --box and --cell are for flat contact tables; "
                              "a LAMMPS/LIGGGHTS dump has its box")
+        if snapshots is not None:
+            raise InputError("a selection of snapshots is for dumps; a LAMMPS/LIGGGHTS dump is read whole")
         snaps = read_text_dump(path, fmt, atoms)
         return len(snaps), iter(snaps), lambda: None, None
     ext = os.path.splitext(path)[1].lower()
     if ext in (".csv", ".parquet", ".pq"):
-
+        if snapshots is not None:
+            raise InputError("a selection of snapshots is for dumps; a contact table is read whole")
         snaps = read_contact_table(path, volume=volume, box=box, cell=cell)
         return len(snaps), iter(snaps), lambda: None, None
     if volume is not None or box is not None or cell is not None:
@@ -53,9 +57,13 @@ def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None):
     if len(reader) == 0:
         reader.close()
         raise InputError(f"{path}: the dump holds no snapshots")
+    chosen = range(len(reader)) if snapshots is None else sorted(set(int(k) for k in snapshots))
+    if snapshots is not None and not (chosen and 0 <= chosen[0] and chosen[-1] < len(reader)):
+        reader.close()
+        raise InputError(f"{path}: snapshots {list(snapshots)} are not among its {len(reader)} snapshots")
 
     def gen():
-        for i in range(len(reader)):
+        for i in chosen:
             try:
                 yield reader.read(i)
             except DumpFormatError as exc:
@@ -66,7 +74,7 @@ def open_source(path, volume=None, box=None, cell=None, fmt=None, atoms=None):
     except DumpFormatError:
         reader.close()
         raise
-    return len(reader), gen(), reader.close, shapes
+    return len(chosen), gen(), reader.close, shapes
 
 
 def pooled_force_pdf(forces):
@@ -129,6 +137,8 @@ class AnalysisOptions:
         tau of "commonplane", in units of the centre-to-extreme-vertex distance.
     threshold : "footprint" threshold, in units of the pair size d.
     theta_deg : "angular" tolerance, degrees.
+    snapshots : indices of a dump's snapshots to analyse (None: all); the
+        strains are from the last isotropic one among them (give it too).
     """
     axis: object = "z"
     volume: float | None = None
@@ -142,6 +152,7 @@ class AnalysisOptions:
     tolerance: float | None = None
     threshold: float | None = None
     theta_deg: float | None = None
+    snapshots: tuple | None = None
 
     def check(self):
         """Raise InputError (one line) for options that cannot work."""
@@ -169,7 +180,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
         e = axis_vector(o.axis)
     except ValueError as exc:
         raise InputError(f"--axis: {exc}") from None
-    count, snaps, close, shapes = open_source(path, o.volume, o.box, o.cell, o.fmt, o.atoms)
+    count, snaps, close, shapes = open_source(path, o.volume, o.box, o.cell, o.fmt, o.atoms, o.snapshots)
     try:
         tables = classifier_for(shapes, o.types, o.threshold, o.theta_deg, o.tolerance)
     except InputError as exc:

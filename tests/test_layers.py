@@ -16,7 +16,8 @@ LAYERS = [
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
                  "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
-    ("study", {"study.claims", "study.report", "study.front", "study.dilatancy", "study.branchlength"}),
+    ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
+               "study.branchlength", "study.sizefront"}),
     ("interface", {"many", "cli"}),
 ]
 LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}

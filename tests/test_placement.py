@@ -72,3 +72,46 @@ def test_exact_placement_refuses_or_grows_when_too_dense(grains):
     box, pos = sample.place_exact_in_box(vol, d / 2, 0.6, 2.0, np.random.default_rng(0), og.overlaps,
                                          grow=1.2, max_batches=20)
     assert vol.sum() / np.prod(box) < 0.6 and np.isfinite(pos).all()
+
+
+def _place_all_pairs(volumes, radii, fraction, aspect, rng, overlaps, batch=64):
+    """The placement with every placed grain tested against every trial (the
+    O(n^2) form): the reference the grid of cells must reproduce exactly."""
+    vol, r = np.asarray(volumes, float), np.asarray(radii, float)
+    L = (vol.sum() / fraction / aspect) ** (1 / 3)
+    box = np.array([L, L, aspect * L])
+    pos = np.full((len(vol), 3), np.nan)
+    placed = []
+    for k in np.argsort(-r, kind="stable"):
+        lo, hi = np.full(3, r[k]), box - r[k]
+        P = np.array(placed, dtype=int)
+        while True:
+            X = lo + (hi - lo) * rng.random((batch, 3))
+            if not len(P):
+                pos[k] = X[0]
+                break
+            near = np.linalg.norm(X[:, None, :] - pos[P][None, :, :], axis=2) < r[k] + r[P][None, :]
+            free = ~near.any(axis=1)
+            last = int(np.argmax(free)) if free.any() else batch - 1
+            rows, cols = np.nonzero(near[:last + 1])
+            hit = np.zeros(last + 1, bool)
+            if len(rows):
+                hit[rows[overlaps(k, X[rows], P[cols], pos[P[cols]])]] = True
+            ok = np.flatnonzero(~hit)
+            if len(ok):
+                pos[k] = X[ok[0]]
+                break
+        placed.append(k)
+    return box, pos
+
+
+@pytest.mark.parametrize("fraction, batch", [(0.2, 64), (0.25, 8), (0.05, 64)])
+def test_cell_grid_gives_the_all_pairs_sample(grains, fraction, batch):
+    """The grid of cells finds exactly the pairs whose bounding spheres meet,
+    so the sample is the one of testing every placed grain, bit for bit
+    (dense, sparse, and small batches where many trials are busy)."""
+    d, own, quat, vol = grains
+    og = overlap.OrientedGrains(own, quat)
+    box, pos = sample.place_exact(vol, d / 2, fraction, 2.0, np.random.default_rng(11), og.overlaps, batch=batch)
+    box2, pos2 = _place_all_pairs(vol, d / 2, fraction, 2.0, np.random.default_rng(11), og.overlaps, batch=batch)
+    assert np.array_equal(box, box2) and np.array_equal(pos, pos2)

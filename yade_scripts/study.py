@@ -14,7 +14,8 @@ each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
 ``OUT/schedule.json`` holds its attempts and idle core-time). Complete dumps are never run again, so a rerun only does what is
 missing. Every dump is analysed (:func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis
-folder; ``OUT/manifest.json`` lists the runs and their status, and
+folder, and every usable S1 dump once more per other contact count
+(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window); ``OUT/manifest.json`` lists the runs and their status, and
 the report (:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A failed run is reported and
 everything else still builds; the exit code is non-zero when a run failed.
 """
@@ -219,6 +220,7 @@ def analyse_and_report(out, runs, attempts=None):
     import json
 
     from postproc.pipeline import BAD_INPUT, analyze_path
+    from postproc.study.counts import analyse_counts
     from postproc.study.report import build_report
 
     def analyse(dump, analysis):
@@ -278,6 +280,11 @@ def analyse_and_report(out, runs, attempts=None):
                 why = "ok" if bad is None else f"analysis failed ({bad})"
                 if why != "ok":
                     failed.append(f"{s} {label}")
+            if s == "polyhedra" and why in ("ok", "partial"):     # claim 6 by the other contact counts
+                done, bad = analyse_counts(dump, analysis)
+                for line in bad:
+                    print(f"[study] {line}", flush=True)
+                extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
                                 "analysis": os.path.relpath(analysis, out),
                                 "info": os.path.relpath(info, out), "status": why, **extra})

@@ -23,12 +23,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..statistics import Estimate, difference, plateau_estimate, seeds_needed, steady_indices
+from ..statistics import Estimate, difference, plateau_estimate, seed_scatter, seeds_needed, steady_indices
 
 NEGLIGIBLE = 0.05
 SFF_TOLERANCE = 0.15
 THROUGHOUT = 0.9
 EARLY = 0.1        # the first 10 % of eps_q is left out of "all along the shear"
+BAND_STABLE = 0.03  # claim 6's band test: a leaning is stable when its shift stays inside +-0.03
+LEANINGS = ("VF", "EE")
+BAND = {"lo": 0.5, "hi": 2.0}   # the criterion's parameter halved, doubled (summary columns *_lo, *_hi)
 
 CLAIMS = (
     "q/p of polyhedra is higher than that of spheres throughout shear.",
@@ -193,7 +196,51 @@ def evaluate(samples):
     add(5, "; ".join(parts) + f" (holds: residual within ±{SFF_TOLERANCE})", conds, q1.method)
 
     # 6. face-face strong and along the axis; vertex-face, edge-edge weak and lateral
-    checks, conds = [], []
+    c6 = claim6(s1)
+    add(6, c6["numbers"], c6["conditions"], c6["basis"])
+    return out
+
+
+def _column(tag, name):
+    """The summary column of claim 6's quantity ``name`` with the contact
+    criterion's parameter at its own value (tag "") or halved/doubled
+    ("lo"/"hi", see :func:`postproc.analysis.contact_type_columns`)."""
+    return f"{name}_{tag}" if tag else name
+
+
+def _criterion_text(df, tag=""):
+    """How the contacts of a summary were typed, with the parameter used."""
+    method = df["ct_method"].iloc[0] if "ct_method" in df else None
+    factor = BAND.get(tag, 1.0)
+    if method == "footprint":
+        return f"footprint criterion, threshold {factor * df['ct_threshold'].iloc[0]:g} d"
+    if method == "points":
+        return f"contact-point count, tolerance {factor * df['ct_threshold'].iloc[0]:g} V/area"
+    if method == "commonplane":
+        return f"LMGC90's common-plane count, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
+    if "ct_theta_deg" in df:
+        return f"angular criterion, tolerance {factor * df['ct_theta_deg'].iloc[0]:g} deg"
+    return None
+
+
+def claim6(s1, tag=""):
+    """Claim 6 on the S1 summaries ``s1`` (one DataFrame per seed, typed by
+    one contact criterion): face-face contacts carry more than the mean
+    force and lean along the compression axis, and their share of the
+    strong network exceeds that of the weak; vertex-face and edge-edge
+    contacts carry less than the mean force and lean toward the lateral
+    (minor principal) directions. Leaning: the signed branch-vector
+    anisotropy of a type, (5/2)(F_33 - F_11) of its fabric tensor,
+    negative when lateral (:func:`postproc.pertype.class_statistics`).
+
+    ``tag``: "" for the criterion's own parameter, "lo"/"hi" for it halved
+    or doubled (the band test; the ``*_lo``/``*_hi`` columns).
+    Returns {"numbers": text, "conditions": [+1/-1/0 per condition],
+    "verdict", "basis", "estimates": {name: Estimate}}."""
+    def est(col):
+        return plateau(s1, _column(tag, col)) if s1 else Estimate(np.nan, np.nan, 0, 0, "no run")
+
+    checks, conds, estimates = [], [], {}
     for col, sign, thr, what in (
             ("ct_fratio_FF", 1, 1.0, "FF mean force / mean"),
             ("ct_fabric_FF", 1, 0.0, "FF signed branch anisotropy"),
@@ -201,22 +248,65 @@ def evaluate(samples):
             ("ct_fratio_EE", -1, 1.0, "EE mean force / mean"),
             ("ct_fabric_VF", -1, 0.0, "VF signed branch anisotropy"),
             ("ct_fabric_EE", -1, 0.0, "EE signed branch anisotropy")):
-        e = est(s1, col)
+        e = estimates[col] = est(col)
         conds.append(sign * _side(e, thr))
         checks.append(f"{what} {e.text()} ({'>' if sign > 0 else '<'} {thr:g}{_seeds_hint(e, thr)})")
-    fs, fw = est(s1, "strong_frac_FF"), est(s1, "weak_frac_FF")
-    dfw = difference(fs, fw)
-    conds.append(_side(dfw))
+    fs, fw = est("strong_frac_FF"), est("weak_frac_FF")
+    estimates["strong_frac_FF"], estimates["weak_frac_FF"] = fs, fw
+    conds.append(_side(difference(fs, fw)))
     checks.append(f"FF share of the strong network {fs.text()} vs weak {fw.text()}")
-    method = s1[0]["ct_method"].iloc[0] if s1 and "ct_method" in s1[0] else None
-    if method == "footprint":
-        checks.append(f"footprint criterion, threshold {s1[0]['ct_threshold'].iloc[0]:g} d")
-    elif method == "points":
-        checks.append(f"contact-point count, tolerance {s1[0]['ct_threshold'].iloc[0]:g} V/area")
-    elif method == "commonplane":
-        checks.append(f"LMGC90's common-plane count, band {s1[0]['ct_threshold'].iloc[0]:g} x the radius")
-    elif s1 and "ct_theta_deg" in s1[0]:
-        checks.append(f"angular criterion, tolerance {s1[0]['ct_theta_deg'].iloc[0]:g} deg")
-    add(6, "; ".join(checks), conds if s1 and "ct_fratio_FF" in s1[0] else [0],
-        est(s1, "ct_fratio_FF").method)
+    criterion = _criterion_text(s1[0], tag) if s1 else None
+    if criterion:
+        checks.append(criterion)
+    typed = bool(s1) and _column(tag, "ct_fratio_FF") in s1[0]
+    conds = conds if typed else [0]
+    return {"numbers": "; ".join(checks), "conditions": conds, "verdict": _verdict(conds) if typed else "inconclusive",
+            "basis": est("ct_fratio_FF").method, "estimates": estimates}
+
+
+def seed_leanings(s1, tag=""):
+    """{"VF": (n_seeds,), "EE": (n_seeds,)}: each seed's steady-window mean
+    of the type's signed branch anisotropy (claim 6's leaning; negative is
+    lateral), with the criterion's parameter as ``tag`` says."""
+    out = {}
+    for k in LEANINGS:
+        col = _column(tag, f"ct_fabric_{k}")
+        out[k] = np.array([np.nanmean(df[col].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])])
+                           if col in df else np.nan for df in s1])
     return out
+
+
+def leaning_scatter(s1):
+    """{"VF": SeedScatter, "EE": SeedScatter}: how the seeds' leanings
+    scatter (:func:`postproc.statistics.seed_scatter`: between seeds, the
+    window noise of one seed, and the persistent per-sample part)."""
+    return {k: seed_scatter([df[f"ct_fabric_{k}"].to_numpy(float)[steady_indices(df["eps_q"], df["stage"])]
+                             for df in s1 if f"ct_fabric_{k}" in df]) for k in LEANINGS}
+
+
+def band_test(s1):
+    """The band test of claim 6's leanings: with the contact criterion's
+    parameter halved ("lo") and doubled ("hi"), each leaning's level over
+    seeds and its shift from the nominal one, paired seed by seed (95 %,
+    Student's t over seeds), and a word: "stable" when the shift's interval
+    lies inside +-BAND_STABLE (the band the contact-type proportions are
+    held to), "moves" when it lies outside, else "undecided".
+
+    Returns a list of dicts, one per tag ("", "lo", "hi") with "tag",
+    "factor" and for each leaning k: k (Estimate of the level), and for
+    "lo"/"hi" f"{k}_shift" (Estimate) and f"{k}_word"."""
+    nominal = seed_leanings(s1)
+    rows = []
+    for tag in ("", "lo", "hi"):
+        lean = seed_leanings(s1, tag)
+        row = {"tag": tag, "factor": BAND.get(tag, 1.0)}
+        for k in LEANINGS:
+            row[k] = plateau_estimate([[v] for v in lean[k]])
+            if tag:
+                shift = plateau_estimate([[v] for v in lean[k] - nominal[k]])
+                lo, hi = shift.ci()
+                row[f"{k}_shift"] = shift
+                row[f"{k}_word"] = ("stable" if -BAND_STABLE < lo and hi < BAND_STABLE else
+                                    "moves" if lo > BAND_STABLE or hi < -BAND_STABLE else "undecided")
+        rows.append(row)
+    return rows

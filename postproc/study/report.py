@@ -29,7 +29,7 @@ import shutil
 import numpy as np
 import pandas as pd
 
-from .claims import evaluate, plateau
+from .claims import BAND, BAND_STABLE, band_test, claim6, evaluate, plateau
 from .dilatancy import peak_summary
 from .. import plots
 from ..analysis import analyze_snapshot, group_labels_of
@@ -60,6 +60,8 @@ def discover(study):
                 for k in ("dump", "analysis", "info"):
                     if r.get(k) and not os.path.isabs(r[k]):
                         r[k] = os.path.join(study, r[k])
+                r["counts"] = {c: f if os.path.isabs(f) else os.path.join(study, f)
+                               for c, f in (r.get("counts") or {}).items()}
         return runs
     runs = {}
     for s in SAMPLES:
@@ -102,6 +104,44 @@ def _summaries(runs):
                 frames.append(df)
         out[s] = frames
     return out
+
+
+def count_summaries(runs, summaries):
+    """{count: [summary DataFrame per usable S1 run]}: the primary
+    analysis under its own count (its ``ct_method``), then each other count
+    the study analysed (:mod:`postproc.study.counts`), for the runs that
+    have it. Partial runs' early shear rows are relabelled as in
+    :func:`_summaries`."""
+    s1 = summaries.get("polyhedra", [])
+    out = {}
+    if s1 and "ct_method" in s1[0]:
+        out[str(s1[0]["ct_method"].iloc[0])] = s1
+    for r in _usable(runs, "polyhedra"):
+        for count, folder in (r.get("counts") or {}).items():
+            p = os.path.join(folder, "summary.csv")
+            if count in out and out[count] is s1 or not os.path.exists(p):
+                continue
+            other = _summaries({"polyhedra": [{**r, "analysis": folder, "counts": {}}]})["polyhedra"]
+            out.setdefault(count, []).extend(other)
+    return out
+
+
+def claim6_rows(counts):
+    """Claim 6 per count and per band: a list of dicts (count, seeds,
+    factor of the count's parameter, verdict, VF and EE leanings,
+    their band-test shifts and words, numbers), from
+    :func:`postproc.study.claims.claim6` and :func:`~postproc.study.claims.band_test`."""
+    rows = []
+    for count, frames in counts.items():
+        band = {b["tag"]: b for b in band_test(frames)}
+        for tag in ("lo", "", "hi"):
+            c6, b = claim6(frames, tag), band[tag]
+            rows.append({"count": count, "seeds": len(frames), "factor": BAND.get(tag, 1.0),
+                         "verdict": c6["verdict"], "VF": b["VF"].text(3), "EE": b["EE"].text(3),
+                         "VF_shift": b.get("VF_shift").text(3) + " " + b["VF_word"] if tag else "",
+                         "EE_shift": b.get("EE_shift").text(3) + " " + b["EE_word"] if tag else "",
+                         "numbers": c6["numbers"]})
+    return rows
 
 
 def comparison_table(summaries, reference):
@@ -417,8 +457,10 @@ def build_report(study, out=None, reference=REFERENCE):
     comp.to_csv(os.path.join(out, "comparison.csv"), index=False)
     claims = evaluate(summaries)
     pd.DataFrame(claims).to_csv(os.path.join(out, "claims.csv"), index=False)
+    by_count = claim6_rows(count_summaries(runs, summaries))
+    pd.DataFrame(by_count).to_csv(os.path.join(out, "claim6.csv"), index=False)
 
-    md = _markdown(study, runs, summaries, ref, rows, claims, figures, problems)
+    md = _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_count)
     with open(os.path.join(out, "report.md"), "w") as fh:
         fh.write(md)
     _html(md, os.path.join(out, "report.html"))
@@ -429,7 +471,7 @@ def _fmt(x, digits=2):
     return "–" if x is None or not np.isfinite(x) else f"{x:.{digits}f}"
 
 
-def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
+def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_count=()):
     n = {s: len(summaries.get(s, [])) for s in SAMPLES}
     lines = [f"# Study report: {os.path.basename(os.path.abspath(study))}", "",
              f"Generated {datetime.datetime.now().isoformat(timespec='seconds')} from `{study}`. "
@@ -478,6 +520,19 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems):
         numbers = c["numbers"].replace("|", "\\|")
         lines.append(f"| {c['id']} | {c['claim']} | **{c['verdict']}** | {numbers} "
                      f"(intervals: {c['basis']}) |")
+    if by_count:
+        lines += ["", "## Claim 6 by contact count", "",
+                  "Claim 6 rests on how contacts are typed. Each count types the S1 contacts of the steady "
+                  "window on its own (`postproc/study/counts.py`), with its parameter halved, as is and doubled "
+                  "(the band test): a leaning is *stable* when its shift from the nominal one, paired over "
+                  f"seeds, stays inside ±{BAND_STABLE} with its 95 % interval, *moves* when it lies outside.", "",
+                  "| count | seeds | parameter | verdict | VF leaning | EE leaning | VF shift | EE shift |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for r in by_count:
+            lines.append(f"| {r['count']} | {r['seeds']} | × {r['factor']:g} | **{r['verdict']}** | {r['VF']} | "
+                         f"{r['EE']} | {r['VF_shift'] or 'nominal'} | {r['EE_shift'] or 'nominal'} |")
+        lines += ["", "Numbers at each count's own parameter:", ""]
+        lines += [f"* {r['count']}: {r['numbers']}" for r in by_count if r["factor"] == 1.0]
     lines += ["", "## Figures", ""]
     for name, cap in figures:
         lines += [f"![{cap}]({name})", "", f"*{cap}*", ""]

@@ -1,0 +1,88 @@
+"""Claim 6 counted more than one way: the study's extra analyses of each S1
+dump, one per contact count beside the primary one.
+
+The paper's claim 6 rests on how contacts are typed (simple, double,
+triple; VV ... FF), and two counts disagree on it (docs/lmgc90-contacts.md):
+our contact-point count from the overlap (``types="points"``, the analysis
+default, which the study's primary analysis uses) and LMGC90's common-plane
+count (``types="commonplane"``). The study therefore analyses every usable
+S1 dump once more per count of :data:`EXTRA_COUNTS`, on the snapshots claim
+6 reads only: the steady window of the primary analysis (shear snapshots with
+eps_q >= half its final value, :func:`postproc.statistics.steady_indices`)
+and the isotropic snapshot the strains start from. The steady window of such a
+summary is the primary one (same final eps_q, same snapshots above half
+of it), so the counts are compared on the same snapshots. Each analysis
+also carries claim 6's quantities with the count's parameter halved and
+doubled (the ``*_lo``/``*_hi`` columns of
+:func:`postproc.analysis.contact_type_columns`), from which
+:func:`postproc.study.claims.band_test` decides the band test.
+
+Outputs go next to the primary analysis: ``<analysis>-<count>/summary.csv``.
+"""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+import pandas as pd
+
+from ..errors import InputError
+from ..pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+from ..schema import DumpReader
+from ..statistics import steady_indices
+
+#: the counts analysed beside the primary one (the analysis default, "points")
+EXTRA_COUNTS = ("commonplane",)
+
+
+def count_folder(analysis, count):
+    """The folder of a run's analysis with ``count``, beside its primary
+    analysis folder ``analysis``."""
+    return f"{analysis.rstrip(os.sep)}-{count}"
+
+
+def claim6_snapshots(summary, names):
+    """Indices (into the dump's snapshot ``names``) that claim 6 reads: the
+    isotropic snapshots (the strains' reference) and the steady window of
+    the primary ``summary`` (a DataFrame with columns snapshot, eps_q,
+    stage). Raises InputError when a summary snapshot is not in the dump."""
+    keep = set(steady_indices(summary["eps_q"], summary["stage"]).tolist())
+    keep |= set(np.flatnonzero(summary["stage"].astype(str).to_numpy() == "isotropic").tolist())
+    out = []
+    for k in sorted(keep):
+        name = str(summary["snapshot"].iloc[k]).zfill(6)
+        if name not in names:
+            raise InputError(f"snapshot {name} of the summary is not in the dump (summary and dump disagree)")
+        out.append(names.index(name))
+    return tuple(sorted(out))
+
+
+def analyse_counts(dump, analysis, counts=EXTRA_COUNTS, progress=False):
+    """Analyse the S1 ``dump`` with each contact count of ``counts``, on the
+    snapshots of :func:`claim6_snapshots` of its primary analysis (folder
+    ``analysis``, with its summary.csv). An analysis already made after the
+    primary one is kept. Returns {count: folder} of the analyses that exist,
+    and a list of one-line problems (a count that failed is left out and
+    named there; the others go on)."""
+    primary = os.path.join(analysis, "summary.csv")
+    done, problems = {}, []
+    if not os.path.exists(primary):
+        return done, [f"{dump}: no primary analysis ({primary}), so no other count"]
+    summary = None
+    for count in counts:
+        folder = count_folder(analysis, count)
+        out = os.path.join(folder, "summary.csv")
+        if os.path.exists(out) and os.path.getmtime(out) >= os.path.getmtime(primary):
+            done[count] = folder
+            continue
+        try:
+            if summary is None:
+                summary = pd.read_csv(primary, dtype={"snapshot": str})
+                with DumpReader(dump) as reader:
+                    names = list(reader.names)
+                chosen = claim6_snapshots(summary, names)
+            analyze_path(dump, folder, AnalysisOptions(types=count, snapshots=chosen), progress=progress)
+            done[count] = folder
+        except BAD_INPUT as exc:
+            problems.append(f"{dump}: the {count} count failed: {exc}")
+    return done, problems

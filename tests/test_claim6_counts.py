@@ -1,0 +1,143 @@
+"""Claim 6 counted more than one way, in the study layer: the band columns
+of the analysis (claim 6's quantities with the count's parameter halved and
+doubled), the extra count of a study's S1 dump on claim 6's snapshots, the
+band test's words on hand-built seeds, and the report's section."""
+import json
+import os
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from builders import snapshot_dicts, write_snapshot
+from postproc.pipeline import AnalysisOptions, analyze_path
+from postproc.schema import DumpWriter
+from postproc.statistics import steady_indices
+from postproc.study.claims import BAND_STABLE, band_test, claim6
+from postproc.study.counts import analyse_counts, claim6_snapshots, count_folder
+from test_footprint_types import kernel_snapshot
+
+
+@pytest.fixture(scope="module")
+def dump(tmp_path_factory):
+    """A polyhedra dump of 7 snapshots (kernel contact sets of random grains,
+    each posed anew): one isotropic, six of shear with the box shortened
+    along z by 1 % each."""
+    path = str(tmp_path_factory.mktemp("c6") / "run.h5")
+    with DumpWriter(path, "polyhedra", {}) as w:
+        for k in range(7):
+            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
+            if k == 0:
+                w.write_shapes(verts, tris, faces)
+            snap.volumes = np.ones(len(snap.body_ids))
+            snap.masses = np.ones(len(snap.body_ids))
+            hi = snap.box_hi.copy()
+            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
+            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
+                           wall_forces=np.zeros((6, 3)))
+    return path
+
+
+def _summary(dump, out, **kw):
+    analyze_path(dump, out, AnalysisOptions(errors=False, **kw), progress=False)
+    return pd.read_csv(os.path.join(out, "summary.csv"), dtype={"snapshot": str})
+
+
+def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path):
+    """summary(alpha)'s *_hi columns equal summary(2 alpha)'s own, and its
+    *_lo columns summary(alpha / 2)'s, exactly: the band test reads the
+    same classification as an analysis at that parameter."""
+    base = _summary(dump, str(tmp_path / "a"), tolerance=0.2)
+    for factor, tag in ((2.0, "hi"), (0.5, "lo")):
+        other = _summary(dump, str(tmp_path / tag), tolerance=0.2 * factor)
+        for col in ("ct_fratio_FF", "ct_fratio_VF", "ct_fratio_EE", "ct_fabric_FF", "ct_fabric_VF",
+                    "ct_fabric_EE", "strong_frac_FF", "weak_frac_FF", "ct_frac_triple"):
+            np.testing.assert_array_equal(base[f"{col}_{tag}"].to_numpy(float), other[col].to_numpy(float),
+                                          err_msg=f"{col}_{tag}")
+    assert base["ct_frac_FF"].gt(0).any() and base["ct_frac_VF"].gt(0).any()
+    # at the nominal parameter the FF shares are the networks' own columns
+    assert np.isfinite(base["strong_frac_FF"]).all()
+
+
+def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path):
+    """The commonplane count of a study's S1 dump: only the isotropic
+    snapshot and the primary steady window are analysed, the strains are
+    the primary ones, and the steady window of the count's summary is the
+    primary one; a second call keeps it; a failed count is one line."""
+    ana = str(tmp_path / "analysis")
+    primary = _summary(dump, ana)
+    steady = primary["snapshot"].iloc[steady_indices(primary["eps_q"], primary["stage"])].tolist()
+    done, problems = analyse_counts(dump, ana, counts=("commonplane",))
+    assert problems == [] and done == {"commonplane": count_folder(ana, "commonplane")}
+    cp = pd.read_csv(os.path.join(done["commonplane"], "summary.csv"), dtype={"snapshot": str})
+    assert cp["snapshot"].tolist() == [primary["snapshot"].iloc[0]] + steady
+    assert (cp["ct_method"] == "commonplane").all()
+    merged = cp.merge(primary, on="snapshot", suffixes=("", "_p"))
+    np.testing.assert_array_equal(merged["eps_q"], merged["eps_q_p"])
+    assert cp["snapshot"].iloc[steady_indices(cp["eps_q"], cp["stage"])].tolist() == steady
+    mtime = os.path.getmtime(os.path.join(done["commonplane"], "summary.csv"))
+    assert analyse_counts(dump, ana, counts=("commonplane",))[0] == done
+    assert os.path.getmtime(os.path.join(done["commonplane"], "summary.csv")) == mtime
+    done, problems = analyse_counts(dump, ana, counts=("nosuchcount",))
+    assert done == {} and len(problems) == 1 and "nosuchcount" in problems[0]
+    with pytest.raises(Exception, match="not in the dump"):
+        claim6_snapshots(primary.assign(snapshot="999999"), ["000000"])
+
+
+def _seed(vf, vf_lo, ee=-0.1, n=6, e=0.0):
+    """A seed's summary: constant values in a steady window of n shear rows
+    (``e`` moves every other quantity of claim 6, so that seeds scatter)."""
+    eq = np.linspace(0.0, 0.3, n + 1)
+    cols = {"eps_q": eq, "stage": ["isotropic"] + ["shear"] * n, "ct_method": "points", "ct_threshold": 0.1}
+    for tag, v in (("", vf), ("lo", vf_lo), ("hi", vf)):
+        s = f"_{tag}" if tag else ""
+        cols.update({f"ct_fabric_VF{s}": v, f"ct_fabric_EE{s}": ee + e, f"ct_fratio_FF{s}": 1.3 + e,
+                     f"ct_fratio_VF{s}": 0.7 + e, f"ct_fratio_EE{s}": 0.6 + e, f"ct_fabric_FF{s}": 0.2 + e,
+                     f"strong_frac_FF{s}": 0.5 + e, f"weak_frac_FF{s}": 0.3 - e})
+    return pd.DataFrame(cols)
+
+
+@pytest.mark.parametrize("shifts, word", [
+    ((0.01, 0.0, -0.01), "stable"),        # mean 0, sd 0.01: +-4.30 x 0.0058 = +-0.025 < 0.03
+    ((0.10, 0.11, 0.09), "moves"),         # 0.10 +- 0.025: above 0.03
+    ((0.0, 0.06, -0.03), "undecided"),     # 0.01 +- 0.114: straddles 0.03
+])
+def test_band_test_words(shifts, word):
+    seeds = [_seed(-0.05, -0.05 + s) for s in shifts]
+    rows = {r["tag"]: r for r in band_test(seeds)}
+    assert rows["lo"]["VF_shift"].mean == pytest.approx(np.mean(shifts), abs=1e-15)
+    assert rows["lo"]["VF_word"] == word
+    assert rows["hi"]["VF_word"] == "stable" and rows["hi"]["VF_shift"].mean == 0
+    lo, hi = rows["lo"]["VF_shift"].ci()
+    assert (hi - lo) / 2 == pytest.approx(4.302652729911275 * np.std(shifts, ddof=1) / np.sqrt(3), rel=1e-9)
+    assert BAND_STABLE == 0.03
+
+
+def test_claim6_at_a_band_reads_its_columns():
+    """Lateral VF at the nominal parameter, axial at half of it: reproduced
+    nominally, not reproduced at half; the criterion text names the
+    parameter actually used."""
+    seeds = [_seed(-0.05 + e, +0.05 + e, e=e) for e in (0.0, 0.01, -0.01)]
+    nominal, half = claim6(seeds), claim6(seeds, "lo")
+    assert nominal["verdict"] == "reproduced" and half["verdict"] == "not reproduced"
+    assert "tolerance 0.1 V/area" in nominal["numbers"] and "tolerance 0.05 V/area" in half["numbers"]
+
+
+def test_report_states_claim6_by_count(dump, tmp_path):
+    """A study with one S1 run analysed by both counts: the report's claim-6
+    section and claim6.csv list each count at x 0.5, x 1, x 2."""
+    from postproc.study.report import build_report
+
+    study = tmp_path / "study"
+    ana = study / "analysis"
+    _summary(dump, str(ana))
+    done, _ = analyse_counts(dump, str(ana), counts=("commonplane",))
+    manifest = {"polyhedra": [{"label": "seed 1", "dump": dump, "analysis": str(ana), "info": None, "status": "ok",
+                               "counts": {c: os.path.relpath(f, study) for c, f in done.items()}}]}
+    (study / "manifest.json").write_text(json.dumps(manifest))
+    md = open(build_report(str(study))).read()
+    table = pd.read_csv(study / "report" / "claim6.csv")
+    assert table["count"].tolist() == ["points"] * 3 + ["commonplane"] * 3
+    assert table["factor"].tolist() == [0.5, 1.0, 2.0] * 2
+    assert "## Claim 6 by contact count" in md
+    assert sum(line.startswith("| commonplane | 1 |") for line in md.splitlines()) == 3
