@@ -17,7 +17,7 @@ SHAPES_LIB ?= runs/shapes/library.h5
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study system venv bench clean-venv shapes front kernel
+.PHONY: test test-fast docs study system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
@@ -84,6 +84,18 @@ FRONT_PLAN ?= default
 front: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
 	$(PY) benchmarks/front_analysis.py --out $(FRONT)-analysis
+
+# The size front: the default study at 200, 1000 and 5000 grains per sample
+# (presets small, default, intermediate; 3 + 3 seeds each, about 5.3
+# core-hours by the model, most of it the 5000-grain S1), then the table and
+# figure of every claim's quantity against N (runs/size-front/size.md).
+# Finished runs are not run again.
+SIZE_FRONT ?= runs/size-front
+size-front: system venv kernel $(SHAPES_LIB)
+	$(MAKE) study PRESET=small STUDY=runs/small
+	$(MAKE) study PRESET=default STUDY=runs/study
+	$(MAKE) study PRESET=intermediate STUDY=runs/intermediate
+	$(PY) -m postproc.cli size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

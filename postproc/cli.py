@@ -69,6 +69,9 @@ def main(argv=None):
     rp = sub.add_parser("report", help="the study report (figures, published values, the six claims)")
     rp.add_argument("study", help="study folder written by 'make study' (holds manifest.json)")
     rp.add_argument("--out", help="report folder (default STUDY/report)")
+    sz = sub.add_parser("size-front", help="the study's quantities against the number of grains (several studies)")
+    sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
+    sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -86,6 +89,16 @@ def main(argv=None):
             return 2
         path = build_report(args.study, args.out)
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
+        return 0
+    if args.cmd == "size-front":
+        from .study.sizefront import write_size_front
+
+        try:
+            path = write_size_front(args.study, args.out)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(f"postproc: size front written to {path} (and size-front.png)", file=sys.stderr)
         return 0
     if args.cmd == "export-vtk":
 

@@ -467,6 +467,70 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     plt.close(fig)
 
 
+#: the size front's panels: quantity (the count's columns without their
+#: "<count>:" prefix; every count is drawn in the same panel) and title
+SIZE_PANELS = (("q_over_p", "q/p plateau"), ("a", "a"), ("a_l", "a_l"), ("a_n", "a_n"), ("a_t", "a_t"),
+               ("sff_rel_residual", "(q/p − (2/5)Σa)/(q/p)"), ("z", "z"), ("phi_iso", "solid fraction"),
+               ("ct_frac_triple", "triple contacts (S1)"), ("ct_fratio_FF", "FF f/⟨f⟩ (S1)"),
+               ("ct_fabric_VF", "VF leaning (S1)"), ("ct_fabric_EE", "EE leaning (S1)"))
+
+
+def plot_size_front(table, path, published=None):
+    """The size front: one panel per quantity of SIZE_PANELS, its mean over
+    seeds with the 95 % interval against the number of grains N (log
+    axis), S1 (circles; per contact count: circles for the first count,
+    squares, triangles for the next) and S2 (diamonds), each with its
+    straight line in N^(-1/3) through the means (:func:`postproc.study.
+    sizefront.size_table`: the ``extrapolated`` and ``slope`` columns) and
+    the published value dashed. ``table`` is the long table of size_table;
+    ``published`` {(sample, quantity): value or None}. Returns what was
+    drawn: [(panel title, series label, N (K,), means (K,))]."""
+    plt = _plt()
+    published = published or {}
+    drawn = []
+    panels = [(q, lab) for q, lab in SIZE_PANELS
+              if any(t == q or t.endswith(":" + q) for t in table["quantity"].unique())]
+    ncol = 4
+    nrow = max(1, -(-len(panels) // ncol))
+    fig, axes = plt.subplots(nrow, ncol, figsize=(3.1 * ncol, 2.6 * nrow), squeeze=False)
+    markers = ("o", "s", "^", "v")
+    for k, (q, title) in enumerate(panels):
+        ax = axes[k // ncol, k % ncol]
+        series = [t for t in table["quantity"].unique() if t == q or t.endswith(":" + q)]
+        for sample, colour in (("polyhedra", "C0"), ("spheres", "C3")):
+            for j, name in enumerate(sorted(series)):
+                g = table[(table["quantity"] == name) & (table["sample"] == sample)].sort_values("n_particles")
+                if not len(g) or not np.isfinite(g["mean"].to_numpy(float)).any():
+                    continue
+                n = g["n_particles"].to_numpy(float)
+                m = g["mean"].to_numpy(float)
+                err = np.vstack([m - g["ci_low"].to_numpy(float), g["ci_high"].to_numpy(float) - m])
+                lab = ("S1" if sample == "polyhedra" else "S2") + (f" {name.split(':')[0]}" if ":" in name else "")
+                marker = "D" if sample == "spheres" else markers[j % len(markers)]
+                ax.errorbar(n, m, yerr=np.nan_to_num(err), fmt=marker, color=colour if j == 0 else f"C{j + 1}",
+                            ms=4, capsize=2, label=lab)
+                drawn.append((title, lab, n, m))
+                y0, c = g["extrapolated"].iloc[0], g["slope"].iloc[0]
+                if np.isfinite(y0) and np.isfinite(c):
+                    xs = np.geomspace(n.min() / 1.5, 4e4, 50)
+                    ax.plot(xs, y0 + c * xs ** (-1 / 3), "-", lw=0.7, color=colour if j == 0 else f"C{j + 1}")
+            pub = published.get((sample, q))
+            if pub is not None and np.isfinite(pub):
+                ax.axhline(pub, color=colour, ls="--", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_title(title, fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.set_xlabel("N (grains per sample)", fontsize=7)
+        if k == 0 or len(series) > 1:
+            ax.legend(fontsize=6)
+    for k in range(len(panels), nrow * ncol):
+        axes[k // ncol, k % ncol].set_axis_off()
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return drawn
+
+
 def plot_analysis_front(table, path):
     """Analysis estimators: RMS error (largest over a, a_l, a_n, a_t)
     against contacts per set, and time per set against RMS error."""
