@@ -17,6 +17,7 @@ derived from :data:`PARAMETERS`:
 from __future__ import annotations
 
 import difflib
+import math
 from typing import NamedTuple
 
 BLOCK_START = "# --- parameters (generated from yade_scripts/parameters.py) ---"
@@ -85,6 +86,17 @@ PARAMETERS = (
 )
 
 DEFAULTS = {p.name: p.default for p in PARAMETERS}
+
+#: the largest initial solid fraction random sequential addition reaches
+#: (yade_scripts.sample), measured on 1000 grains of the library, seed 1,
+#: aspect 2: placed with their exact shapes they fill 0.30 and jam at 0.33
+#: (no room for grain 754 after 128 000 trials); as bounding spheres (and
+#: S2's spheres) they fill 0.36 and jam at 0.38. The scene would enlarge a
+#: jammed box until the grains fit, i.e. start looser than asked after
+#: minutes of failed trials, so a fraction above these is refused.
+PLACEMENT_LIMIT = {"grains": 0.30, "spheres": 0.36}
+#: the largest grain (m), the largest of shapes.sizes.CLASS_DIAMETERS
+D_MAX = 0.05
 SCHEMA = {p.name: (p.type, p.allowed) for p in PARAMETERS}
 
 
@@ -133,7 +145,29 @@ def check(params):
                           "another frame)")
     if p["dump_strain"] > p["final_strain"]:
         raise ConfigError(f"dump_strain {p['dump_strain']} is larger than final_strain {p['final_strain']}")
+    _check_box(p)
     return p
+
+
+def _check_box(p):
+    """The grains must fit their initial box: the solid fraction asked for
+    is one random sequential addition reaches (:data:`PLACEMENT_LIMIT`),
+    and the box, at most the bounding spheres' volume of N grains of the
+    largest size over that fraction, is wider and higher than the largest
+    grain. Raises ConfigError (one line)."""
+    n, frac, aspect = p["n_particles"], p["initial_fraction"], p["aspect"]
+    placement = "grains" if p["sample"] == "polyhedra" and p["placement"] == "grains" else "spheres"
+    limit = PLACEMENT_LIMIT[placement]
+    if frac > limit:
+        what = "the grains with their exact shapes" if placement == "grains" else "bounding spheres"
+        raise ConfigError(f"initial_fraction = {frac:g}: random sequential addition of {what} jams above "
+                          f"{limit:g} (measured), so {n} grains do not fit that box; ask for {limit:g} or less")
+    side = (n * math.pi / 6 * D_MAX ** 3 / frac / aspect) ** (1 / 3)
+    smallest = min(side, aspect * side)
+    if smallest < D_MAX:
+        raise ConfigError(f"n_particles = {n} with aspect {aspect:g} and initial_fraction {frac:g} makes a box at "
+                          f"most {smallest:.3g} m across, less than the largest grain ({D_MAX:g} m): use more "
+                          f"grains or an aspect nearer 1")
 
 
 def render_block(params):

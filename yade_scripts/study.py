@@ -31,6 +31,7 @@ import threading
 from .batch import MAX_RESUMES, clear_attempt, has_checkpoint, resumable, yade_env
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .presets import ConfigError, resolve
+from .resources import check_memory, memory_mb
 
 SAMPLES = ("polyhedra", "spheres")
 
@@ -379,8 +380,12 @@ def main(argv=None):
     try:
         if args.ensemble < 1:
             raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
-        os.makedirs(args.out, exist_ok=True)
         overrides = parse_overrides(args.set)
+        params = [resolve(args.preset, s, overrides) for s in SAMPLES]
+        # at once: both samples (one seed), or --jobs runs of the largest (ensembles)
+        check_memory(params if args.ensemble == 1 else
+                     [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
+        os.makedirs(args.out, exist_ok=True)
         if args.ensemble == 1:
             tries = {}
             codes = run_samples(args.out, args.preset, overrides, args.library, attempts=tries)

@@ -1,0 +1,55 @@
+"""Will the runs fit this machine's memory? Checked before any YADE starts,
+with a one-line refusal (the grains' fit in their box is a parameter check,
+:func:`yade_scripts.parameters.check`).
+
+Peak memory of one YADE process (VmHWM) of the default S1, measured here: 331
+MB at 1000 grains and 560 MB at 5000 (kernel on one thread, in shear), so
+274 MB + 57 kB per grain; ``benchmarks/bench_scale.py`` measures the peak at
+the paper's 36 933 grains against this model (docs/scenes.md). YADE's
+spheres cost less per particle; the polyhedra figure is used for both, an
+upper bound.
+"""
+from __future__ import annotations
+
+import os
+
+from .parameters import ConfigError
+
+#: peak resident memory of one run, MB: base + per grain x N
+MEMORY_BASE_MB = 274.0
+MEMORY_PER_GRAIN_MB = 0.057
+
+
+def memory_mb(params):
+    """Peak resident memory (MB) of one run with these parameters (model of
+    the module docstring)."""
+    return MEMORY_BASE_MB + MEMORY_PER_GRAIN_MB * int(params["n_particles"])
+
+
+def machine_memory_mb():
+    """The machine's total memory (MB), from /proc/meminfo or sysconf; None
+    when unknown."""
+    try:
+        with open("/proc/meminfo") as fh:
+            for line in fh:
+                if line.startswith("MemTotal:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2 ** 20
+    except (ValueError, OSError, AttributeError):
+        return None
+
+
+def check_memory(runs, memory_total_mb=None):
+    """Raise :class:`ConfigError` (one line) when the runs started at once,
+    ``runs`` = [checked parameter dicts], need more memory than
+    ``memory_total_mb`` (default: this machine's)."""
+    total = machine_memory_mb() if memory_total_mb is None else memory_total_mb
+    need = sum(memory_mb(p) for p in runs)
+    if total is not None and runs and need > total:
+        big = max(runs, key=memory_mb)
+        raise ConfigError(f"{len(runs)} run(s) at once need about {need / 1024:.1f} GB of memory (the largest, "
+                          f"{big['n_particles']} {big['sample']}, {memory_mb(big):.0f} MB), more than this "
+                          f"machine's {total / 1024:.1f} GB: run fewer at once (--jobs) or on a larger node")
