@@ -22,20 +22,19 @@ the C kernel and adding the forces; the ratio stock/kernel per contact-step
 RUN.bench_engines.json.
 """
 import json
-import math
 import os
 import sys
 import time
 
 import numpy as np
-from yade import log, polyhedra_utils
+from yade import log
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))
 sys.path.insert(0, ROOT)
-from postproc.schema import DumpReader  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
+from yade_packing import build_packing  # noqa: E402
 from yade_scripts.kernel_contacts import KernelContacts  # noqa: E402
 from yade_scripts.tangential import TangentialLaw  # noqa: E402
-from yade_scripts.yadedump import polyhedra_shapes  # noqa: E402
 
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 args = sys.argv[1:]
@@ -45,30 +44,9 @@ K_KERNEL = int(args[2]) if len(args) > 2 else 300
 K_STOCK = int(args[3]) if len(args) > 3 else 20
 BLOCKS = int(args[4]) if len(args) > 4 else 3
 
-with DumpReader(DUMP) as r:
-    v, t, _ = r.shapes()
-    s = r.read(SNAP)
-    P = r.parameters
+pk = build_packing(O, DUMP, SNAP)
+particles, walls, d, P = pk["particles"], pk["walls"], pk["sizes"], pk["P"]
 k_v, a_face, mu, mu_w = P["kn_volumetric"], P["a_face"], P["friction"], P["wall_friction"]
-d = s.sizes
-grain = PolyhedraMat(young=2 * k_v, poisson=1e-20, frictionAngle=math.atan(mu), density=P["density"])
-wallmat = PolyhedraMat(young=2 * k_v, poisson=1e-20, frictionAngle=math.atan(mu_w), density=P["density"])
-O.materials.append(grain)
-O.materials.append(wallmat)
-walls = []
-for axis in range(3):
-    for pos in (s.box_lo[axis], s.box_hi[axis]):
-        w = utils.wall(float(pos), axis=axis, sense=0, material=wallmat)
-        w.state.blockedDOFs = "xyzXYZ"
-        walls.append(O.bodies.append(w))
-particles = []
-for k in range(len(s.body_ids)):
-    b = polyhedra_utils.polyhedra(grain, v=[tuple(x) for x in v[int(s.shape_index[k])]])
-    w_, x_, y_, z_ = s.orientations[k]
-    b.state.ori = Quaternion(w_, x_, y_, z_) * b.state.ori
-    b.state.pos = tuple(s.positions[k])
-    particles.append(O.bodies.append(b))
-O.dt = P["dt"]
 d_of = np.zeros(max(particles) + 1)
 d_of[particles] = d
 
@@ -80,7 +58,7 @@ def kt_of(id1, id2, kn):
 
 
 O.saveTmp("init")
-shape_v, shape_t, _ = polyhedra_shapes(O, particles)
+shape_v, shape_t = pk["vertices"], pk["triangles"]
 engines = {}
 
 

@@ -3,28 +3,39 @@ grains and threads, the set-up, and the peak memory.
 
     python benchmarks/bench_scale.py [--n 1000 5000 36933] [--threads 1 2] [--steps 300] \
         [--repeat 3] [--out runs/bench-scale] [--library runs/shapes/library.h5]
+    python benchmarks/bench_scale.py --dense RUN1000.h5:SNAP RUN5000.h5:SNAP [--threads 1 2] \
+        [--steps 200] [--blocks 5] [--out runs/bench-scale]
+
+The second form steps dense packings of the study's own dumps instead (the
+same strain in a 1000- and a 5000-grain S1, say): see bench_scale_dense.py;
+the per-grain cost of a step at 5000 against 1000 is this form's ratio.
 
 For every N, a polyhedra run folder is generated (``yade_scripts.generate``:
 the default preset with ``n_particles = N``, or the ``paper`` preset for
 N = 36 933, the published sample) and run as the study runs it (``yade -jT
 -n -x triaxial.py``) from the grains' placement into isotropic compaction.
-When its progress line reports ``--steps`` steps the run is sent SIGTERM,
-writes its checkpoint at the end of that step and exits 75; the
-checkpoint's header carries the engine times of the attempt (YADE's
-``O.timingEnabled``: the kernel's PyRunner, the controller, Newton, ...) and
+When its progress line reports ``--steps`` more steps the run is sent
+SIGTERM, writes its checkpoint at the end of that step and exits 75; the
+next attempt resumes from it (on the other thread count), so one sample per
+N is built once and stepped on, attempt after attempt. The checkpoint's
+header carries the run's cumulative engine times (YADE's
+``O.timingEnabled``: the kernel's PyRunner, the controller, Newton, ...),
 the kernel's own split of its PyRunner (reading the poses, the C kernel,
-adding the forces), the step count and the touching contact-steps. The
-set-up (sizes, shapes, the exact placement, the bodies) is the time from
-the start to the scene's first line (``N polyhedra, dt = ...``); the peak
-memory is the process's maximum resident set (``os.wait4``).
+adding the forces) and the touching contact-steps: an attempt's figures are
+the differences between the checkpoints before and after it. The set-up
+(sizes, shapes, the exact placement, the bodies; redone by every attempt
+before the checkpoint replaces the scene) is the time from the start to the
+scene's first line (``N polyhedra, dt = ...``); the peak memory is the
+process's maximum resident set (``os.wait4``).
 
-Runs alternate: every (N, threads) runs once per round, ``--repeat``
+Attempts alternate: every (N, threads) runs once per round, ``--repeat``
 rounds, so a drift of the shared machine hits all alike; figures are
 medians over rounds, and the per-grain ratios (N against the smallest N at
-the same threads) are medians of the per-round ratios. The first steps of
-compaction hold few touching contacts (the grains start at a solid fraction
-of 0.25), so the kernel's share here is below a dense packing's; per touching
-contact-step the kernel's cost is given apart. Writes OUT/bench-scale.csv
+the same threads) are medians of the per-round ratios. These are the first
+steps of compaction: they hold fewer touching contacts than a dense packing
+(the grains start at a solid fraction of 0.25), so the kernel's share here
+is below a dense packing's; per touching contact-step the kernel's cost is
+given apart. Writes OUT/bench-scale.csv
 (one row per run) and OUT/bench-scale.md (medians and ratios).
 """
 from __future__ import annotations
@@ -51,13 +62,21 @@ PAPER_N = 36933
 STEP_LINE = re.compile(r"step (\d+) ")
 
 
-def run_once(folder, threads, steps, timeout):
-    """Run the scene in ``folder`` on ``threads`` threads until ``steps``
-    steps, SIGTERM it, and return its figures (dict)."""
-    for stale in os.listdir(folder):           # the last round's dump, log and checkpoints: start afresh
-        if stale.startswith("run."):
-            path = os.path.join(folder, stale)
-            shutil.rmtree(path) if os.path.isdir(path) else os.remove(path)
+def run_once(folder, threads, steps, timeout, fresh):
+    """Run the scene in ``folder`` on ``threads`` threads for ``steps``
+    steps (from the start when ``fresh``, else resumed from the checkpoint
+    the last attempt left), SIGTERM it, and return the attempt's figures
+    (dict): differences of the cumulative engine times and kernel counters
+    between the checkpoint before and after it."""
+    ckpt = os.path.join(folder, "run.ckpt")
+    if fresh:
+        for stale in os.listdir(folder):           # an earlier benchmark's dump, log, checkpoints
+            if stale.startswith("run."):
+                path = os.path.join(folder, stale)
+                shutil.rmtree(path) if os.path.isdir(path) else os.remove(path)
+        before = {"step": 0, "engine_seconds": {}, "kernel_counters": {"seconds": {}, "calls": 0, "touch_steps": 0}}
+    else:
+        before = read_checkpoint(ckpt)[0]
     env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
     t0 = time.perf_counter()
     proc = subprocess.Popen(["yade", "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder, env=env,
@@ -68,32 +87,83 @@ def run_once(folder, threads, steps, timeout):
         if setup is None and " dt = " in line:
             setup = time.perf_counter() - t0
         m = STEP_LINE.search(line)
-        if m and not sent and int(m.group(1)) >= steps:
+        if m and not sent and int(m.group(1)) >= before["step"] + steps:
             proc.send_signal(signal.SIGTERM)
             sent = True
         if time.perf_counter() - t0 > timeout and not sent:
             proc.send_signal(signal.SIGTERM)
             sent = True
     _, status, usage = os.wait4(proc.pid, 0)
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 75:
-        tail = "".join(lines[-5:])
-        raise SystemExit(f"bench_scale: {folder}: exit {proc.returncode}, not a checkpoint (75):\n{tail}")
-    meta, _, _ = read_checkpoint(os.path.join(folder, "run.ckpt"))
-    eng = meta["engine_seconds"]
-    k = meta["kernel_counters"]
-    n = meta["step"]
-    calls = max(k["calls"], 1)
-    out = {"steps": n, "setup_s": setup, "peak_rss_mb": usage.ru_maxrss / 1024,
-           "wall_s": meta["wall_seconds"], "touch_per_step": k["touch_steps"] / calls,
-           "read_ms": 1e3 * k["seconds"]["read"] / calls, "kernel_ms": 1e3 * k["seconds"]["kernel"] / calls,
-           "apply_ms": 1e3 * k["seconds"]["apply"] / calls,
+    wall = time.perf_counter() - t0
+    code = os.waitstatus_to_exitcode(status)
+    if code != 75:
+        raise SystemExit(f"bench_scale: {folder}: exit {code}, not a checkpoint (75):\n{''.join(lines[-5:])}")
+    after = read_checkpoint(ckpt)[0]
+    eng = {e: v - before["engine_seconds"].get(e, 0.0) for e, v in after["engine_seconds"].items()}
+    ka, kb = after["kernel_counters"], before["kernel_counters"]
+    n = after["step"] - before["step"]
+    calls = max(ka["calls"] - kb["calls"], 1)
+    sec = {k: v - kb["seconds"].get(k, 0.0) for k, v in ka["seconds"].items()}
+    out = {"from_step": before["step"], "steps": n, "setup_s": setup, "attempt_wall_s": wall,
+           "peak_rss_mb": usage.ru_maxrss / 1024, "touch_per_step": (ka["touch_steps"] - kb["touch_steps"]) / calls,
+           "read_ms": 1e3 * sec["read"] / calls, "kernel_ms": 1e3 * sec["kernel"] / calls,
+           "apply_ms": 1e3 * sec["apply"] / calls,
            "newton_ms": 1e3 * eng.get("newton", np.nan) / n, "controller_ms": 1e3 * eng.get("controller", np.nan) / n,
            "other_ms": 1e3 * sum(v for e, v in eng.items()
-                                 if e not in ("newton", "controller", "kernel_contacts")) / n}
-    out["step_ms"] = 1e3 * sum(eng.values()) / n
+                                 if e not in ("newton", "controller", "kernel_contacts")) / n,
+           "step_ms": 1e3 * sum(eng.values()) / n}
     out["us_per_touch"] = 1e3 * out["kernel_ms"] / out["touch_per_step"] if out["touch_per_step"] else np.nan
+    if sum(eng.values()) > wall:
+        raise SystemExit(f"bench_scale: {folder}: engine times {sum(eng.values()):.1f} s exceed the attempt's "
+                         f"{wall:.1f} s (counted twice after a resume?)")
     return out
+
+
+def dense(specs, threads, steps, blocks, out):
+    """The dense packings ``specs`` ("RUN.h5:SNAP") stepped side by side in
+    one YADE run per thread count (``bench_scale_dense.py``): medians over
+    blocks of every figure, per-grain ratios against the smallest packing
+    (paired block by block) and speed-ups against the fewest threads.
+    Writes OUT/bench-scale-dense.md and returns its lines."""
+    rows = []
+    for th in threads:
+        js = os.path.join(out, f"dense-j{th}.json")
+        subprocess.run(["yade", "-j", str(th), "-n", "-x", os.path.join(ROOT, "benchmarks", "bench_scale_dense.py"),
+                        js, str(steps), str(blocks), *specs], check=True, env=dict(os.environ, OMP_WAIT_POLICY="PASSIVE"),
+                       stdout=subprocess.DEVNULL)
+        with open(js) as fh:
+            res = json.load(fh)
+        for p in res["packings"]:
+            for b, blk in enumerate(p["blocks"]):
+                e, k = blk["engines_ms_per_step"], blk["kernel_split_ms_per_step"]
+                rows.append({"n": p["particles"], "threads": th, "block": b, "step_ms": blk["wall_ms_per_step"],
+                             "us_per_grain_step": blk["us_per_grain_step"], "kernel_ms": k["kernel"],
+                             "read_ms": k["read"], "apply_ms": k["apply"], "newton_ms": e.get("newton", np.nan),
+                             "touching": blk["touching"],
+                             "us_per_touch": 1e3 * k["kernel"] / blk["touching"] if blk["touching"] else np.nan,
+                             "kernel_memory_mb": blk["memory_bytes"] / 2 ** 20})
+    df = pd.DataFrame(rows)
+    df.to_csv(os.path.join(out, "bench-scale-dense.csv"), index=False)
+    base = df["n"].min()
+    df["per_grain_ratio"] = df.apply(lambda r: r["us_per_grain_step"] / df[(df["n"] == base) & (
+        df["threads"] == r["threads"]) & (df["block"] == r["block"])]["us_per_grain_step"].iloc[0], axis=1)
+    few = min(threads)
+    df["speedup"] = df.apply(lambda r: df[(df["n"] == r["n"]) & (df["threads"] == few) & (
+        df["block"] == r["block"])]["step_ms"].iloc[0] / r["step_ms"], axis=1)
+    med = df.groupby(["n", "threads"]).median(numeric_only=True).reset_index()
+    lines = [f"Dense packings ({', '.join(specs)}), {steps} steps per block, medians of {blocks} blocks "
+             f"(bench_scale.py --dense, {time.strftime('%Y-%m-%d')}):", "",
+             f"| N | threads | ms per step | µs per grain-step | per grain vs N = {base} | speed-up vs {few} thread(s) | "
+             "kernel | read poses | add forces | Newton | touching contacts | µs per touching contact (kernel) | "
+             "kernel memory (MB) |", "|---" * 13 + "|"]
+    for _, r in med.iterrows():
+        lines.append(f"| {int(r['n'])} | {int(r['threads'])} | {r['step_ms']:.2f} | {r['us_per_grain_step']:.2f} | "
+                     f"{r['per_grain_ratio']:.3f} | {r['speedup']:.2f} | {r['kernel_ms']:.2f} | {r['read_ms']:.2f} | "
+                     f"{r['apply_ms']:.2f} | {r['newton_ms']:.2f} | {r['touching']:.0f} | {r['us_per_touch']:.2f} | "
+                     f"{r['kernel_memory_mb']:.1f} |")
+    with open(os.path.join(out, "bench-scale-dense.md"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    return lines
 
 
 def main():
@@ -105,8 +175,14 @@ def main():
     ap.add_argument("--timeout", type=float, default=3600.0, help="s per run before it is stopped anyway")
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "bench-scale"))
     ap.add_argument("--library", default=DEFAULT_LIBRARY)
+    ap.add_argument("--dense", nargs="+", metavar="RUN.h5:SNAP",
+                    help="instead: these dense packings stepped side by side in YADE (bench_scale_dense.py)")
+    ap.add_argument("--blocks", type=int, default=5, help="--dense: blocks (rounds) per thread count")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
+    if args.dense:
+        print("\n".join(dense(args.dense, args.threads, args.steps, args.blocks, args.out)))
+        return
     folders = {}
     for n in args.n:
         folder = os.path.join(args.out, f"n{n}")
@@ -119,7 +195,7 @@ def main():
     for rnd in range(args.repeat):
         for n in args.n:
             for th in args.threads:
-                r = run_once(folders[n], th, args.steps, args.timeout)
+                r = run_once(folders[n], th, args.steps, args.timeout, fresh=(rnd == 0 and th == args.threads[0]))
                 rows.append({"round": rnd, "n": n, "threads": th, **r})
                 print(f"round {rnd} N {n} threads {th}: {r['step_ms']:.2f} ms/step "
                       f"({1e3 * r['step_ms'] / n:.2f} us/grain-step), set-up {r['setup_s']:.1f} s, "

@@ -37,7 +37,6 @@ import os
 import numpy as np
 import pandas as pd
 from scipy.stats import f as f_dist
-from scipy.stats import t
 
 from .claims import claim6, evaluate
 from .report import REFERENCE, _summaries, _usable, count_summaries, discover
