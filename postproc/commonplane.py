@@ -441,3 +441,731 @@ def _feature(adjacent, idx):
     if len(idx) == 2 and adjacent[idx[0], idx[1]]:
         return EDGE
     return VERTEX
+
+
+# ============================================================================
+# LMGC90's own count: its CpCundall detection, point stage and all
+# ============================================================================
+#
+# The functions below port, step by step, what LMGC90's
+# ``wcp_compute_contact_PRPRx`` does for one pair of convex POLYR bodies
+# (``DETECTION_COMMON_PLANE`` of ``mod_PRPRx.f90``, with the geometry of
+# ``mod_DiscreteGeometry.f90`` and the face topology of ``mod_POLYR.f90``),
+# so that the count is LMGC90's, not a count of the same idea. Two routes:
+# ``"lmgc90"`` (today's default point stage, ``new_ccpm = .true.``) and
+# ``"lmgc90-planplan"`` (the older route, ``use_old_ccpm_PRPRx``).
+
+LMGC90_ROUTES = ("lmgc90", "lmgc90-planplan")
+DEFAULT_ALERT = 0.1           # alert distance, in units of the smallest grain radius (LMGC90's examples)
+LMGC90_ITERATIONS = 200       # cundall_iter: the compas_lmgc90 glue's value (LMGC90's module default: 100)
+TOPO_ANGLE = 5.0              # deg, POLYR topo_angle: adjacent triangles closer than this form one face
+F2F_TOL = 1e-3                # f2f_tol: a face is "seen" when 1 - cos(face, plane) <= this (2.6 deg)
+TOL_ANGLE = 1e-2              # tol_angle: a point is kept when 1 - cos(its normal, plane) <= this (8.1 deg)
+CLIP_EPS = 1e-8               # Clipper2 precision of polytopes_intersection_wc (8 decimals of the length unit)
+_TOL_NORMALES = 1e-3          # compute_shadow_overlap
+
+
+@dataclass
+class LmgcShape:
+    """One shape as LMGC90's POLYR sees it (local frame, origin at the
+    centre of mass). vertices (V, 3) m; triangles (T, 3) outward;
+    normals (T, 3) unit outward triangle normals; faces: list of (k,)
+    triangle indices, the topological faces (adjacent triangles within
+    TOPO_ANGLE, merged); face_normal (F, 3) the normal of each face's first
+    triangle; contour: list of (m,) the corner vertices (``sommet``) along
+    each face's contour, counter-clockwise seen from outside; corner (V,)
+    bool the vertices shared by 3+ faces (``f2f_sommet``); edges (E, 2) the
+    topological edges (pairs of consecutive corners along a contour, lower
+    index first, ``f2f_edge``); radius m the largest centre-vertex
+    distance; min_radius_face m the smallest triangle circumradius."""
+
+    vertices: np.ndarray
+    triangles: np.ndarray
+    normals: np.ndarray
+    faces: list
+    face_normal: np.ndarray
+    contour: list
+    corner: np.ndarray
+    edges: np.ndarray
+    edge_set: set
+    radius: float
+    min_radius_face: float
+
+
+def _triangle_normal(s1, s2, s3):
+    """LMGC90's compute_info_triangle normal: (s2 - s3) x (s2 - s1), unit."""
+    n = np.cross(s2 - s3, s2 - s1)
+    return n / np.linalg.norm(n)
+
+
+def _circumradius(s1, s2, s3):
+    v1, v2, v3 = s2 - s3, s1 - s3, s2 - s1
+    l = np.array([np.linalg.norm(v1), np.linalg.norm(v2), np.linalg.norm(v3)])
+    hp = 0.5 * l.sum()
+    surf = np.sqrt(max(hp * (hp - l[0]) * (hp - l[1]) * (hp - l[2]), 0.0))
+    c = [np.dot(-v2, v3), np.dot(-v3, -v1), np.dot(v1, v2)]
+    if min(c) < 0 or surf == 0:
+        return 0.5 * l.max()
+    return l[0] * l[1] * l[2] / (4 * surf)
+
+
+def lmgc90_shape(vertices, triangles):
+    """:class:`LmgcShape` of one polyhedron: vertices (V, 3) m in the local
+    frame (origin at the centre of mass), triangles (T, 3) outward
+    counter-clockwise. The topology is LMGC90's ``build_topology_surface_T3``
+    (topo angle 5 deg). Raises InputError (one line) for an open surface."""
+    V = np.asarray(vertices, float)
+    T = np.asarray(triangles, np.int64)
+    nT = len(T)
+    normals = np.array([_triangle_normal(*V[t]) for t in T])
+    # orientation as POLYR fixes it: outward with respect to the centre
+    flip = np.einsum("ij,ij->i", V[T[:, 0]], normals) <= 0
+    if flip.any():
+        T = T.copy()
+        T[flip] = T[flip][:, [0, 2, 1]]
+        normals[flip] = -normals[flip]
+    # triangles around each vertex, then the neighbour across each edge
+    around = [[] for _ in range(len(V))]
+    for ie, t in enumerate(T):
+        for v in t:
+            around[v].append(ie)
+    adj = []
+    for ie, t in enumerate(T):
+        row = []
+        for ic in range(3):
+            a, b = t[ic], t[(ic + 1) % 3]
+            for je in around[a]:
+                if je != ie and b in T[je]:
+                    row.append(je)
+                    break
+        adj.append(row)
+    if any(len(r) != 3 for r in adj):
+        raise InputError("LMGC90 count: a shape's triangles do not close its surface")
+    tol_topo = np.cos(np.radians(TOPO_ANGLE))
+    belong = np.arange(nT)
+    skip = np.zeros(nT, bool)
+    for ie in range(nT - 1):
+        if skip[ie]:
+            continue
+        skip[ie] = True
+        todo = [ie]
+        while todo:
+            nxt = []
+            for je in todo:
+                for ke in adj[je]:
+                    if skip[ke] or ke in nxt:
+                        continue
+                    if normals[je] @ normals[ke] > tol_topo:
+                        nxt.append(ke)
+                        skip[ke] = True
+                        belong[ke] = ie
+            todo = nxt
+    faces = [np.flatnonzero(belong == ie) for ie in range(nT) if belong[ie] == ie]
+    nface = len(faces)
+    starts = np.zeros(len(V), np.int64)
+    contours = []
+    for f in faces:
+        fs = set(f.tolist())
+        border = []
+        for ie in f:
+            for je in adj[ie]:
+                if je in fs:
+                    continue
+                t = T[ie]
+                for ic in range(3):
+                    a, b = t[ic], t[(ic + 1) % 3]
+                    if a in T[je] and b in T[je]:
+                        border.append([a, b])
+                        starts[a] += 1
+                        break
+        # chain the border edges into a loop, in LMGC90's order
+        for j in range(len(border) - 1):
+            for k in range(j + 1, len(border)):
+                if border[j][1] == border[k][0]:
+                    if k > j + 1:
+                        border[j + 1], border[k] = border[k], border[j + 1]
+                    break
+        contours.append(border)
+    corner = starts > 2
+    edges, seen = [], set()
+    for border in contours:
+        n = len(border)
+        j_first, look, ibeg = None, False, None
+        for jj in range(2 * n):
+            j = jj % n
+            if j == j_first:
+                break
+            if not look:
+                ibeg = border[j][0]
+                if corner[ibeg]:
+                    if j_first is None:
+                        j_first = j
+                    look = True
+            if look:
+                iend = border[j][1]
+                if corner[iend]:
+                    key = (min(ibeg, iend), max(ibeg, iend))
+                    if key not in seen:
+                        seen.add(key)
+                        edges.append(key)
+                    look = False
+    contour = [np.array([e[0] for e in border if corner[e[0]]], np.int64) for border in contours]
+    face_normal = np.array([normals[f[0]] for f in faces]).reshape(nface, 3)
+    rmf = min(_circumradius(*V[t]) for t in T)
+    return LmgcShape(V, T, normals, faces, face_normal, contour, corner,
+                     np.array(edges, np.int64).reshape(-1, 2), seen,
+                     float(np.max(np.linalg.norm(V, axis=1))), float(rmf))
+
+
+def lmgc90_tables(vertices, triangles):
+    """List of :class:`LmgcShape`, one per shape (a dump's ``/shapes``).
+    Raises InputError (one line) for bad shapes."""
+    point_tables(vertices, triangles)                       # the shared checks, one-line errors
+    return [lmgc90_shape(v, t) for v, t in zip(vertices, triangles)]
+
+
+class _Body:
+    """One posed POLYR: world vertices X (V, 3), triangle normals N (T, 3),
+    face normals FN (F, 3), centre c (3,), support values (T,)."""
+
+    __slots__ = ("shape", "X", "N", "FN", "c", "support")
+
+    def __init__(self, shape, R, x):
+        self.shape = shape
+        self.X = shape.vertices @ R.T + x
+        self.N = shape.normals @ R.T
+        self.FN = shape.face_normal @ R.T
+        self.c = np.asarray(x, float)
+        self.support = np.einsum("ij,ij->i", self.X[shape.triangles[:, 0]], self.N)
+
+
+def _shadow_overlap(cd, an, adist, sep):
+    """compute_shadow_overlap: (ok, sep, gap, cd_vis, an_vis)."""
+    gap = np.min(cd.X @ sep) - np.max(an.X @ sep)
+    if gap > adist:
+        return False, sep, gap, None, None
+    an_vis = np.zeros(len(an.X), np.int64)
+    cd_vis = np.zeros(len(cd.X), np.int64)
+    gap_an, e_an = gap, -1
+    for i in np.flatnonzero(an.N @ sep >= -_TOL_NORMALES):
+        d = np.min(cd.X @ an.N[i]) - an.support[i]
+        if d > adist:
+            return False, sep, gap, None, None
+        an_vis[an.shape.triangles[i]] = 1
+        if d > gap_an:
+            gap_an, e_an = d, i
+    gap_cd, e_cd = gap, -1
+    for i in np.flatnonzero(cd.N @ sep <= _TOL_NORMALES):
+        d = np.min(an.X @ cd.N[i]) - cd.support[i]
+        if d > adist:
+            return False, sep, gap, None, None
+        if d > gap_cd:
+            gap_cd, e_cd = d, i
+        cd_vis[cd.shape.triangles[i]] = 1
+    if e_cd >= 0 and e_an >= 0:
+        s = (an.N[e_an] - cd.N[e_cd]) * 0.5
+        sep, gap = s / np.linalg.norm(s), (gap_cd + gap_an) * 0.5
+    elif e_cd >= 0:
+        sep, gap = -cd.N[e_cd], gap_cd
+    elif e_an >= 0:
+        sep, gap = an.N[e_an], gap_an
+    return True, sep, gap, cd_vis, an_vis
+
+
+def _comp_rep(n):
+    """LMGC90's comp_rep: (t, s) completing the unit normal n."""
+    if abs(n[0]) < 1e-15:
+        t = np.array([n[0], -n[2], n[1]])
+    elif abs(n[1]) < 1e-15:
+        t = np.array([-n[2], n[1], n[0]])
+    elif abs(n[2]) < 1e-15:
+        t = np.array([-n[1], n[0], n[2]])
+    else:
+        s = np.cross([1.0, 0.0, 0.0], n)
+        t = s / np.linalg.norm(s)
+        return t, np.cross(t, n)
+    t = t / np.linalg.norm(t)
+    return t, np.cross(t, n)
+
+
+def _cundall(cd, an, cd_vis, an_vis, center, normal, iterations, ref_size):
+    """compute_cundall_common_plane, as LMGC90 iterates it: returns
+    (normal, t, s, gap, jmin, imax, centre of the plane)."""
+    Xc, Xa = cd.X - center, an.X - center
+    jc, ia = np.flatnonzero(cd_vis), np.flatnonzero(an_vis)
+    dc, da = Xc[jc] @ normal, Xa[ia] @ normal
+    jmin, imax = jc[np.argmin(dc)], ia[np.argmax(da)]
+    p1 = an.X[imax] - cd.X[jmin]
+    t = p1 - (p1 @ normal) * normal
+    nt = np.sqrt(t @ t)
+    if nt < 1e-6 * ref_size:
+        t, s = _comp_rep(normal)
+    else:
+        t = t / nt
+        s = np.cross(t, normal)
+    gap = dc.min() - da.max()
+    angle = THETA_MAX
+    cr, sr = np.cos(2 * np.pi / _NB_ROT), np.sin(2 * np.pi / _NB_ROT)
+    for _ in range(iterations):
+        co, si = np.cos(angle), np.sin(angle)
+        n_ite, t_ite = np.empty((_NB_ROT, 3)), np.empty((_NB_ROT, 3))
+        for k in range(_NB_ROT):
+            t = cr * t + sr * s
+            t = t / np.sqrt(t @ t)
+            t_ite[k] = t
+            s = np.cross(t, normal)
+            nk = co * normal + si * t
+            n_ite[k] = nk / np.sqrt(nk @ nk)
+        Dc = Xc[jc] @ n_ite.T                                      # (nc, 8)
+        Da = Xa[ia] @ n_ite.T
+        gk = Dc.min(axis=0) - Da.max(axis=0)
+        gap_ini, kk = gap, -1
+        for k in range(_NB_ROT):
+            if gap < gk[k]:
+                gap, kk = gk[k], k
+        if kk >= 0:
+            jmin, imax = jc[np.argmin(Dc[:, kk])], ia[np.argmax(Da[:, kk])]
+            if (gap - gap_ini) / ref_size < GAP_TOL:
+                kk = -1
+        if kk >= 0:
+            normal = n_ite[kk]
+            t = t_ite[kk]
+            s = np.cross(t, normal)
+        elif angle >= THETA_MIN:
+            angle *= 0.5
+        else:
+            break
+    normal = normal / np.sqrt(normal @ normal)
+    t, s = _comp_rep(normal)
+    gap = (cd.X[jmin] - center) @ normal - (an.X[imax] - center) @ normal
+    return normal, t, s, gap, jmin, imax, (an.X[imax] + cd.X[jmin]) * 0.5
+
+
+def _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor):
+    """The band of compute_cundall_common_plane: 2 for the extreme
+    vertices, 1 within d1 of the plane on the body's side, -1 beyond."""
+    ref = min(abs(normal @ (an.X[imax] - an.c)), abs(normal @ (cd.X[jmin] - cd.c)))
+    d1 = max(0.0, gap * 0.5) + neighbor * ref
+    cd_vis = cd_vis.copy()
+    an_vis = an_vis.copy()
+    hc = (cd.X - center) @ normal
+    ha = (an.X - center) @ normal
+    out_c = (cd_vis != 0) & (hc > d1)
+    out_a = (an_vis != 0) & (ha < -d1)
+    cd_vis[out_c] = -cd_vis[out_c]
+    an_vis[out_a] = -an_vis[out_a]
+    cd_vis[jmin], an_vis[imax] = 2, 2
+    return cd_vis, an_vis, ref, hc, ha
+
+
+def _hull2(P):
+    """Convex hull (counter-clockwise, no collinear vertices) of 2-D points
+    P (k, 2), exact (Andrew's monotone chain); (m, 2), m may be < 3."""
+    P = np.unique(P, axis=0)
+    if len(P) < 3:
+        return P
+
+    def half(pts):
+        h = []
+        for p in pts:
+            while len(h) >= 2 and _cross2(h[-1] - h[-2], p - h[-2]) <= 0:
+                h.pop()
+            h.append(p)
+        return h
+    lo, hi = half(P), half(P[::-1])
+    return np.array(lo[:-1] + hi[:-1])
+
+
+def _clip_convex(poly, clipper):
+    """Sutherland-Hodgman: convex polygon ``poly`` clipped by the convex
+    counter-clockwise polygon ``clipper``, no tolerance."""
+    out = poly
+    m = len(clipper)
+    for i in range(m):
+        if not len(out):
+            break
+        a, b = clipper[i], clipper[(i + 1) % m]
+        e = b - a
+        side = e[0] * (out[:, 1] - a[1]) - e[1] * (out[:, 0] - a[0])
+        res = []
+        k = len(out)
+        for j in range(k):
+            p, q, sp, sq = out[j], out[(j + 1) % k], side[j], side[(j + 1) % k]
+            if sp >= 0:
+                res.append(p)
+            if (sp >= 0) != (sq >= 0):
+                res.append(p + sp / (sp - sq) * (q - p))
+        out = np.array(res).reshape(-1, 2)
+    return out
+
+
+def _simplify(P, eps):
+    """Clipper2's SimplifyPaths on a closed path: drop vertices closer than
+    eps to the line through their neighbours (and repeated vertices),
+    until none is; fewer than 3 vertices left means no polygon."""
+    P = [p for p in P]
+    changed = True
+    while changed and len(P) >= 3:
+        changed = False
+        m = len(P)
+        for i in range(m):
+            a, b, c = P[i - 1], P[i], P[(i + 1) % m]
+            ac = c - a
+            L = np.hypot(*ac)
+            d = np.hypot(*(b - a)) if L == 0 else abs(_cross2(ac, b - a)) / L
+            if d < eps or np.hypot(*(b - a)) < eps:
+                del P[i]
+                changed = True
+                break
+    return np.array(P).reshape(-1, 2)
+
+
+def _planplan(cd, an, cd_vis, an_vis, center, t, normal, s, clip_eps):
+    """LMGC90's planplan: the kept vertices of each side projected on the
+    common plane, their hulls intersected (Clipper2), at most 4 of the
+    intersection's corners. Returns (k, 3) contact points (k = 0, 3 or 4)."""
+    B2 = np.stack([s, t], 1)                                     # LMGC90's (s, t) coordinates
+
+    def proj(X, keep):
+        r = X[keep > 0] - center
+        r = r - np.outer(r @ normal, normal)
+        return r @ B2
+    Pa, Pc = _hull2(proj(an.X, an_vis)), _hull2(proj(cd.X, cd_vis))
+    if len(Pa) < 3 or len(Pc) < 3:
+        return np.zeros((0, 3))
+    # Clipper2 works on a grid of 10^-8 of the length unit
+    q = 1.0 / clip_eps
+    Pa, Pc = np.round(Pa * q) / q, np.round(Pc * q) / q
+    I = _clip_convex(Pc, Pa)
+    if len(I) < 3:
+        return np.zeros((0, 3))
+    I = np.round(I * q) / q
+    I = _simplify(I, clip_eps)
+    if len(I) < 3 or _area2(I) <= 0:
+        return np.zeros((0, 3))
+    if len(I) > 4:
+        # keep the 4 corners with the sharpest turns (smallest cosine)
+        m = len(I)
+        cosang = np.empty(m)
+        for i in range(m):
+            v1, v2 = I[i] - I[i - 1], I[(i + 1) % m] - I[i]
+            cosang[i] = (v1 @ v2) / (np.hypot(*v1) * np.hypot(*v2))
+        I = I[np.sort(np.argsort(cosang, kind="stable")[:4])]
+    return center + I[:, :1] * s + I[:, 1:2] * t
+
+
+def _area2(P):
+    x, y = P[:, 0], P[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def _node_node(x1, x2, ntr):
+    ptc = 0.5 * (x1 + x2)
+    n = x1 - x2
+    d = np.sqrt(n @ n)
+    if d != 0:
+        n = n / d
+        if n @ ntr < 0:
+            n, d = -n, -d
+    else:
+        n = ntr
+    return ptc, n, d
+
+
+def _node_edge(x1, b, e, ntr):
+    """nodetoedge_distance: (ptc, normal, dist)."""
+    e2 = e - b
+    l2 = np.sqrt(e2 @ e2)
+    e2 = e2 / l2
+    x = (x1 - b) @ e2
+    if x > l2:
+        return _node_node(x1, e, ntr)
+    if x >= 0:
+        w = x / l2
+        p = (1 - w) * b + w * e
+        ptc, n, d = _node_node(x1, p, ntr)
+        return ptc, n, d
+    return _node_node(x1, b, ntr)
+
+
+def _node_face(x1, C, ntr):
+    """nodetoface_distance on the contour corners C (m, 3): (ptc, normal,
+    dist), or None where LMGC90 raises an error."""
+    m = len(C)
+    e = np.roll(C, -1, axis=0) - C
+    l = np.linalg.norm(e, axis=1)
+    e = e / l[:, None]
+    dist = (x1 - C[0]) @ ntr
+    ptc = x1 - dist * ntr
+    normal = ntr
+    signe = np.array([int(np.cross(ntr, e[i]) @ (ptc - C[i]) < 0) for i in range(m)])
+    status = int(signe.sum())
+    if status > 1 and m > 3:
+        xprev, x1st = -1.0, 1.0
+        for ie in range(m):
+            if signe[ie] == 0:
+                xprev = -1.0
+                continue
+            x = (ptc - C[ie]) @ e[ie]
+            if ie == 0:
+                x1st = x
+            if 0 <= x <= l[ie]:
+                signe[:] = 0
+                signe[ie] = 1
+                status = 1
+                break
+            elif x > l[ie]:
+                xprev = x
+                if ie == m - 1 and x1st < 0:
+                    signe[:] = 0
+                    signe[m - 1] = signe[0] = 1
+                    status = 2
+                    break
+            elif x < 0 and xprev > 0:
+                signe[:] = 0
+                signe[ie - 1] = signe[ie] = 1
+                status = 2
+                break
+    if status == 0:
+        return ptc, normal, dist
+    if status == 1:
+        for ie in range(m - 1):                       # LMGC90 stops at the last but one edge
+            if signe[ie]:
+                return _node_edge(x1, C[ie], C[(ie + 1) % m], ntr)
+        return ptc, normal, dist
+    if status == 2:
+        for ie in range(m):
+            if signe[ie]:
+                if ie == 0 and signe[1] == 0:
+                    return _node_node(x1, C[0], ntr)
+                return _node_node(x1, C[(ie + 1) % m], ntr)
+    return None
+
+
+def _edge_edge(c1b, c1e, c2b, c2e, ntr):
+    """edgetoedge_distance: list of (ptc, normal, dist), 1 or 2 entries
+    (LMGC90's branches, including its pairing of the antiparallel case)."""
+    e1 = c1e - c1b
+    l1 = np.sqrt(e1 @ e1)
+    e1 = e1 / l1
+    e2 = c2e - c2b
+    l2 = np.sqrt(e2 @ e2)
+    e2 = e2 / l2
+    P1 = lambda w: (1 - w) * c1b + w * c1e
+    P2 = lambda w: (1 - w) * c2b + w * c2e
+    nn = lambda a, b: _node_node(a, b, ntr)
+    c = e1 @ e2
+    if abs(c) > 1 - 1e-6:
+        x1, x2 = (c1b - c2b) @ e2, (c1e - c2b) @ e2
+        if c > 0:
+            if x1 > l2:
+                return [nn(c1b, c2e)]
+            if 0 <= x1 <= l2 and x2 > l2:
+                return [nn(c1b, P2(x1 / l2)), nn(P1(((c2e - c1b) @ e1) / l1), c2e)]
+            if 0 <= x1 <= l2 and 0 <= x2 <= l2:
+                return [nn(c1b, P2(x1 / l2)), nn(c1e, P2(x2 / l2))]
+            if x1 < 0 and x2 > l2:
+                return [nn(P1(((c2b - c1b) @ e1) / l1), c2b), nn(P1(((c2e - c1b) @ e1) / l1), c2e)]
+            if x1 < 0 and 0 <= x2 <= l2:
+                return [nn(P1(((c2b - c1b) @ e1) / l1), c2b), nn(c1e, P2(x2 / l2))]
+            if x2 < 0:
+                return [nn(c1e, c2b)]
+            return []
+        if x2 > l2:
+            return [nn(c1e, c2e)]
+        if 0 <= x2 <= l2 and x1 > l2:
+            return [nn(c1e, P2(x2 / l2)), nn(P1(((c2e - c1b) @ e1) / l1), c2e)]
+        if 0 <= x2 <= l2 and 0 <= x1 <= l2:
+            return [nn(c1e, P2(x2 / l2)), nn(c1e, P2(x1 / l2))]          # sic: LMGC90 pairs c1e twice
+        if x2 < 0 and x1 > l2:
+            return [nn(P1(((c2e - c1b) @ e1) / l1), c2e), nn(P1(((c2b - c1b) @ e1) / l1), c2b)]
+        if x2 < 0 and 0 <= x1 <= l2:
+            return [nn(P1(((c2e - c1b) @ e1) / l1), c2e), nn(c1e, P2(x2 / l2))]   # sic
+        if x1 < 0:
+            return [nn(c1b, c2b)]
+        return []
+    tmp = c1b - c2b
+    b1, b2, a12 = e1 @ tmp, -(e2 @ tmp), -c
+    delta = 1 - a12 * a12
+    x1 = (a12 * b2 - b1) / delta
+    x2 = (a12 * b1 - b2) / delta
+    w1 = 0.0 if x1 < 0 else (1.0 if x1 > l1 else x1 / l1)
+    w2 = 0.0 if x2 < 0 else (1.0 if x2 > l2 else x2 / l2)
+    return [nn(P1(w1), P2(w2))]
+
+
+def _orient(a, b, c, d):
+    """Shewchuk's orient3d sign convention: det[a - d, b - d, c - d]."""
+    return float(np.linalg.det(np.array([a - d, b - d, c - d])))
+
+
+def _edge_face(c1b, c1e, C, ntr):
+    """edgetoface_distance_wp: list of (ptc, normal, dist), 0 to 2 entries,
+    or None where LMGC90 raises an error."""
+    m = len(C)
+    d1b = (c1b - C[0]) @ ntr
+    p1b = c1b - d1b * ntr
+    d1e = (c1e - C[0]) @ ntr
+    p1e = c1e - d1e * ntr
+    b_in = e_in = True
+    cross = []
+    para = -1
+    for ie in range(m):
+        a, b = C[ie], C[(ie + 1) % m]
+        tmp = a - ntr
+        bc, ec = _orient(a, tmp, b, p1b), _orient(a, tmp, b, p1e)
+        if bc < 0:
+            b_in = False
+        if ec < 0:
+            e_in = False
+        if (bc < 0) != (ec < 0):
+            tmp2 = p1b - ntr
+            b2, e2 = _orient(p1b, tmp2, p1e, a), _orient(p1b, tmp2, p1e, b)
+            if (b2 < 0) != (e2 < 0):
+                r = _edge_edge(c1b, c1e, a, b, ntr)
+                if not r:
+                    return None
+                pick = min(r, key=lambda z: z[2]) if len(r) == 2 else r[0]
+                keep = True
+                if len(cross) == 1:
+                    ref = 0.5 * (r[0][0] + r[1][0]) if len(r) == 2 else r[0][0]
+                    if np.linalg.norm(cross[0][0] - ref) < 1e-14:
+                        keep = False
+                elif len(cross) == 2:
+                    keep = False
+                if keep:
+                    cross.append(pick)
+        if bc == 0 and ec == 0:
+            para = ie
+            break
+    if para >= 0:
+        r = _edge_edge(c1b, c1e, C[para], C[(para + 1) % m], ntr)
+        if len(r) != 2:
+            return None
+        out = r
+    elif len(cross) == 2:
+        out = cross
+    elif len(cross) == 1:
+        if b_in:
+            out = [cross[0], (p1b, ntr, d1b)]
+        elif e_in:
+            out = [cross[0], (p1e, ntr, d1e)]
+        else:
+            out = cross
+    else:
+        out = []
+    if b_in and e_in:
+        out = [(p1b, ntr, d1b), (p1e, ntr, d1e)]
+    return out
+
+
+def _accept(pts, adist, mid, sign):
+    """LMGC90's per-point test of the point stage: drop a point whose gap
+    exceeds the alert distance or whose normal is more than tol_angle off
+    the common plane's (sign: +1 when the normal is oriented like the
+    plane's, -1 when opposite)."""
+    return [p for p in pts if not (p[2] > adist or sign * (p[1] @ mid) < 1 - TOL_ANGLE)]
+
+
+def _seen_face(body, normal, sign):
+    """The face LMGC90 takes for a side with 3+ kept vertices: the first
+    whose normal is within f2f_tol of the plane's (sign * n . normal), else
+    the best aligned."""
+    c = sign * (body.FN @ normal)
+    ok = np.flatnonzero(c >= 1 - F2F_TOL)
+    if len(ok):
+        return int(ok[0])
+    best, k = 0.0, -1
+    for i, v in enumerate(c):
+        if v > best:
+            best, k = v, i
+    return k
+
+
+def _side(body, vis, jext, normal, sign):
+    """(status, geo) of a side: 3 face, 2 edge, 1 vertex, as LMGC90's
+    contact-type stage decides it from the kept vertices."""
+    kept = np.flatnonzero(vis > 0)
+    js = len(kept)
+    if js > 2:
+        return 3, _seen_face(body, normal, sign)
+    if js == 2:
+        key = (int(kept[0]), int(kept[1]))
+        if key in body.shape.edge_set:
+            return 2, key
+    return 1, int(jext)
+
+
+def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterations=LMGC90_ITERATIONS,
+                min_radius=None, sep=None, clip_eps=CLIP_EPS):
+    """LMGC90's detection of one pair (``DETECTION_COMMON_PLANE``): cd the
+    candidate, an the antagonist (:class:`_Body`), adist the alert
+    distance (m). Returns a dict: ``points`` (k, 3) m, ``gaps`` (k,) m,
+    ``normal`` (3,) the common plane's (from an to cd), ``gap`` the plane's
+    gap, ``stage`` the contact-type code (cd 1/2/3 + an 10/20/30, 0 for the
+    planplan route, -1 when the shadow overlap separates the pair)."""
+    if sep is None:
+        sep = cd.c - an.c
+        sep = sep / np.linalg.norm(sep)
+    ok, sep, gap, cd_vis, an_vis = _shadow_overlap(cd, an, adist, np.asarray(sep, float))
+    empty = {"points": np.zeros((0, 3)), "gaps": np.zeros(0), "normal": sep, "gap": gap, "stage": -1}
+    if not ok:
+        return empty
+    cd_vis = np.where(cd.shape.corner, cd_vis, 0)
+    an_vis = np.where(an.shape.corner, an_vis, 0)
+    if not (cd_vis.any() and an_vis.any()):
+        return empty
+    ref_size = min(cd.shape.radius, an.shape.radius) if min_radius is None else float(min_radius)
+    mid_P = 0.5 * (an.c + cd.c)
+    normal, t, s, gap, jmin, imax, center = _cundall(cd, an, cd_vis, an_vis, mid_P, sep, iterations, ref_size)
+    cd_k, an_k, ref, hc, ha = _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor)
+    res = {"normal": normal, "gap": gap, "stage": 0}
+    if route == "lmgc90-planplan":
+        P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
+        return {**res, "points": P, "gaps": np.full(len(P), gap)}
+    cs, cg = _side(cd, cd_k, jmin, normal, -1.0)
+    as_, ag = _side(an, an_k, imax, normal, +1.0)
+    code = cs + 10 * as_
+    res["stage"] = code
+    X, A = cd.X, an.X
+    pts = []
+    if code == 11:
+        pts = _accept([_node_node(X[cg], A[ag], normal)], adist, normal, 1)
+    elif code == 12:
+        p = _node_edge(A[ag], X[cg[0]], X[cg[1]], -normal)
+        pts = _accept([p], adist, normal, -1)
+    elif code == 13:
+        r = _node_face(A[ag], X[cd.shape.contour[cg]], cd.FN[cg])
+        pts = [] if r is None else _accept([r], adist, normal, -1)
+    elif code == 21:
+        pts = _accept([_node_edge(X[cg], A[ag[0]], A[ag[1]], normal)], adist, normal, 1)
+    elif code == 22:
+        r = _edge_edge(X[cg[0]], X[cg[1]], A[ag[0]], A[ag[1]], normal)
+        pts = _accept(r, adist, normal, 1)
+    elif code == 23:
+        r = _edge_face(A[ag[0]], A[ag[1]], X[cd.shape.contour[cg]], cd.FN[cg])
+        pts = [] if r is None else _accept(r, adist, normal, -1)
+    elif code == 31:
+        r = _node_face(X[cg], A[an.shape.contour[ag]], normal)
+        pts = [] if r is None else _accept([r], adist, normal, 1)
+    elif code == 32:
+        r = _edge_face(X[cg[0]], X[cg[1]], A[an.shape.contour[ag]], an.FN[ag])
+        pts = [] if r is None else _accept(r, adist, normal, 1)
+    else:                                                         # 33: face on face
+        P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
+        pts = [(p, normal, gap) for p in P]
+    if not pts and gap < adist:
+        # no point: the band ten times wider, and planplan
+        d1 = max(0.0, gap * 0.5) + 10 * neighbor * ref
+        cd_w, an_w = cd_k.copy(), an_k.copy()
+        m = (cd_w != 0) & (np.arange(len(cd_w)) != jmin)
+        cd_w[m & (hc > d1)] = 0
+        cd_w = np.abs(cd_w)
+        m = (an_w != 0) & (np.arange(len(an_w)) != imax)
+        an_w[m & (ha < -d1)] = 0
+        an_w = np.abs(an_w)
+        P = _planplan(cd, an, cd_w, an_w, center, t, normal, s, clip_eps)
+        pts = [(p, normal, gap) for p in P]
+    if not pts:
+        return {**res, "points": np.zeros((0, 3)), "gaps": np.zeros(0)}
+    return {**res, "points": np.array([p[0] for p in pts]), "gaps": np.array([p[2] for p in pts], float)}
