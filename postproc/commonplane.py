@@ -463,6 +463,13 @@ F2F_TOL = 1e-3                # f2f_tol: a face is "seen" when 1 - cos(face, pla
 TOL_ANGLE = 1e-2              # tol_angle: a point is kept when 1 - cos(its normal, plane) <= this (8.1 deg)
 CLIP_EPS = 1e-8               # Clipper2 precision of polytopes_intersection_wc (8 decimals of the length unit)
 _TOL_NORMALES = 1e-3          # compute_shadow_overlap
+# LMGC90 writes these as default-real (single precision) literals in
+# double-precision variables: their values are the float32 roundings
+_F32 = lambda x: float(np.float32(x))
+_LMGC_THETA_MAX = _F32(0.087)         # cundall_theta_max = 0.087
+_LMGC_THETA_MIN = _F32(0.0017)        # cundall_theta_min = 0.0017
+_LMGC_F2F_TOL = _F32(F2F_TOL)         # f2f_tol = 1e-3
+_LMGC_PARALLEL = _F32(1e-6)           # edgetoedge_distance's tol = 1e-6
 
 
 @dataclass
@@ -704,7 +711,7 @@ def _cundall(cd, an, cd_vis, an_vis, center, normal, iterations, ref_size):
         t = t / nt
         s = np.cross(t, normal)
     gap = dc.min() - da.max()
-    angle = THETA_MAX
+    angle = _LMGC_THETA_MAX
     cr, sr = np.cos(2 * np.pi / _NB_ROT), np.sin(2 * np.pi / _NB_ROT)
     for _ in range(iterations):
         co, si = np.cos(angle), np.sin(angle)
@@ -731,7 +738,7 @@ def _cundall(cd, an, cd_vis, an_vis, center, normal, iterations, ref_size):
             normal = n_ite[kk]
             t = t_ite[kk]
             s = np.cross(t, normal)
-        elif angle >= THETA_MIN:
+        elif angle >= _LMGC_THETA_MIN:
             angle *= 0.5
         else:
             break
@@ -955,7 +962,7 @@ def _edge_edge(c1b, c1e, c2b, c2e, ntr):
     P2 = lambda w: (1 - w) * c2b + w * c2e
     nn = lambda a, b: _node_node(a, b, ntr)
     c = e1 @ e2
-    if abs(c) > 1 - 1e-6:
+    if abs(c) > 1 - _LMGC_PARALLEL:
         x1, x2 = (c1b - c2b) @ e2, (c1e - c2b) @ e2
         if c > 0:
             if x1 > l2:
@@ -1072,7 +1079,7 @@ def _seen_face(body, normal, sign):
     whose normal is within f2f_tol of the plane's (sign * n . normal), else
     the best aligned."""
     c = sign * (body.FN @ normal)
-    ok = np.flatnonzero(c >= 1 - F2F_TOL)
+    ok = np.flatnonzero(c >= 1 - _LMGC_F2F_TOL)
     if len(ok):
         return int(ok[0])
     best, k = 0.0, -1

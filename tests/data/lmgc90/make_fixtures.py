@@ -162,10 +162,14 @@ def worker(inp, out):
     res = solver.compute_one_step()
     n = len(res.interaction_gap)
     uc = np.array(res.interaction_uc, float).reshape(n, 9) if n else np.zeros((0, 9))
+    # interaction_bodies holds (candidate, antagonist) body numbers; check it
+    # against the antagonist's own accessor
+    cdan = np.array(res.interaction_bodies, np.int64).reshape(n, 2)
+    ian = np.array(_get(res.interaction_ianbdy), np.int64).reshape(n)
+    if not np.array_equal(cdan[:, 1], ian):
+        raise SystemExit(f"make_fixtures: interaction_bodies {cdan[:3].tolist()} disagrees with ianbdy {ian[:3].tolist()}")
     np.savez(out,
-             cd=np.array(_get(res.interaction_icdtac), np.int64).reshape(n),
-             an=np.array(_get(res.interaction_iantac), np.int64).reshape(n),
-             bodies=np.array(res.interaction_bodies, np.int64).reshape(n, 2),
+             cd=cdan[:, 0], an=cdan[:, 1],
              point=np.array(res.interaction_coords, float).reshape(n, 3),
              t=uc[:, 0:3], n=uc[:, 3:6], s=uc[:, 6:9],
              gap=np.array(res.interaction_gap, float).reshape(n),
@@ -317,9 +321,14 @@ def make_pairs(alert=1e-5):
     np.savez_compressed(os.path.join(HERE, "pairs.npz"), **out)
 
 
-def make_packing(dump, snapshots, alert_rel=1e-3):
-    """LMGC90 on every grain of the dump's snapshots (walls left out), the
-    alert distance ``alert_rel`` x the mean grain size d."""
+ALERTS = (0.1, 0.002)      # alert distances, in units of the smallest grain radius (d_min / 2)
+
+
+def make_packing(dump, snapshots, alerts=ALERTS):
+    """LMGC90 on every grain of the dump's snapshots (walls left out), at
+    each alert distance of ``alerts`` (units of the smallest grain radius:
+    0.1 is what LMGC90's granular examples set, 0.002 about 1e-3 of the
+    mean grain size)."""
     sys.path.insert(0, os.path.abspath(os.path.join(HERE, "..", "..", "..")))
     from postproc.schema import DumpReader
     prov = provenance()
@@ -331,7 +340,7 @@ def make_packing(dump, snapshots, alert_rel=1e-3):
             keep = snap.shape_index >= 0
             ids, pos, q, shp = (snap.body_ids[keep], snap.positions[keep], snap.orientations[keep],
                                 snap.shape_index[keep])
-            alert = alert_rel * float(np.mean(snap.sizes[keep]))
+            r_min = 0.5 * float(np.min(snap.sizes[keep]))
             wv, wt = [], []
             for b in range(len(ids)):
                 w, x, y, z = q[b] / np.linalg.norm(q[b])
@@ -340,7 +349,8 @@ def make_packing(dump, snapshots, alert_rel=1e-3):
                               [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
                 wv.append(sv[shp[b]] @ R.T + pos[b])
                 wt.append(st[shp[b]])
-            out = {"provenance": json.dumps(prov), "alert": alert, "alert_rel": alert_rel,
+            out = {"provenance": json.dumps(prov), "alerts": np.array(alerts) * r_min,
+                   "alerts_rel": np.array(alerts), "r_min": r_min,
                    "dump": os.path.basename(dump), "snapshot": snap.name, "step": snap.step,
                    "stage": snap.stage, "body_ids": ids, "positions": pos, "orientations": q,
                    "shape_index": shp, "sizes": snap.sizes[keep],
@@ -351,12 +361,13 @@ def make_packing(dump, snapshots, alert_rel=1e-3):
             out["shape_vertex_offsets"] = np.cumsum([0] + [len(sv[s]) for s in used])
             out["shape_triangles"] = np.concatenate([st[s] for s in used])
             out["shape_triangle_offsets"] = np.cumsum([0] + [len(st[s]) for s in used])
-            for route in ROUTES:
-                res = run_case(wv, wt, pos, alert, route)
-                print(f"{snap.name} {route}: {len(res['gap'])} points")
-                for k in ("cd", "an", "point", "n", "gap", "status"):
-                    out[f"{route}_{k}"] = res[k]
-                out[f"{route}_body_centre"] = res["body_centre"]
+            for ia, a in enumerate(alerts):
+                for route in ROUTES:
+                    res = run_case(wv, wt, pos, a * r_min, route)
+                    print(f"{snap.name} alert {a} r_min, {route}: {len(res['gap'])} points")
+                    for k in ("cd", "an", "point", "n", "gap"):
+                        out[f"{route}{ia}_{k}"] = res[k]
+                    out[f"{route}{ia}_body_centre"] = res["body_centre"]
             np.savez_compressed(os.path.join(HERE, f"packing-{snap.name}.npz"), **out)
 
 
