@@ -28,7 +28,14 @@ Three criteria, one interface (:class:`Classifier`):
   normal, the vertices within tau * ref of it (``--tolerance`` tau, default
   0.1; ref the centre-to-extreme-vertex distance), the vertices of the
   intersection of their projected hulls as the contact points; no overlap
-  needed.
+  needed. Our band count, kept for the study's earlier numbers: it is not
+  LMGC90's count (docs/lmgc90-contacts.md).
+* ``"lmgc90"`` (``--types lmgc90``): LMGC90's own count, its CpCundall
+  detection with today's default point stage (:func:`postproc.commonplane.lmgc90_points`),
+  with the alert distance as ``--tolerance`` in units of the smallest grain
+  radius (default 0.1, what LMGC90's granular examples set);
+  ``"lmgc90-planplan"``: the same detection with LMGC90's older point stage
+  (planplan: 3 or 4 points, or none).
 
 :meth:`Classifier.classify` returns the class of every contact of a
 snapshot ("VV".."FF", "sphere", "wall") at the chosen parameter and, for
@@ -47,7 +54,7 @@ from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("points", "footprint", "angular", "commonplane")
+METHODS = ("points", "footprint", "angular", "commonplane") + cpl.LMGC90_ROUTES
 DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
@@ -118,8 +125,11 @@ class Classifier:
     recompute : "auto" (use the dumped footprint or overlap area, else
     recompute), "always" (ignore dumped ones) or "never". tolerance : alpha
     of the "points" method (delta = alpha V/area; default
-    :data:`postproc.contactpoints.DEFAULT_ALPHA`), or tau of the
-    "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`).
+    :data:`postproc.contactpoints.DEFAULT_ALPHA`), tau of the
+    "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`),
+    or the alert distance of the "lmgc90" and "lmgc90-planplan" methods in
+    units of the smallest grain radius (of the shapes; default
+    :data:`postproc.commonplane.DEFAULT_ALERT`).
     reference : how the "commonplane" method measures ref, the length its
     band is tau times: "vertex" (the default: the distance from the centre
     to the extreme vertex, LMGC90's older routine) or "normal" (that
@@ -139,7 +149,8 @@ class Classifier:
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
         self.reference = cpl.check_reference(reference)
-        default = cpl.DEFAULT_NEIGHBOR if method == "commonplane" else cpm.DEFAULT_ALPHA
+        default = {"commonplane": cpl.DEFAULT_NEIGHBOR, "lmgc90": cpl.DEFAULT_ALERT,
+                   "lmgc90-planplan": cpl.DEFAULT_ALERT}.get(method, cpm.DEFAULT_ALPHA)
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
@@ -147,12 +158,20 @@ class Classifier:
         self._geometry = None
         self._points = None
         self._planes = None
+        self._lmgc = None
 
     @property
     def parameter(self):
-        """The criterion's parameter: alpha, t (units of d), theta (deg) or tau."""
-        return {"points": self.tolerance, "footprint": self.threshold,
-                "commonplane": self.tolerance}.get(self.method, self.theta_deg)
+        """The criterion's parameter: alpha, t (units of d), theta (deg), tau,
+        or the alert distance (units of the smallest grain radius)."""
+        return {"points": self.tolerance, "footprint": self.threshold, "commonplane": self.tolerance,
+                "lmgc90": self.tolerance, "lmgc90-planplan": self.tolerance}.get(self.method, self.theta_deg)
+
+    @property
+    def lmgc90_tables(self):
+        if self._lmgc is None:
+            self._lmgc = cpl.lmgc90_tables(*self._shapes)
+        return self._lmgc
 
     @property
     def plane_tables(self):
@@ -189,7 +208,35 @@ class Classifier:
             return self._points_classes(snap, variants)
         if self.method == "commonplane":
             return self._commonplane_classes(snap, variants)
+        if self.method in cpl.LMGC90_ROUTES:
+            return self._lmgc90_classes(snap, variants)
         return self._footprint(snap, variants)
+
+    def _lmgc90_classes(self, snap, variants):
+        pp = self._pairs(snap, self.tolerance)
+        if not pp.poly.any():
+            return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
+        base, poly, cols = pp.base, pp.poly, pp.cols
+        tables = self.lmgc90_tables
+        r_min = min(t.radius for t in tables)
+        # LMGC90's candidate is the body with the lower number
+        s1, x1, q1, s2, x2, q2 = pp.poses
+        lo = pp.i1 < pp.i2
+        w = lambda a, b: np.where(lo.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
+        args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
+
+        def labels_at(alert):
+            r = cpl.lmgc90_points(*args, alert * r_min, route=self.method, min_radius=r_min)
+            out = base.copy()
+            out[poly] = np.array(PAIR_TYPES)[r["pair"]]
+            return out, r
+
+        lab, r = labels_at(self.tolerance)
+        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
+        # pairs LMGC90 gives no point (it makes no contact there): counted as simple
+        cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
+        cols["ct_alert_m"] = self.tolerance * r_min
+        return Classes(lab, var, poly, None, cols)
 
     def _commonplane_classes(self, snap, variants):
         pp = self._pairs(snap, self.tolerance)
@@ -353,6 +400,8 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
         fpm.check_threshold(threshold)
     if tolerance is not None and method == "commonplane":
         cpl.check_neighbor(tolerance, "--tolerance (commonplane: tau, the band in units of the radius)")
+    elif tolerance is not None and method in cpl.LMGC90_ROUTES:
+        cpl.check_alert(tolerance, f"--tolerance ({method}: the alert distance in units of the smallest grain radius)")
     elif tolerance is not None:
         cpm.check_alpha(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):

@@ -54,6 +54,7 @@ for steps 1-3; step 4 loops over contacts (a few polygons each).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -713,35 +714,44 @@ def _cundall(cd, an, cd_vis, an_vis, center, normal, iterations, ref_size):
     gap = dc.min() - da.max()
     angle = _LMGC_THETA_MAX
     cr, sr = np.cos(2 * np.pi / _NB_ROT), np.sin(2 * np.pi / _NB_ROT)
+    # the 3-vectors as Python floats: eight trial normals per round, built
+    # one from the other as LMGC90 does (t is not re-orthogonalised)
+    nx, ny, nz = (float(v) for v in normal)
+    tx, ty, tz = (float(v) for v in t)
+    sx, sy, sz = (float(v) for v in s)
+    XcT, XaT = Xc[jc].T, Xa[ia].T
+    n_ite, t_ite = np.empty((_NB_ROT, 3)), np.empty((_NB_ROT, 3))
     for _ in range(iterations):
-        co, si = np.cos(angle), np.sin(angle)
-        n_ite, t_ite = np.empty((_NB_ROT, 3)), np.empty((_NB_ROT, 3))
+        co, si = math.cos(angle), math.sin(angle)
         for k in range(_NB_ROT):
-            t = cr * t + sr * s
-            t = t / np.sqrt(t @ t)
-            t_ite[k] = t
-            s = np.cross(t, normal)
-            nk = co * normal + si * t
-            n_ite[k] = nk / np.sqrt(nk @ nk)
-        Dc = Xc[jc] @ n_ite.T                                      # (nc, 8)
-        Da = Xa[ia] @ n_ite.T
-        gk = Dc.min(axis=0) - Da.max(axis=0)
+            tx, ty, tz = cr * tx + sr * sx, cr * ty + sr * sy, cr * tz + sr * sz
+            L = math.sqrt(tx * tx + ty * ty + tz * tz)
+            tx, ty, tz = tx / L, ty / L, tz / L
+            t_ite[k] = tx, ty, tz
+            sx, sy, sz = ty * nz - tz * ny, tz * nx - tx * nz, tx * ny - ty * nx
+            ax, ay, az = co * nx + si * tx, co * ny + si * ty, co * nz + si * tz
+            L = math.sqrt(ax * ax + ay * ay + az * az)
+            n_ite[k] = ax / L, ay / L, az / L
+        Dc = n_ite @ XcT                                           # (8, nc)
+        Da = n_ite @ XaT
+        gk = Dc.min(axis=1) - Da.max(axis=1)
         gap_ini, kk = gap, -1
         for k in range(_NB_ROT):
             if gap < gk[k]:
                 gap, kk = gk[k], k
         if kk >= 0:
-            jmin, imax = jc[np.argmin(Dc[:, kk])], ia[np.argmax(Da[:, kk])]
+            jmin, imax = jc[np.argmin(Dc[kk])], ia[np.argmax(Da[kk])]
             if (gap - gap_ini) / ref_size < GAP_TOL:
                 kk = -1
         if kk >= 0:
-            normal = n_ite[kk]
-            t = t_ite[kk]
-            s = np.cross(t, normal)
+            nx, ny, nz = n_ite[kk]
+            tx, ty, tz = t_ite[kk]
+            sx, sy, sz = ty * nz - tz * ny, tz * nx - tx * nz, tx * ny - ty * nx
         elif angle >= _LMGC_THETA_MIN:
             angle *= 0.5
         else:
             break
+    normal = np.array([nx, ny, nz])
     normal = normal / np.sqrt(normal @ normal)
     t, s = _comp_rep(normal)
     gap = (cd.X[jmin] - center) @ normal - (an.X[imax] - center) @ normal
@@ -1109,8 +1119,9 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     candidate, an the antagonist (:class:`_Body`), adist the alert
     distance (m). Returns a dict: ``points`` (k, 3) m, ``gaps`` (k,) m,
     ``normal`` (3,) the common plane's (from an to cd), ``gap`` the plane's
-    gap, ``stage`` the contact-type code (cd 1/2/3 + an 10/20/30, 0 for the
-    planplan route, -1 when the shadow overlap separates the pair)."""
+    gap, ``stage`` the contact-type code (cd 1/2/3 + an 10/20/30, -1 when the
+    shadow overlap separates the pair); the planplan route reports the
+    same code though it does not use it)."""
     if sep is None:
         sep = cd.c - an.c
         sep = sep / np.linalg.norm(sep)
@@ -1126,14 +1137,13 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     mid_P = 0.5 * (an.c + cd.c)
     normal, t, s, gap, jmin, imax, center = _cundall(cd, an, cd_vis, an_vis, mid_P, sep, iterations, ref_size)
     cd_k, an_k, ref, hc, ha = _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor)
-    res = {"normal": normal, "gap": gap, "stage": 0}
-    if route == "lmgc90-planplan":
-        P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
-        return {**res, "points": P, "gaps": np.full(len(P), gap)}
     cs, cg = _side(cd, cd_k, jmin, normal, -1.0)
     as_, ag = _side(an, an_k, imax, normal, +1.0)
     code = cs + 10 * as_
-    res["stage"] = code
+    res = {"normal": normal, "gap": gap, "stage": code}
+    if route == "lmgc90-planplan":
+        P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
+        return {**res, "points": P, "gaps": np.full(len(P), gap)}
     X, A = cd.X, an.X
     pts = []
     if code == 11:
@@ -1176,3 +1186,109 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     if not pts:
         return {**res, "points": np.zeros((0, 3)), "gaps": np.zeros(0)}
     return {**res, "points": np.array([p[0] for p in pts]), "gaps": np.array([p[2] for p in pts], float)}
+
+
+def check_alert(alert, what="the alert distance"):
+    """alert as a float; InputError (one line) unless finite and > 0."""
+    return positive_tolerance(alert, what)
+
+
+def check_route(route):
+    """route unchanged; InputError (one line) unless one of LMGC90_ROUTES."""
+    if route not in LMGC90_ROUTES:
+        raise InputError(f"LMGC90 count: route must be one of {', '.join(LMGC90_ROUTES)}, got {route!r}")
+    return route
+
+
+def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, alert,
+                  route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterations=LMGC90_ITERATIONS, min_radius=None,
+                  clip_eps=CLIP_EPS):
+    """LMGC90's contact points of each polyhedra pair, as its CpCundall
+    detection finds them at a first detection (module section above).
+
+    tables : list of :class:`LmgcShape` (:func:`lmgc90_tables`). shape_cd,
+    shape_an (C,) int shape rows of the candidate and the antagonist (in
+    LMGC90 the candidate is the body with the lower number); pos (C, 3) m
+    centres of mass; quat (C, 4) (w, x, y, z) local -> global. alert : the
+    alert distance (m; pairs whose gap exceeds it have no point, and with
+    route "lmgc90" so has every point whose own gap exceeds it). route :
+    "lmgc90" (today's default point stage) or "lmgc90-planplan" (the older
+    route). neighbor : LMGC90's cundall_neighbor (the band, 0.1). iterations
+    : cundall_iter. min_radius : m, the smallest grain radius of the sample
+    (LMGC90's convergence scale; default the smallest shape of ``tables``).
+    clip_eps : m, the Clipper2 precision (1e-8 of LMGC90's length unit: the
+    default assumes metres).
+
+    The search starts, as LMGC90's does at a first detection, from the
+    direction from the antagonist's centre to the candidate's.
+
+    Returns a dict of (C,) arrays: ``points`` int (0..4), ``group`` int8
+    (SIMPLE, DOUBLE, TRIPLE; 0 or 1 point is simple), ``pair`` int8 index
+    into contacttypes.PAIR_TYPES agreeing with the group, ``feature_cd``,
+    ``feature_an`` int8 (VERTEX, EDGE, FACE: 1, 2, 3+ vertices kept in the
+    band), ``gap`` m (the common plane's; negative: interpenetration),
+    ``normal`` (C, 3) the common plane's unit normal from the antagonist to
+    the candidate, ``stage`` int the contact-type code (cd 1/2/3 + an
+    10/20/30; -1 when the shadow overlap separates the pair), and the lists
+    ``xyz`` (each (k, 3) m, the points) and ``gaps`` (each (k,) m).
+    Raises InputError (one line) for bad indices or non-finite input.
+    """
+    check_route(route)
+    adist = check_alert(alert)
+    check_neighbor(neighbor)
+    C = len(np.asarray(shape_cd))
+    S = len(tables)
+    arrs = []
+    for name, a, shp in (("shape_cd", shape_cd, (C,)), ("shape_an", shape_an, (C,)), ("pos_cd", pos_cd, (C, 3)),
+                         ("pos_an", pos_an, (C, 3)), ("quat_cd", quat_cd, (C, 4)), ("quat_an", quat_an, (C, 4))):
+        a = np.asarray(a)
+        if a.shape != shp:
+            raise InputError(f"LMGC90 count: {name} must have shape {shp}, got {a.shape}")
+        if name.startswith("shape"):
+            if not np.issubdtype(a.dtype, np.integer):
+                raise InputError(f"LMGC90 count: {name} must be integer shape rows")
+            bad = (a < 0) | (a >= S)
+            if bad.any():
+                k = int(np.flatnonzero(bad)[0])
+                raise InputError(f"LMGC90 count: contact {k}: {name} {int(a[k])} out of range 0..{S - 1}")
+        elif not np.isfinite(a.astype(float)).all():
+            k = int(np.flatnonzero(~np.isfinite(a.astype(float)).all(axis=1))[0])
+            raise InputError(f"LMGC90 count: contact {k}: {name} is not finite")
+        arrs.append(a)
+    s_cd, s_an, p_cd, p_an, q_cd, q_an = arrs
+    for name, q in (("quat_cd", q_cd), ("quat_an", q_an)):
+        bad = np.linalg.norm(q.astype(float), axis=1) == 0
+        if bad.any():
+            raise InputError(f"LMGC90 count: contact {int(np.flatnonzero(bad)[0])}: {name} has zero norm")
+    same = np.all(p_cd == p_an, axis=1)
+    if same.any():
+        raise InputError(f"LMGC90 count: contact {int(np.flatnonzero(same)[0])}: the two centres coincide")
+    if min_radius is None:
+        min_radius = min(t.radius for t in tables)
+    R_cd, R_an = rotation_matrices(q_cd.astype(float)), rotation_matrices(q_an.astype(float))
+    out = {"points": np.zeros(C, np.int64), "gap": np.zeros(C), "normal": np.zeros((C, 3)),
+           "stage": np.zeros(C, np.int64), "feature_cd": np.zeros(C, np.int8), "feature_an": np.zeros(C, np.int8),
+           "xyz": [], "gaps": []}
+    feat = {1: VERTEX, 2: EDGE, 3: FACE}
+    for k in range(C):
+        cd = _Body(tables[s_cd[k]], R_cd[k], p_cd[k])
+        an = _Body(tables[s_an[k]], R_an[k], p_an[k])
+        r = lmgc90_pair(cd, an, adist, route, neighbor, iterations, min_radius, None, clip_eps)
+        out["points"][k] = len(r["points"])
+        out["gap"][k], out["normal"][k], out["stage"][k] = r["gap"], r["normal"], r["stage"]
+        st = r["stage"]
+        if st > 0:
+            out["feature_cd"][k], out["feature_an"][k] = feat[st % 10], feat[st // 10]
+        else:
+            out["feature_cd"][k] = out["feature_an"][k] = VERTEX
+        out["xyz"].append(r["points"])
+        out["gaps"].append(r["gaps"])
+    pts = out["points"]
+    group = np.where(pts >= 3, TRIPLE, np.where(pts == 2, DOUBLE, SIMPLE)).astype(np.int8)
+    pair = pair_types(out["feature_cd"], out["feature_an"]).astype(np.int8)
+    face = (out["feature_cd"] == FACE) | (out["feature_an"] == FACE)
+    pair[group == TRIPLE] = _FF
+    pair[group == DOUBLE] = _EF
+    pair[(group == SIMPLE) & face] = _VF
+    out["group"], out["pair"] = group, pair
+    return out
