@@ -471,6 +471,7 @@ _LMGC_THETA_MAX = _F32(0.087)         # cundall_theta_max = 0.087
 _LMGC_THETA_MIN = _F32(0.0017)        # cundall_theta_min = 0.0017
 _LMGC_F2F_TOL = _F32(F2F_TOL)         # f2f_tol = 1e-3
 _LMGC_PARALLEL = _F32(1e-6)           # edgetoedge_distance's tol = 1e-6
+_LMGC_PI = _F32(math.pi)              # PI_g = 3.14159265358979323846 (mod_overall)
 
 
 @dataclass
@@ -713,7 +714,7 @@ def _cundall(cd, an, cd_vis, an_vis, center, normal, iterations, ref_size):
         s = np.cross(t, normal)
     gap = dc.min() - da.max()
     angle = _LMGC_THETA_MAX
-    cr, sr = np.cos(2 * np.pi / _NB_ROT), np.sin(2 * np.pi / _NB_ROT)
+    cr, sr = math.cos(2 * _LMGC_PI / _NB_ROT), math.sin(2 * _LMGC_PI / _NB_ROT)
     # the 3-vectors as Python floats: eight trial normals per round, built
     # one from the other as LMGC90 does (t is not re-orthogonalised)
     nx, ny, nz = (float(v) for v in normal)
