@@ -501,21 +501,24 @@ class LmgcShape:
     min_radius_face: float
 
 
-def _triangle_normal(s1, s2, s3):
-    """LMGC90's compute_info_triangle normal: (s2 - s3) x (s2 - s1), unit."""
-    n = np.cross(s2 - s3, s2 - s1)
-    return n / np.linalg.norm(n)
+def _triangle_normals(S1, S2, S3):
+    """LMGC90's compute_info_triangle normals: (s2 - s3) x (s2 - s1), unit;
+    (T, 3) from the corners (T, 3) each."""
+    n = np.cross(S2 - S3, S2 - S1)
+    return n / np.linalg.norm(n, axis=1)[:, None]
 
 
-def _circumradius(s1, s2, s3):
-    v1, v2, v3 = s2 - s3, s1 - s3, s2 - s1
-    l = np.array([np.linalg.norm(v1), np.linalg.norm(v2), np.linalg.norm(v3)])
-    hp = 0.5 * l.sum()
-    surf = np.sqrt(max(hp * (hp - l[0]) * (hp - l[1]) * (hp - l[2]), 0.0))
-    c = [np.dot(-v2, v3), np.dot(-v3, -v1), np.dot(v1, v2)]
-    if min(c) < 0 or surf == 0:
-        return 0.5 * l.max()
-    return l[0] * l[1] * l[2] / (4 * surf)
+def _circumradii(S1, S2, S3):
+    """compute_info_triangle's outer radius of each triangle (T,): half the
+    longest side for an obtuse triangle, else the circumradius."""
+    v1, v2, v3 = S2 - S3, S1 - S3, S2 - S1
+    l = np.stack([np.linalg.norm(v1, axis=1), np.linalg.norm(v2, axis=1), np.linalg.norm(v3, axis=1)], 1)
+    hp = 0.5 * l.sum(axis=1)
+    surf = np.sqrt(np.maximum(hp * (hp - l[:, 0]) * (hp - l[:, 1]) * (hp - l[:, 2]), 0.0))
+    c = np.stack([np.einsum("ij,ij->i", -v2, v3), np.einsum("ij,ij->i", -v3, -v1),
+                  np.einsum("ij,ij->i", v1, v2)], 1)
+    obtuse = (c.min(axis=1) < 0) | (surf == 0)
+    return np.where(obtuse, 0.5 * l.max(axis=1), l.prod(axis=1) / (4 * np.where(surf == 0, 1.0, surf)))
 
 
 def lmgc90_shape(vertices, triangles):
@@ -526,31 +529,30 @@ def lmgc90_shape(vertices, triangles):
     V = np.asarray(vertices, float)
     T = np.asarray(triangles, np.int64)
     nT = len(T)
-    normals = np.array([_triangle_normal(*V[t]) for t in T])
+    normals = _triangle_normals(V[T[:, 0]], V[T[:, 1]], V[T[:, 2]])
     # orientation as POLYR fixes it: outward with respect to the centre
     flip = np.einsum("ij,ij->i", V[T[:, 0]], normals) <= 0
     if flip.any():
         T = T.copy()
         T[flip] = T[flip][:, [0, 2, 1]]
         normals[flip] = -normals[flip]
-    # triangles around each vertex, then the neighbour across each edge
-    around = [[] for _ in range(len(V))]
-    for ie, t in enumerate(T):
-        for v in t:
-            around[v].append(ie)
+    # the neighbour across each edge (edge ic joins corners ic and ic + 1)
+    TL = T.tolist()
+    owner = {}
+    for ie, t in enumerate(TL):
+        for ic in range(3):
+            owner.setdefault((t[ic], t[(ic + 1) % 3]), []).append(ie)
     adj = []
-    for ie, t in enumerate(T):
+    for ie, t in enumerate(TL):
         row = []
         for ic in range(3):
             a, b = t[ic], t[(ic + 1) % 3]
-            for je in around[a]:
-                if je != ie and b in T[je]:
-                    row.append(je)
-                    break
+            other = [je for je in owner.get((b, a), []) + owner.get((a, b), []) if je != ie]
+            if other:
+                row.append(min(other))
         adj.append(row)
-    if any(len(r) != 3 for r in adj):
-        raise InputError("LMGC90 count: a shape's triangles do not close its surface")
     tol_topo = np.cos(np.radians(TOPO_ANGLE))
+    dots = normals @ normals.T
     belong = np.arange(nT)
     skip = np.zeros(nT, bool)
     for ie in range(nT - 1):
@@ -564,7 +566,7 @@ def lmgc90_shape(vertices, triangles):
                 for ke in adj[je]:
                     if skip[ke] or ke in nxt:
                         continue
-                    if normals[je] @ normals[ke] > tol_topo:
+                    if dots[je, ke] > tol_topo:
                         nxt.append(ke)
                         skip[ke] = True
                         belong[ke] = ie
@@ -576,14 +578,14 @@ def lmgc90_shape(vertices, triangles):
     for f in faces:
         fs = set(f.tolist())
         border = []
-        for ie in f:
+        for ie in f.tolist():
             for je in adj[ie]:
                 if je in fs:
                     continue
-                t = T[ie]
+                t, tj = TL[ie], TL[je]
                 for ic in range(3):
                     a, b = t[ic], t[(ic + 1) % 3]
-                    if a in T[je] and b in T[je]:
+                    if a in tj and b in tj:
                         border.append([a, b])
                         starts[a] += 1
                         break
@@ -620,7 +622,7 @@ def lmgc90_shape(vertices, triangles):
                     look = False
     contour = [np.array([e[0] for e in border if corner[e[0]]], np.int64) for border in contours]
     face_normal = np.array([normals[f[0]] for f in faces]).reshape(nface, 3)
-    rmf = min(_circumradius(*V[t]) for t in T)
+    rmf = float(np.min(_circumradii(V[T[:, 0]], V[T[:, 1]], V[T[:, 2]])))
     return LmgcShape(V, T, normals, faces, face_normal, contour, corner,
                      np.array(edges, np.int64).reshape(-1, 2), seen,
                      float(np.max(np.linalg.norm(V, axis=1))), float(rmf))
