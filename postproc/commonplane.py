@@ -629,10 +629,10 @@ def lmgc90_shape(vertices, triangles):
 
 
 def lmgc90_tables(vertices, triangles):
-    """List of :class:`LmgcShape`, one per shape (a dump's ``/shapes``).
+    """:class:`LmgcTables`: the :class:`LmgcShape` of each shape (a dump's ``/shapes``).
     Raises InputError (one line) for bad shapes."""
     point_tables(vertices, triangles)                       # the shared checks, one-line errors
-    return [lmgc90_shape(v, t) for v, t in zip(vertices, triangles)]
+    return LmgcTables([lmgc90_shape(v, t) for v, t in zip(vertices, triangles)])
 
 
 class _Body:
@@ -1140,6 +1140,14 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     mid_P = 0.5 * (an.c + cd.c)
     normal, t, s, gap, jmin, imax, center = _cundall(cd, an, cd_vis, an_vis, mid_P, sep, iterations, ref_size)
     cd_k, an_k, ref, hc, ha = _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor)
+    return _point_stage(cd, an, adist, route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
+                        cd_k, an_k, ref, hc, ha)
+
+
+def _point_stage(cd, an, adist, route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
+                 cd_k, an_k, ref, hc, ha):
+    """The contact-type and point stages of DETECTION_COMMON_PLANE after
+    the band (see :func:`lmgc90_pair`)."""
     cs, cg = _side(cd, cd_k, jmin, normal, -1.0)
     as_, ag = _side(an, an_k, imax, normal, +1.0)
     code = cs + 10 * as_
@@ -1266,26 +1274,42 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     same = np.all(p_cd == p_an, axis=1)
     if same.any():
         raise InputError(f"LMGC90 count: contact {int(np.flatnonzero(same)[0])}: the two centres coincide")
+    if not isinstance(tables, LmgcTables):
+        tables = LmgcTables(tables)
     if min_radius is None:
-        min_radius = min(t.radius for t in tables)
+        min_radius = tables.rmin
     R_cd, R_an = rotation_matrices(q_cd.astype(float)), rotation_matrices(q_an.astype(float))
     out = {"points": np.zeros(C, np.int64), "gap": np.zeros(C), "normal": np.zeros((C, 3)),
            "stage": np.zeros(C, np.int64), "feature_cd": np.zeros(C, np.int8), "feature_an": np.zeros(C, np.int8),
            "xyz": [], "gaps": []}
     feat = {1: VERTEX, 2: EDGE, 3: FACE}
-    for k in range(C):
-        cd = _Body(tables[s_cd[k]], R_cd[k], p_cd[k])
-        an = _Body(tables[s_an[k]], R_an[k], p_an[k])
-        r = lmgc90_pair(cd, an, adist, route, neighbor, iterations, min_radius, None, clip_eps)
-        out["points"][k] = len(r["points"])
-        out["gap"][k], out["normal"][k], out["stage"][k] = r["gap"], r["normal"], r["stage"]
-        st = r["stage"]
-        if st > 0:
+    for b0 in range(0, C, _BLOCK):
+        sl = slice(b0, min(b0 + _BLOCK, C))
+        sc, sa = s_cd[sl], s_an[sl]
+        D = _detect_block(tables, sc, R_cd[sl], p_cd[sl].astype(float), sa, R_an[sl], p_an[sl].astype(float),
+                          adist, iterations, float(min_radius), neighbor)
+        at = {int(k): i for i, k in enumerate(D.get("a", []))}
+        for j in range(sl.stop - b0):
+            k = b0 + j
+            i = at.get(j)
+            if i is None:                          # no contact: no visible pair of faces, or a gap above the alert
+                out["gap"][k], out["normal"][k], out["stage"][k] = D["gap"][j], D["sep"][j], -1
+                out["feature_cd"][k] = out["feature_an"][k] = VERTEX
+                out["xyz"].append(np.zeros((0, 3)))
+                out["gaps"].append(np.zeros(0))
+                continue
+            cd = _Posed(tables[sc[j]], D["XC"][j], R_cd[k], p_cd[k])
+            an = _Posed(tables[sa[j]], D["XA"][j], R_an[k], p_an[k])
+            nc, na = len(cd.X), len(an.X)
+            r = _point_stage(cd, an, adist, route, neighbor, clip_eps, D["normal"][i], D["t"][i], D["s"][i],
+                             D["plane_gap"][i], D["jmin"][i], D["imax"][i], D["center"][i], D["kC"][i, :nc],
+                             D["kA"][i, :na], D["ref"][i], D["hc"][i, :nc], D["ha"][i, :na])
+            out["points"][k] = len(r["points"])
+            out["gap"][k], out["normal"][k], out["stage"][k] = r["gap"], r["normal"], r["stage"]
+            st = r["stage"]
             out["feature_cd"][k], out["feature_an"][k] = feat[st % 10], feat[st // 10]
-        else:
-            out["feature_cd"][k] = out["feature_an"][k] = VERTEX
-        out["xyz"].append(r["points"])
-        out["gaps"].append(r["gaps"])
+            out["xyz"].append(r["points"])
+            out["gaps"].append(r["gaps"])
     pts = out["points"]
     group = np.where(pts >= 3, TRIPLE, np.where(pts == 2, DOUBLE, SIMPLE)).astype(np.int8)
     pair = pair_types(out["feature_cd"], out["feature_an"]).astype(np.int8)
@@ -1295,3 +1319,197 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     pair[(group == SIMPLE) & face] = _VF
     out["group"], out["pair"] = group, pair
     return out
+
+
+class LmgcTables(list):
+    """A list of :class:`LmgcShape` (one per shape) with the shapes padded
+    to common sizes for the vectorised detection: ``V`` (S, Vmax, 3)
+    vertices, ``vmask`` (S, Vmax), ``corner`` (S, Vmax), ``N`` (S, Tmax, 3)
+    triangle normals, ``tmask`` (S, Tmax), ``tri`` (S, Tmax, 3) and ``rmin``
+    the smallest shape radius."""
+
+    def __init__(self, shapes):
+        super().__init__(shapes)
+        S = len(self)
+        Vm = max(len(x.vertices) for x in self)
+        Tm = max(len(x.triangles) for x in self)
+        self.V = np.zeros((S, Vm, 3))
+        self.vmask = np.zeros((S, Vm), bool)
+        self.corner = np.zeros((S, Vm), bool)
+        self.N = np.zeros((S, Tm, 3))
+        self.tmask = np.zeros((S, Tm), bool)
+        self.tri = np.zeros((S, Tm, 3), np.int64)
+        for k, x in enumerate(self):
+            nv, nt = len(x.vertices), len(x.triangles)
+            self.V[k, :nv], self.vmask[k, :nv], self.corner[k, :nv] = x.vertices, True, x.corner
+            self.N[k, :nt], self.tmask[k, :nt], self.tri[k, :nt] = x.normals, True, x.triangles
+            self.tri[k, nt:] = x.triangles[0]
+        self.rmin = min(x.radius for x in self) if S else 0.0
+
+
+def _cross_rows(a, b):
+    """Row-wise cross products of (n, 3) arrays."""
+    return np.stack([a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1], a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2],
+                     a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]], 1)
+
+
+def _unit_rows(a):
+    return a / np.sqrt(np.einsum("ij,ij->i", a, a))[:, None]
+
+
+def _comp_rep_rows(n):
+    """comp_rep for each row of n (n, 3): (t, s)."""
+    t = np.empty_like(n)
+    a0, a1, a2 = np.abs(n[:, 0]) < 1e-15, np.abs(n[:, 1]) < 1e-15, np.abs(n[:, 2]) < 1e-15
+    c0 = a0
+    c1 = ~a0 & a1
+    c2 = ~a0 & ~a1 & a2
+    c3 = ~(a0 | a1 | a2)
+    t[c0] = np.stack([n[c0, 0], -n[c0, 2], n[c0, 1]], 1)
+    t[c1] = np.stack([-n[c1, 2], n[c1, 1], n[c1, 0]], 1)
+    t[c2] = np.stack([-n[c2, 1], n[c2, 0], n[c2, 2]], 1)
+    x = np.zeros_like(n[c3])
+    x[:, 0] = 1.0
+    t[c3] = _cross_rows(x, n[c3])
+    t = _unit_rows(t)
+    return t, _cross_rows(t, n)
+
+
+def _detect_block(T, s_cd, R_cd, p_cd, s_an, R_an, p_an, adist, iterations, ref_size, neighbor):
+    """Shadow overlap, Cundall's plane and the band for a block of pairs,
+    vectorised (the same steps as :func:`lmgc90_pair`). Returns a dict of
+    arrays; ``ok`` (B,) False where the pair is no contact."""
+    B = len(s_cd)
+    XC = np.einsum("bij,bvj->bvi", R_cd, T.V[s_cd]) + p_cd[:, None, :]
+    XA = np.einsum("bij,bvj->bvi", R_an, T.V[s_an]) + p_an[:, None, :]
+    NC = np.einsum("bij,btj->bti", R_cd, T.N[s_cd])
+    NA = np.einsum("bij,btj->bti", R_an, T.N[s_an])
+    mC, mA = T.vmask[s_cd], T.vmask[s_an]
+    tC, tA = T.tmask[s_cd], T.tmask[s_an]
+    triC, triA = T.tri[s_cd], T.tri[s_an]
+    rows = np.arange(B)
+    supC = np.einsum("btk,btk->bt", XC[rows[:, None], triC[:, :, 0]], NC)
+    supA = np.einsum("btk,btk->bt", XA[rows[:, None], triA[:, :, 0]], NA)
+    sep = _unit_rows(p_cd - p_an)
+    gap = (np.where(mC, np.einsum("bvk,bk->bv", XC, sep), np.inf).min(axis=1)
+           - np.where(mA, np.einsum("bvk,bk->bv", XA, sep), -np.inf).max(axis=1))
+    ok = gap <= adist
+    # antagonist faces turned to the candidate, against every candidate vertex
+    va = (np.einsum("btk,bk->bt", NA, sep) >= -_TOL_NORMALES) & tA
+    DA = np.where(mC[:, :, None], np.einsum("bvk,btk->bvt", XC, NA), np.inf).min(axis=1) - supA
+    vc = (np.einsum("btk,bk->bt", NC, sep) <= _TOL_NORMALES) & tC
+    DC = np.where(mA[:, :, None], np.einsum("bvk,btk->bvt", XA, NC), np.inf).min(axis=1) - supC
+    ok &= ~np.any(va & (DA > adist), axis=1) & ~np.any(vc & (DC > adist), axis=1)
+    DAm = np.where(va, DA, -np.inf)
+    DCm = np.where(vc, DC, -np.inf)
+    e_an, e_cd = DAm.argmax(axis=1), DCm.argmax(axis=1)
+    g_an, g_cd = DAm[rows, e_an], DCm[rows, e_cd]
+    has_an, has_cd = g_an > gap, g_cd > gap
+    n_an, n_cd = NA[rows, e_an], NC[rows, e_cd]
+    both = has_an & has_cd
+    new_sep = sep.copy()
+    new_gap = gap.copy()
+    if both.any():
+        new_sep[both] = _unit_rows((n_an[both] - n_cd[both]) * 0.5)
+        new_gap[both] = (g_cd[both] + g_an[both]) * 0.5
+    only_cd = has_cd & ~has_an
+    new_sep[only_cd], new_gap[only_cd] = -n_cd[only_cd], g_cd[only_cd]
+    only_an = has_an & ~has_cd
+    new_sep[only_an], new_gap[only_an] = n_an[only_an], g_an[only_an]
+    # visible vertices: those of the turned faces, corners only
+    visC = np.zeros((B, XC.shape[1]), bool)
+    visA = np.zeros((B, XA.shape[1]), bool)
+    r3 = np.broadcast_to(rows[:, None, None], triC.shape)
+    visC[r3[vc], triC[vc]] = True
+    r3 = np.broadcast_to(rows[:, None, None], triA.shape)
+    visA[r3[va], triA[va]] = True
+    visC &= T.corner[s_cd]
+    visA &= T.corner[s_an]
+    ok &= visC.any(axis=1) & visA.any(axis=1)
+    out = {"ok": ok, "XC": XC, "XA": XA, "NC": NC, "NA": NA, "sep": new_sep, "gap": new_gap}
+    a = np.flatnonzero(ok)
+    if not len(a):
+        return out
+    # Cundall's common plane, every pair of the block in step
+    center = 0.5 * (p_an[a] + p_cd[a])
+    Xc, Xa = XC[a] - center[:, None, :], XA[a] - center[:, None, :]
+    vC, vA = visC[a], visA[a]
+    n = new_sep[a].copy()
+    dC = np.where(vC, np.einsum("bvk,bk->bv", Xc, n), np.inf)
+    dA = np.where(vA, np.einsum("bvk,bk->bv", Xa, n), -np.inf)
+    jmin, imax = dC.argmin(axis=1), dA.argmax(axis=1)
+    ra = np.arange(len(a))
+    p1 = XA[a][ra, imax] - XC[a][ra, jmin]
+    t = p1 - np.einsum("bk,bk->b", p1, n)[:, None] * n
+    nt = np.sqrt(np.einsum("bk,bk->b", t, t))
+    small = nt < 1e-6 * ref_size
+    t0, s0 = _comp_rep_rows(n)
+    t = np.where(small[:, None], t0, t / np.where(small, 1.0, nt)[:, None])
+    s = np.where(small[:, None], s0, _cross_rows(t, n))
+    g = dC[ra, jmin] - dA[ra, imax]
+    angle = np.full(len(a), _LMGC_THETA_MAX)
+    live = np.ones(len(a), bool)
+    cr, sr = math.cos(2 * _LMGC_PI / _NB_ROT), math.sin(2 * _LMGC_PI / _NB_ROT)
+    for _ in range(iterations):
+        L = np.flatnonzero(live)
+        if not len(L):
+            break
+        nL, tL, sL = n[L], t[L], s[L]
+        co, si = np.cos(angle[L])[:, None], np.sin(angle[L])[:, None]
+        n_ite = np.empty((len(L), _NB_ROT, 3))
+        t_ite = np.empty((len(L), _NB_ROT, 3))
+        for k in range(_NB_ROT):
+            tL = _unit_rows(cr * tL + sr * sL)
+            t_ite[:, k] = tL
+            sL = _cross_rows(tL, nL)
+            n_ite[:, k] = _unit_rows(co * nL + si * tL)
+        DcL = np.where(vC[L][:, None, :], np.einsum("bkj,bvj->bkv", n_ite, Xc[L]), np.inf)
+        DaL = np.where(vA[L][:, None, :], np.einsum("bkj,bvj->bkv", n_ite, Xa[L]), -np.inf)
+        gk = DcL.min(axis=2) - DaL.max(axis=2)                     # (L, 8)
+        best = gk.argmax(axis=1)
+        rl = np.arange(len(L))
+        gbest = gk[rl, best]
+        better = gbest > g[L]
+        gap_ini = g[L]
+        Lb = L[better]
+        g[Lb] = gbest[better]
+        jmin[Lb] = DcL[rl[better], best[better]].argmin(axis=1)
+        imax[Lb] = DaL[rl[better], best[better]].argmax(axis=1)
+        accept = better & ((gbest - gap_ini) / ref_size >= GAP_TOL)
+        La = L[accept]
+        n[La] = n_ite[rl[accept], best[accept]]
+        t[La] = t_ite[rl[accept], best[accept]]
+        s[La] = _cross_rows(t[La], n[La])
+        Lr = L[~accept]
+        halve = angle[Lr] >= _LMGC_THETA_MIN
+        angle[Lr[halve]] *= 0.5
+        live[Lr[~halve]] = False
+    n = _unit_rows(n)
+    t, s = _comp_rep_rows(n)
+    xc, xa = XC[a][ra, jmin], XA[a][ra, imax]
+    g = np.einsum("bk,bk->b", xc - center, n) - np.einsum("bk,bk->b", xa - center, n)
+    cpt = 0.5 * (xa + xc)
+    # the band
+    ref = np.minimum(np.abs(np.einsum("bk,bk->b", xa - p_an[a], n)), np.abs(np.einsum("bk,bk->b", xc - p_cd[a], n)))
+    d1 = np.maximum(0.0, g * 0.5) + neighbor * ref
+    hc = np.einsum("bvk,bk->bv", XC[a] - cpt[:, None, :], n)
+    ha = np.einsum("bvk,bk->bv", XA[a] - cpt[:, None, :], n)
+    kC = np.where(vC, np.where(hc > d1[:, None], -1, 1), 0)
+    kA = np.where(vA, np.where(ha < -d1[:, None], -1, 1), 0)
+    kC[ra, jmin] = 2
+    kA[ra, imax] = 2
+    out.update({"a": a, "normal": n, "t": t, "s": s, "plane_gap": g, "jmin": jmin, "imax": imax, "center": cpt,
+                "kC": kC, "kA": kA, "ref": ref, "hc": hc, "ha": ha})
+    return out
+
+
+class _Posed:
+    """A posed body for the point stage, from the block's arrays."""
+
+    __slots__ = ("shape", "X", "N", "FN", "c", "support")
+
+    def __init__(self, shape, X, R, x):
+        self.shape = shape
+        self.X = X[:len(shape.vertices)]
+        self.FN = shape.face_normal @ R.T
+        self.c = x
