@@ -30,7 +30,6 @@ import pandas as pd
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from postproc import commonplane as cp  # noqa: E402
-from shapes.overlap import rotation_matrices  # noqa: E402
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "lmgc90")
 ROUTES = {"new": "lmgc90", "old": "lmgc90-planplan"}
@@ -50,9 +49,7 @@ def one(name):
     tables = cp.lmgc90_tables(verts, tris)
     row = {s: k for k, s in enumerate(F["shape_rows"])}
     srow = np.array([row[s] for s in F["shape_index"]])
-    R = rotation_matrices(F["orientations"])
-    bodies = [cp._Body(tables[srow[b]], R[b], F["positions"][b]) for b in range(len(srow))]
-    r_min = min(t.radius for t in tables)
+    x, q = F["positions"], F["orientations"]
     idx = {int(i): k for k, i in enumerate(F["body_ids"])}
     dumped, dumped_rows = [], []
     for j, (a, b) in enumerate(zip(F["contact_id1"], F["contact_id2"])):
@@ -66,8 +63,10 @@ def one(name):
         for route, name_route in ROUTES.items():
             cnt = collections.Counter(zip((F[f"{route}{ia}_cd"] - 1).tolist(), (F[f"{route}{ia}_an"] - 1).tolist()))
             pairs = sorted(set(cnt) | set(dumped))
-            ours = {p: len(cp.lmgc90_pair(bodies[p[0]], bodies[p[1]], float(alert), route=name_route,
-                                          min_radius=r_min)["points"]) for p in pairs}
+            i, k = np.array(pairs).T
+            n = cp.lmgc90_points(tables, srow[i], x[i], q[i], srow[k], x[k], q[k], float(alert),
+                                 route=name_route)["points"]
+            ours = dict(zip(pairs, n.tolist()))
             lm_d = [cnt.get(p, 0) for p in dumped]
             us_d = [ours[p] for p in dumped]
             rows.append({"snapshot": str(F["snapshot"]), "stage": str(F["stage"]), "route": name_route,

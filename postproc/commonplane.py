@@ -1463,6 +1463,7 @@ def _detect_block(T, s_cd, R_cd, p_cd, s_an, R_an, p_an, adist, iterations, ref_
             t_ite[:, k] = tL
             sL = _cross_rows(tL, nL)
             n_ite[:, k] = _unit_rows(co * nL + si * tL)
+        t[L], s[L] = tL, sL                        # LMGC90 carries the turned tangent over
         DcL = np.where(vC[L][:, None, :], np.einsum("bkj,bvj->bkv", n_ite, Xc[L]), np.inf)
         DaL = np.where(vA[L][:, None, :], np.einsum("bkj,bvj->bkv", n_ite, Xa[L]), -np.inf)
         gk = DcL.min(axis=2) - DaL.max(axis=2)                     # (L, 8)

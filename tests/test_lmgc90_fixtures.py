@@ -38,7 +38,6 @@ from postproc.classify import Classifier, check_options
 from postproc.contacttypes import PAIR_TYPES
 from postproc.errors import InputError
 from postproc.schema import Snapshot
-from shapes.overlap import rotation_matrices
 
 HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "lmgc90")
 ROUTES = {"new": "lmgc90", "old": "lmgc90-planplan"}
@@ -68,6 +67,13 @@ def _same_points(P, Q, tol):
         return True
     D = np.linalg.norm(P[:, None] - Q[None], axis=2)
     return D.min(axis=1).max() <= tol and D.min(axis=0).max() <= tol
+
+
+def _quat(M):
+    """(w, x, y, z) of a rotation matrix."""
+    from scipy.spatial.transform import Rotation
+    x, y, z, w = Rotation.from_matrix(M).as_quat()
+    return np.array([w, x, y, z])
 
 
 def _angle(a, b):
@@ -109,6 +115,14 @@ def test_hand_built_pairs(case, route):
     assert np.allclose(np.sort(F["lmgc_gap"][m]), np.sort(r["gaps"]), rtol=0, atol=TOL_GAP)
     for n in F["lmgc_n"][m]:
         assert _angle(n, r["normal"]) <= TOL_NORMAL
+    # the same through the block path the analysis uses
+    R = F["body_R"][rows]
+    q = np.array([_quat(M) for M in R])
+    v = cp.lmgc90_points(shapes, F["body_shape"][rows[:1]], F["body_x"][rows[:1]], q[:1],
+                         F["body_shape"][rows[1:2]], F["body_x"][rows[1:2]], q[1:2], alert, route=ROUTES[route])
+    assert v["points"].tolist() == [m.sum()]
+    assert _same_points(F["lmgc_point"][m], v["xyz"][0], TOL_POINT)
+    assert np.allclose(np.sort(F["lmgc_gap"][m]), np.sort(v["gaps"][0]), rtol=0, atol=TOL_GAP)
 
 
 def test_hand_built_counts_are_the_expected_geometry():
@@ -122,13 +136,6 @@ def test_hand_built_counts_are_the_expected_geometry():
               "vertex on face, within alert": (1, 0), "vertex on face, beyond alert": (0, 0)}
     for case, (new, old) in expect.items():
         assert (count(case, "new"), count(case, "old")) == (new, old), case
-
-
-def _packing_bodies(F):
-    shapes = _shapes(F)
-    row = {s: k for k, s in enumerate(F["shape_rows"])}
-    R = rotation_matrices(F["orientations"])
-    return [cp._Body(shapes[row[s]], R[b], F["positions"][b]) for b, s in enumerate(F["shape_index"])]
 
 
 def _dumped_pairs(F):
@@ -152,9 +159,12 @@ def test_packing_pairs(packing, alert, route):
     agree to round-off on at least 90 % of the pairs and the normals within
     the search's last step on at least 97 %."""
     F = _load(packing)
-    bodies = _packing_bodies(F)
-    r_min = min(b.shape.radius for b in bodies)
-    assert r_min == pytest.approx(float(F["r_min"]), rel=1e-12)
+    vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
+    tables = cp.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
+                              [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)])
+    row = {s: k for k, s in enumerate(F["shape_rows"])}
+    srow = np.array([row[s] for s in F["shape_index"]])
+    assert tables.rmin == pytest.approx(float(F["r_min"]), rel=1e-12)
     adist = float(F["alerts"][alert])
     cd, an = F[f"{route}{alert}_cd"] - 1, F[f"{route}{alert}_an"] - 1
     assert np.all(cd < an)                                   # LMGC90's candidate: the lower number
@@ -163,17 +173,20 @@ def test_packing_pairs(packing, alert, route):
         where[p].append(k)
     dumped = _dumped_pairs(F)
     pairs = sorted(set(where) | dumped)
+    i, j = np.array(pairs).T
+    x, q = F["positions"], F["orientations"]
+    r = cp.lmgc90_points(tables, srow[i], x[i], q[i], srow[j], x[j], q[j], adist, route=ROUTES[route])
     equal, geometry, close = {}, [], []
-    for p in pairs:
-        r = cp.lmgc90_pair(bodies[p[0]], bodies[p[1]], adist, route=ROUTES[route], min_radius=r_min)
+    for k, p in enumerate(pairs):
         ks = where.get(p, [])
-        equal[p] = len(r["points"]) == len(ks)
+        equal[p] = r["points"][k] == len(ks)
         if equal[p] and ks:
-            geometry.append(_same_points(F[f"{route}{alert}_point"][ks], r["points"], TOL_POINT)
-                            and np.allclose(np.sort(F[f"{route}{alert}_gap"][ks]), np.sort(r["gaps"]),
+            ang = _angle(F[f"{route}{alert}_n"][ks[0]], r["normal"][k])
+            geometry.append(_same_points(F[f"{route}{alert}_point"][ks], r["xyz"][k], TOL_POINT)
+                            and np.allclose(np.sort(F[f"{route}{alert}_gap"][ks]), np.sort(r["gaps"][k]),
                                             rtol=0, atol=TOL_GAP)
-                            and _angle(F[f"{route}{alert}_n"][ks[0]], r["normal"]) <= TOL_NORMAL)
-            close.append(_angle(F[f"{route}{alert}_n"][ks[0]], r["normal"]) <= THETA_MIN)
+                            and ang <= TOL_NORMAL)
+            close.append(ang <= THETA_MIN)
     assert np.mean([equal[p] for p in pairs]) >= 0.98
     assert np.mean([equal[p] for p in dumped]) >= 0.98
     assert np.mean(geometry) >= 0.90
