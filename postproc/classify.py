@@ -216,7 +216,6 @@ class Classifier:
         pp = self._pairs(snap, self.tolerance)
         if not pp.poly.any():
             return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
-        base, poly, cols = pp.base, pp.poly, pp.cols
         tables = self.lmgc90_tables
         r_min = min(t.radius for t in tables)
         # LMGC90's candidate is the body with the lower number
@@ -225,38 +224,36 @@ class Classifier:
         w = lambda a, b: np.where(lo.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
         args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
 
-        def labels_at(alert):
-            r = cpl.lmgc90_points(*args, alert * r_min, route=self.method, min_radius=r_min)
-            out = base.copy()
-            out[poly] = np.array(PAIR_TYPES)[r["pair"]]
-            return out, r
-
-        lab, r = labels_at(self.tolerance)
-        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
-        # pairs LMGC90 gives no point (it makes no contact there): counted as simple
-        cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
-        cols["ct_alert_m"] = self.tolerance * r_min
-        return Classes(lab, var, poly, None, cols)
+        count = lambda alert: cpl.lmgc90_points(*args, alert * r_min, route=self.method, min_radius=r_min)
+        return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
     def _commonplane_classes(self, snap, variants):
         pp = self._pairs(snap, self.tolerance)
         if not pp.poly.any():
             return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
-        base, poly, cols = pp.base, pp.poly, pp.cols
-        args = (self.plane_tables, *pp.poses, snap.normal[poly])
+        args = (self.plane_tables, *pp.poses, snap.normal[pp.poly])
 
-        def labels_at(tau):
-            r = cpl.contact_points(*args, neighbor=tau, reference=self.reference)
-            out = base.copy()
-            out[poly] = np.array(PAIR_TYPES)[r["pair"]]
+        count = lambda tau: cpl.contact_points(*args, neighbor=tau, reference=self.reference)
+        return self._count_classes(pp, count, self.tolerance, {}, variants)
+
+    @staticmethod
+    def _count_classes(pp, count, parameter, extra, variants):
+        """The classes from a count of contact points: ``count(parameter)``
+        returns the dict of :func:`postproc.commonplane.contact_points` or
+        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs;
+        the variants at half and twice the parameter. Pairs without a point
+        (LMGC90 makes no contact there) count as simple; their share is
+        ``ct_cp_empty``."""
+        def labels_at(value):
+            r = count(value)
+            out = pp.base.copy()
+            out[pp.poly] = np.array(PAIR_TYPES)[r["pair"]]
             return out, r
 
-        lab, r = labels_at(self.tolerance)
-        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
-        # pairs LMGC90 would not keep (a vertex on a vertex or an edge whose
-        # projections miss each other): counted as simple
-        cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
-        return Classes(lab, var, poly, None, cols)
+        lab, r = labels_at(parameter)
+        var = {"lo": labels_at(parameter / 2)[0], "hi": labels_at(parameter * 2)[0]} if variants else {}
+        cols = {**pp.cols, **extra, "ct_cp_empty": float(np.mean(r["points"] == 0))}
+        return Classes(lab, var, pp.poly, None, cols)
 
     def _pairs(self, snap, parameter):
         """The first steps of every geometric criterion: the orientation

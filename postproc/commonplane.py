@@ -424,15 +424,24 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal,
             HB = _hull((XB[i, fb] - c[i]) @ B2, tol)
             res["points"][ci] = min(MAX_POINTS, _intersection_points(HA, HB, tol))
         res["gap"][sl], res["band"][sl], res["normal"][sl] = gap, tau * ref, n
-    pts = res["points"]
+    res["group"], res["pair"] = groups_and_pairs(res["points"], res["feature1"], res["feature2"])
+    return res
+
+
+def groups_and_pairs(points, f1, f2):
+    """(group, pair) from the number of contact points (C,) and the two
+    sides' features (C,): the group (SIMPLE for 0 or 1 point, DOUBLE for 2,
+    TRIPLE for 3+, int8) and the pair type (int8 index into PAIR_TYPES)
+    made to agree with it: triple -> FF, double -> EF, simple -> VF when a
+    side is a face, else the features' type."""
+    pts = np.asarray(points)
     group = np.where(pts >= 3, TRIPLE, np.where(pts == 2, DOUBLE, SIMPLE)).astype(np.int8)
-    pair = pair_types(res["feature1"], res["feature2"]).astype(np.int8)
-    face = (res["feature1"] == FACE) | (res["feature2"] == FACE)
+    pair = pair_types(f1, f2).astype(np.int8)
+    face = (np.asarray(f1) == FACE) | (np.asarray(f2) == FACE)
     pair[group == TRIPLE] = _FF
     pair[group == DOUBLE] = _EF
     pair[(group == SIMPLE) & face] = _VF
-    res["group"], res["pair"] = group, pair
-    return res
+    return group, pair
 
 
 def _feature(adjacent, idx):
@@ -1310,14 +1319,7 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
             out["feature_cd"][k], out["feature_an"][k] = feat[st % 10], feat[st // 10]
             out["xyz"].append(r["points"])
             out["gaps"].append(r["gaps"])
-    pts = out["points"]
-    group = np.where(pts >= 3, TRIPLE, np.where(pts == 2, DOUBLE, SIMPLE)).astype(np.int8)
-    pair = pair_types(out["feature_cd"], out["feature_an"]).astype(np.int8)
-    face = (out["feature_cd"] == FACE) | (out["feature_an"] == FACE)
-    pair[group == TRIPLE] = _FF
-    pair[group == DOUBLE] = _EF
-    pair[(group == SIMPLE) & face] = _VF
-    out["group"], out["pair"] = group, pair
+    out["group"], out["pair"] = groups_and_pairs(out["points"], out["feature_cd"], out["feature_an"])
     return out
 
 
