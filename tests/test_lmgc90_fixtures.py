@@ -265,3 +265,42 @@ def test_options_and_bad_input():
         cp.lmgc90_points(tables, *args, 0.0)
     r = cp.lmgc90_points(tables, *args, 1e-5)               # far apart: no point, counted simple
     assert r["points"].tolist() == [0] and r["stage"].tolist() == [-1]
+
+
+@pytest.mark.slow
+def test_cli_analyze_with_lmgc90s_count(tmp_path, capsys):
+    """postproc analyze --types lmgc90: the summary names the count, its
+    alert distance (units of the smallest grain radius, and in metres) and
+    the groups of the hand-built contacts (cube and tetrahedron pairs at an
+    overlap of 1e-3 d); a bad alert distance gets one line, exit 2."""
+    import pandas as pd
+
+    from builders import snapshot_dicts, write_snapshot
+    from postproc.cli import main
+    from shapes.polyhedron import geometric_faces
+    from postproc.schema import DumpWriter
+    from test_footprint_types import CASES as KCASES, SHAPES, _pairs, _snapshot as kernel_snapshot
+
+    snap = kernel_snapshot(_pairs(list(KCASES.values()), 1e-3))
+    snap.volumes = np.ones(len(snap.body_ids))
+    snap.masses = np.ones(len(snap.body_ids))
+    snap.wall_forces = np.zeros((6, 3))
+    path = str(tmp_path / "k.h5")
+    with DumpWriter(path, "polyhedra", {}) as w:
+        w.write_shapes([v for v, _ in SHAPES], [t for _, t in SHAPES], [geometric_faces(v, t) for v, t in SHAPES])
+        for step, stage in ((0, "isotropic"), (1, "shear")):
+            write_snapshot(w, snap, step=step, stage=stage, contacts=snapshot_dicts(snap)[1])
+    for types in ("lmgc90", "lmgc90-planplan"):
+        out = tmp_path / types
+        assert main(["analyze", path, "--out", str(out), "--types", types, "--no-errors"]) == 0
+        s = pd.read_csv(out / "summary.csv")
+        assert (s["ct_method"] == types).all() and (s["ct_threshold"] == cp.DEFAULT_ALERT).all()
+        r_min = cp.lmgc90_tables([v for v, _ in SHAPES], [t for _, t in SHAPES]).rmin
+        assert s["ct_alert_m"].iloc[0] == pytest.approx(cp.DEFAULT_ALERT * r_min, rel=1e-12)
+        fr = s[[c for c in s.columns if c.startswith("ct_frac_")]].iloc[-1]
+        assert fr[["ct_frac_simple", "ct_frac_double", "ct_frac_triple"]].sum() == pytest.approx(1.0)
+    capsys.readouterr()
+    assert main(["analyze", path, "--out", str(tmp_path / "bad"), "--types", "lmgc90", "--tolerance", "0"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "alert distance" in err[0]
+    assert not (tmp_path / "bad").exists()
