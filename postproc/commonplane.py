@@ -1024,8 +1024,12 @@ def _edge_edge(c1b, c1e, c2b, c2e, ntr):
 
 
 def _orient(a, b, c, d):
-    """Shewchuk's orient3d sign convention: det[a - d, b - d, c - d]."""
-    return float(np.linalg.det(np.array([a - d, b - d, c - d])))
+    """Shewchuk's orient3d sign convention: det[a - d, b - d, c - d]
+    (floating point, not exact: they differ only on exact degeneracies)."""
+    ax, ay, az = a[0] - d[0], a[1] - d[1], a[2] - d[2]
+    bx, by, bz = b[0] - d[0], b[1] - d[1], b[2] - d[2]
+    cx, cy, cz = c[0] - d[0], c[1] - d[1], c[2] - d[2]
+    return float(ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx))
 
 
 def _edge_face(c1b, c1e, C, ntr):
