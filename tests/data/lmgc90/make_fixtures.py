@@ -6,6 +6,10 @@
     /work/lmgc-venv/bin/python tests/data/lmgc90/make_fixtures.py pairs
     /work/lmgc-venv/bin/python tests/data/lmgc90/make_fixtures.py packing DUMP.h5 SNAPSHOT [SNAPSHOT ...]
 
+The committed packings: ``packing runs/study/polyhedra-ensemble/polyhedra-seed1.h5 15 -1``
+on the default study (``make study``, 1000 grains, seed 1): its snapshots
+000015 (shear, eps1 = 0.15) and 000030 (the last, eps1 = 0.30).
+
 (the ``compas_lmgc90`` wheel from the Python registry, version 0.1.11,
 cp311: its ``_lmgc90`` extension binds today's LMGC90 Fortran core and runs
 with numpy alone; the package's own Python layer needs COMPAS and is not
