@@ -1,10 +1,21 @@
-"""Contact points of a pair of convex polyhedra by LMGC90's common-plane method.
+"""Contact points of a pair of convex polyhedra on a common plane: two counts.
 
-This is the detection LMGC90 (``mod_PRPRx.f90``, ``PRPRx_UseCpCundallDetection``)
-applies to two convex polyhedra, redone from the poses, so that our dumps can
-be counted the way the seed paper's contacts were (docs/lmgc90-contacts.md
-has the source lines). For A (id1, LMGC90's antagonist) and B (id2, the
-candidate) and a start direction n from A to B (the contact normal):
+* :func:`lmgc90_points` (``--types lmgc90`` and ``lmgc90-planplan``) is
+  LMGC90's own count: a step-by-step port of its CpCundall detection (shadow
+  overlap, Cundall's plane as LMGC90 iterates it, its face topology, and
+  either today's point stage or the older planplan one); it gives LMGC90's
+  compiled count on 99 % of the grain pairs of our packings
+  (docs/lmgc90-contacts.md, tests/test_lmgc90_fixtures.py).
+* :func:`contact_points` (``--types commonplane``) is the earlier band count
+  described below: the band idea of LMGC90's older route with our own
+  geometry, kept for the study's earlier numbers; it is not LMGC90's count
+  (it agrees with it on about 7 pairs in 10).
+
+The band count. It redoes, from the poses, the steps LMGC90
+(``mod_PRPRx.f90``, ``PRPRx_UseCpCundallDetection``) applies to two convex
+polyhedra (docs/lmgc90-contacts.md has the source lines). For A (id1,
+LMGC90's antagonist) and B (id2, the candidate) and a start direction n
+from A to B (the contact normal):
 
 1. Visible vertices (``compute_shadow_overlap``): the vertices of A's
    triangles whose outward normal m has m . n >= -1e-3, and of B's with
