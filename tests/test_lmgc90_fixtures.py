@@ -193,42 +193,50 @@ def test_packing_pairs(packing, alert, route):
     assert np.mean(close) >= 0.97
 
 
-def _snapshot(F, k):
-    """The first k dumped grain contacts of a packing fixture as a
-    Snapshot (bodies and poses as dumped)."""
-    idx = {int(i) for i in F["body_ids"]}
-    keep = [j for j, (a, b) in enumerate(zip(F["contact_id1"], F["contact_id2"])) if int(a) in idx and int(b) in idx][:k]
-    n = len(F["body_ids"])
+def _snapshot(F, k=None):
+    """The dumped grain contacts of a packing fixture (the first k, with
+    only their bodies and shapes, in the dump's order; or all) as a
+    Snapshot, and the classifier's shapes (the fixture carries the rows of
+    the dump's shapes that it uses)."""
+    ids = F["body_ids"]
+    idx = {int(i): r for r, i in enumerate(ids)}
+    keep = [j for j, (a, b) in enumerate(zip(F["contact_id1"], F["contact_id2"])) if int(a) in idx and int(b) in idx]
+    keep = keep[:k] if k else keep
+    bodies = np.arange(len(ids))
+    if k:
+        bodies = np.unique([idx[int(x)] for j in keep for x in (F["contact_id1"][j], F["contact_id2"][j])])
+    rows = {s: r for r, s in enumerate(F["shape_rows"])}
+    srow = np.array([rows[s] for s in F["shape_index"][bodies]])
+    used, shape_index = np.unique(srow, return_inverse=True)
     c = len(keep)
-    return Snapshot(name="fixture", step=int(F["step"]), time=0.0, stage=str(F["stage"]), volume=1.0,
+    snap = Snapshot(name="fixture", step=int(F["step"]), time=0.0, stage=str(F["stage"]), volume=1.0,
                     box_lo=np.zeros(3), box_hi=np.ones(3), wall_ids=np.zeros(0, np.int64), wall_forces=None,
-                    body_ids=F["body_ids"], positions=F["positions"], id1=F["contact_id1"][keep],
+                    body_ids=ids[bodies], positions=F["positions"][bodies], id1=F["contact_id1"][keep],
                     id2=F["contact_id2"][keep], point=np.zeros((c, 3)), force=np.zeros((c, 3)),
                     force_normal=np.zeros((c, 3)), normal=F["contact_normal"][keep],
-                    body_kind=np.ones(n, np.int8), orientations=F["orientations"], shape_index=F["shape_index"],
-                    sizes=F["sizes"])
+                    body_kind=np.ones(len(bodies), np.int8), orientations=F["orientations"][bodies],
+                    shape_index=shape_index.astype(np.int32), sizes=F["sizes"][bodies])
+    swap = np.arange(c) % 2 == 1                           # id1/id2 order must not matter
+    snap.id1, snap.id2 = np.where(swap, snap.id2, snap.id1), np.where(swap, snap.id1, snap.id2)
+    vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
+    shapes = ([F["shape_vertices"][vo[i]:vo[i + 1]] for i in used],
+              [F["shape_triangles"][to[i]:to[i + 1]] for i in used],
+              [np.arange(to[i + 1] - to[i]) for i in used])
+    return snap, shapes
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("route", sorted(ROUTES))
 def test_classifier_groups_are_lmgc90s(route):
-    """--types lmgc90 / lmgc90-planplan through the classifier, on dumped
-    contacts of a packing (in either order id1, id2) at the fixture's
-    default alert distance: the groups (simple, double, triple) are those of
-    LMGC90's point counts on at least 98 % of the contacts."""
+    """--types lmgc90 / lmgc90-planplan through the classifier, on every
+    dumped contact of the last packing (id1, id2 in either order) at the
+    fixture's default alert distance: the groups (simple, double, triple)
+    are those of LMGC90's point counts on at least 98 % of the contacts
+    (99.2 % and 99.6 % measured: the ties of docs/lmgc90-contacts.md)."""
     F = _load(PACKINGS[-1])
-    snap = _snapshot(F, 150)
-    vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
-    # the classifier reads a dump's shapes; the fixture carries the rows it uses
-    rows = {s: k for k, s in enumerate(F["shape_rows"])}
-    snap.shape_index = np.array([rows[s] for s in F["shape_index"]], np.int32)
-    shapes = ([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
-              [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)],
-              [np.arange(to[i + 1] - to[i]) for i in range(len(to) - 1)])
-    swap = np.arange(len(snap.id1)) % 2 == 1                  # id1/id2 order must not matter
-    snap.id1, snap.id2 = np.where(swap, snap.id2, snap.id1), np.where(swap, snap.id1, snap.id2)
+    snap, shapes = _snapshot(F)
     clf = Classifier(shapes, ROUTES[route], tolerance=float(F["alerts_rel"][0]))
-    cl = clf.classify(snap, variants=True)
-    assert set(cl.variants) == {"lo", "hi"}
+    cl = clf.classify(snap, variants=False)
     assert cl.columns["ct_alert_m"] == pytest.approx(float(F["alerts"][0]), rel=1e-12)
     idx = {int(i): k for k, i in enumerate(F["body_ids"])}
     cnt = collections.Counter(zip((F[f"{route}0_cd"] - 1).tolist(), (F[f"{route}0_an"] - 1).tolist()))
@@ -239,7 +247,29 @@ def test_classifier_groups_are_lmgc90s(route):
         n = cnt.get((i, j), 0)
         assert lab in PAIR_TYPES
         ok.append(group[lab] == (2 if n >= 3 else 1 if n == 2 else 0))
-    assert np.mean(ok) >= 0.98
+    assert len(ok) > 2000 and np.mean(ok) >= 0.98
+
+
+@pytest.mark.parametrize("route", sorted(ROUTES))
+def test_classifier_labels_and_variants(route):
+    """The classifier's labels are lmgc90_points' pair types with LMGC90's
+    candidate (the lower body number) whatever the order of id1, id2, at
+    the alert distance and at half and twice it (40 dumped contacts)."""
+    F = _load(PACKINGS[-1])
+    small, shapes = _snapshot(F, 40)
+    idx = {int(i): k for k, i in enumerate(small.body_ids)}
+    clf = Classifier(shapes, ROUTES[route], tolerance=float(F["alerts_rel"][0]))
+    cl = clf.classify(small, variants=True)
+    tables = clf.lmgc90_tables
+    alert = float(F["alerts_rel"][0]) * tables.rmin
+    i1 = np.array([idx[int(a)] for a in small.id1])
+    i2 = np.array([idx[int(b)] for b in small.id2])
+    lo, hi = np.minimum(i1, i2), np.maximum(i1, i2)
+    x, q, s = small.positions, small.orientations, small.shape_index
+    for tag, f in (("base", 1.0), ("lo", 0.5), ("hi", 2.0)):
+        r = cp.lmgc90_points(tables, s[lo], x[lo], q[lo], s[hi], x[hi], q[hi], f * alert, route=ROUTES[route])
+        labels = cl.labels if tag == "base" else cl.variants[tag]
+        assert labels.tolist() == np.array(PAIR_TYPES)[r["pair"]].tolist()
 
 
 def test_options_and_bad_input():
