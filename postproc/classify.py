@@ -28,7 +28,14 @@ Three criteria, one interface (:class:`Classifier`):
   normal, the vertices within tau * ref of it (``--tolerance`` tau, default
   0.1; ref the centre-to-extreme-vertex distance), the vertices of the
   intersection of their projected hulls as the contact points; no overlap
-  needed.
+  needed. Our band count, kept for the study's earlier numbers: it is not
+  LMGC90's count (docs/lmgc90-contacts.md).
+* ``"lmgc90"`` (``--types lmgc90``): LMGC90's own count, its CpCundall
+  detection with today's default point stage (:func:`postproc.commonplane.lmgc90_points`),
+  with the alert distance as ``--tolerance`` in units of the smallest grain
+  radius (default 0.1, what LMGC90's granular examples set);
+  ``"lmgc90-planplan"``: the same detection with LMGC90's older point stage
+  (planplan: 3 or 4 points, or none).
 
 :meth:`Classifier.classify` returns the class of every contact of a
 snapshot ("VV".."FF", "sphere", "wall") at the chosen parameter and, for
@@ -47,7 +54,7 @@ from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("points", "footprint", "angular", "commonplane")
+METHODS = ("points", "footprint", "angular", "commonplane") + cpl.LMGC90_ROUTES
 DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
@@ -118,8 +125,11 @@ class Classifier:
     recompute : "auto" (use the dumped footprint or overlap area, else
     recompute), "always" (ignore dumped ones) or "never". tolerance : alpha
     of the "points" method (delta = alpha V/area; default
-    :data:`postproc.contactpoints.DEFAULT_ALPHA`), or tau of the
-    "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`).
+    :data:`postproc.contactpoints.DEFAULT_ALPHA`), tau of the
+    "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`),
+    or the alert distance of the "lmgc90" and "lmgc90-planplan" methods in
+    units of the smallest grain radius (of the shapes; default
+    :data:`postproc.commonplane.DEFAULT_ALERT`).
     reference : how the "commonplane" method measures ref, the length its
     band is tau times: "vertex" (the default: the distance from the centre
     to the extreme vertex, LMGC90's older routine) or "normal" (that
@@ -139,7 +149,8 @@ class Classifier:
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
         self.reference = cpl.check_reference(reference)
-        default = cpl.DEFAULT_NEIGHBOR if method == "commonplane" else cpm.DEFAULT_ALPHA
+        default = {"commonplane": cpl.DEFAULT_NEIGHBOR, "lmgc90": cpl.DEFAULT_ALERT,
+                   "lmgc90-planplan": cpl.DEFAULT_ALERT}.get(method, cpm.DEFAULT_ALPHA)
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
@@ -147,12 +158,20 @@ class Classifier:
         self._geometry = None
         self._points = None
         self._planes = None
+        self._lmgc = None
 
     @property
     def parameter(self):
-        """The criterion's parameter: alpha, t (units of d), theta (deg) or tau."""
-        return {"points": self.tolerance, "footprint": self.threshold,
-                "commonplane": self.tolerance}.get(self.method, self.theta_deg)
+        """The criterion's parameter: alpha, t (units of d), theta (deg), tau,
+        or the alert distance (units of the smallest grain radius)."""
+        return {"points": self.tolerance, "footprint": self.threshold, "commonplane": self.tolerance,
+                "lmgc90": self.tolerance, "lmgc90-planplan": self.tolerance}.get(self.method, self.theta_deg)
+
+    @property
+    def lmgc90_tables(self):
+        if self._lmgc is None:
+            self._lmgc = cpl.lmgc90_tables(*self._shapes)
+        return self._lmgc
 
     @property
     def plane_tables(self):
@@ -189,27 +208,52 @@ class Classifier:
             return self._points_classes(snap, variants)
         if self.method == "commonplane":
             return self._commonplane_classes(snap, variants)
+        if self.method in cpl.LMGC90_ROUTES:
+            return self._lmgc90_classes(snap, variants)
         return self._footprint(snap, variants)
+
+    def _lmgc90_classes(self, snap, variants):
+        pp = self._pairs(snap, self.tolerance)
+        if not pp.poly.any():
+            return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
+        tables = self.lmgc90_tables
+        r_min = min(t.radius for t in tables)
+        # LMGC90's candidate is the body with the lower number
+        s1, x1, q1, s2, x2, q2 = pp.poses
+        lo = pp.i1 < pp.i2
+        w = lambda a, b: np.where(lo.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
+        args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
+
+        count = lambda alert: cpl.lmgc90_points(*args, alert * r_min, route=self.method, min_radius=r_min)
+        return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
     def _commonplane_classes(self, snap, variants):
         pp = self._pairs(snap, self.tolerance)
         if not pp.poly.any():
             return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
-        base, poly, cols = pp.base, pp.poly, pp.cols
-        args = (self.plane_tables, *pp.poses, snap.normal[poly])
+        args = (self.plane_tables, *pp.poses, snap.normal[pp.poly])
 
-        def labels_at(tau):
-            r = cpl.contact_points(*args, neighbor=tau, reference=self.reference)
-            out = base.copy()
-            out[poly] = np.array(PAIR_TYPES)[r["pair"]]
+        count = lambda tau: cpl.contact_points(*args, neighbor=tau, reference=self.reference)
+        return self._count_classes(pp, count, self.tolerance, {}, variants)
+
+    @staticmethod
+    def _count_classes(pp, count, parameter, extra, variants):
+        """The classes from a count of contact points: ``count(parameter)``
+        returns the dict of :func:`postproc.commonplane.contact_points` or
+        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs;
+        the variants at half and twice the parameter. Pairs without a point
+        (LMGC90 makes no contact there) count as simple; their share is
+        ``ct_cp_empty``."""
+        def labels_at(value):
+            r = count(value)
+            out = pp.base.copy()
+            out[pp.poly] = np.array(PAIR_TYPES)[r["pair"]]
             return out, r
 
-        lab, r = labels_at(self.tolerance)
-        var = {"lo": labels_at(self.tolerance / 2)[0], "hi": labels_at(self.tolerance * 2)[0]} if variants else {}
-        # pairs LMGC90 would not keep (a vertex on a vertex or an edge whose
-        # projections miss each other): counted as simple
-        cols["ct_cp_empty"] = float(np.mean(r["points"] == 0))
-        return Classes(lab, var, poly, None, cols)
+        lab, r = labels_at(parameter)
+        var = {"lo": labels_at(parameter / 2)[0], "hi": labels_at(parameter * 2)[0]} if variants else {}
+        cols = {**pp.cols, **extra, "ct_cp_empty": float(np.mean(r["points"] == 0))}
+        return Classes(lab, var, pp.poly, None, cols)
 
     def _pairs(self, snap, parameter):
         """The first steps of every geometric criterion: the orientation
@@ -353,6 +397,8 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
         fpm.check_threshold(threshold)
     if tolerance is not None and method == "commonplane":
         cpl.check_neighbor(tolerance, "--tolerance (commonplane: tau, the band in units of the radius)")
+    elif tolerance is not None and method in cpl.LMGC90_ROUTES:
+        cpl.check_alert(tolerance, f"--tolerance ({method}: the alert distance in units of the smallest grain radius)")
     elif tolerance is not None:
         cpm.check_alpha(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):

@@ -43,13 +43,16 @@ def main(argv=None):
     an.add_argument("--atoms", help="LAMMPS dump custom (id x y z) with the positions, "
                                     "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
-    an.add_argument("--types", choices=("points", "footprint", "angular", "commonplane"), default="points",
-                    help="contact-type criterion (polyhedra): LMGC90's count of contact points "
-                         "from the overlap (default), the overlap's footprint, the angular one, or "
-                         "LMGC90's common-plane detection redone from the poses")
+    an.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
+                                        "lmgc90-planplan"), default="points",
+                    help="contact-type criterion (polyhedra): a count of contact points from the "
+                         "overlap (default), the overlap's footprint, the angular one, our common-plane "
+                         "band count, or LMGC90's own count (its CpCundall detection with today's point "
+                         "stage, lmgc90, or the older planplan stage, lmgc90-planplan)")
     an.add_argument("--tolerance", type=float, default=None,
                     help="points criterion: alpha, the distance tolerance in units of the overlap's "
-                         "mean thickness V/area (default 0.1); commonplane: tau, the band in units of "
+                         "mean thickness V/area (default 0.1); lmgc90, lmgc90-planplan: the alert distance in "
+                         "units of the smallest grain radius (default 0.1); commonplane: tau, the band in units of "
                          "the centre-to-extreme-vertex distance (default 0.1)")
     an.add_argument("--threshold", type=float, default=None,
                     help="footprint threshold in units of the pair size d (default 0.1)")
@@ -75,9 +78,11 @@ def main(argv=None):
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
-    vt.add_argument("--types", choices=("points", "footprint", "angular", "commonplane"), default="points",
+    vt.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
+                                        "lmgc90-planplan"), default="points",
                     help="contact-type criterion (default points)")
-    vt.add_argument("--tolerance", type=float, default=None, help="points tolerance alpha (units of V/area) or commonplane tau")
+    vt.add_argument("--tolerance", type=float, default=None, help="points tolerance alpha (units of V/area), commonplane tau, or the lmgc90 "
+                         "alert distance (units of the smallest grain radius)")
     vt.add_argument("--threshold", type=float, default=None, help="footprint threshold, units of d")
     vt.add_argument("--theta", type=float, default=None, help="angular tolerance, degrees")
     vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")

@@ -130,11 +130,15 @@ class AnalysisOptions:
     atoms : the LAMMPS ``dump custom`` with the positions.
     nbins : theta bins on [0, 90 deg].
     errors : compute standard errors.
-    types : contact-type criterion of polyhedra: "points" (LMGC90's count
-        of contact points), "footprint", "angular" or "commonplane"
-        (LMGC90's common-plane detection redone from the poses).
+    types : contact-type criterion of polyhedra: "points" (our count of
+        contact points from the overlap), "footprint", "angular",
+        "commonplane" (our common-plane band count), "lmgc90" (LMGC90's own
+        count: its CpCundall detection and today's default point stage) or
+        "lmgc90-planplan" (the same with LMGC90's older planplan stage).
     tolerance : alpha of "points", in units of the overlap's mean thickness;
-        tau of "commonplane", in units of the centre-to-extreme-vertex distance.
+        tau of "commonplane", in units of the centre-to-extreme-vertex
+        distance; the alert distance of "lmgc90" and "lmgc90-planplan", in
+        units of the smallest grain radius (default 0.1).
     threshold : "footprint" threshold, in units of the pair size d.
     theta_deg : "angular" tolerance, degrees.
     snapshots : indices of a dump's snapshots to analyse (None: all); the
