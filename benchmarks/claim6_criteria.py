@@ -52,7 +52,8 @@ from postproc.study.report import _summaries, _usable, discover
 NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each criterion's own tolerance
 STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
 LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
-CRITERION = {"points": "our contact-point count", "commonplane": "LMGC90's common-plane count"}
+CRITERION = {"points": "our contact-point count", "commonplane": "the earlier band count on a common plane",
+             "lmgc90": "LMGC90's own count"}
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -60,24 +60,24 @@ def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path):
 
 
 def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path):
-    """The commonplane count of a study's S1 dump: only the isotropic
+    """LMGC90's count of a study's S1 dump: only the isotropic
     snapshot and the primary steady window are analysed, the strains are
     the primary ones, and the steady window of the count's summary is the
     primary one; a second call keeps it; a failed count is one line."""
     ana = str(tmp_path / "analysis")
     primary = _summary(dump, ana)
     steady = primary["snapshot"].iloc[steady_indices(primary["eps_q"], primary["stage"])].tolist()
-    done, problems = analyse_counts(dump, ana, counts=("commonplane",))
-    assert problems == [] and done == {"commonplane": count_folder(ana, "commonplane")}
-    cp = pd.read_csv(os.path.join(done["commonplane"], "summary.csv"), dtype={"snapshot": str})
+    done, problems = analyse_counts(dump, ana, counts=("lmgc90",))
+    assert problems == [] and done == {"lmgc90": count_folder(ana, "lmgc90")}
+    cp = pd.read_csv(os.path.join(done["lmgc90"], "summary.csv"), dtype={"snapshot": str})
     assert cp["snapshot"].tolist() == [primary["snapshot"].iloc[0]] + steady
-    assert (cp["ct_method"] == "commonplane").all()
+    assert (cp["ct_method"] == "lmgc90").all()
     merged = cp.merge(primary, on="snapshot", suffixes=("", "_p"))
     np.testing.assert_array_equal(merged["eps_q"], merged["eps_q_p"])
     assert cp["snapshot"].iloc[steady_indices(cp["eps_q"], cp["stage"])].tolist() == steady
-    mtime = os.path.getmtime(os.path.join(done["commonplane"], "summary.csv"))
-    assert analyse_counts(dump, ana, counts=("commonplane",))[0] == done
-    assert os.path.getmtime(os.path.join(done["commonplane"], "summary.csv")) == mtime
+    mtime = os.path.getmtime(os.path.join(done["lmgc90"], "summary.csv"))
+    assert analyse_counts(dump, ana, counts=("lmgc90",))[0] == done
+    assert os.path.getmtime(os.path.join(done["lmgc90"], "summary.csv")) == mtime
     done, problems = analyse_counts(dump, ana, counts=("nosuchcount",))
     assert done == {} and len(problems) == 1 and "nosuchcount" in problems[0]
     with pytest.raises(Exception, match="not in the dump"):
@@ -131,13 +131,13 @@ def test_report_states_claim6_by_count(dump, tmp_path):
     study = tmp_path / "study"
     ana = study / "analysis"
     _summary(dump, str(ana))
-    done, _ = analyse_counts(dump, str(ana), counts=("commonplane",))
+    done, _ = analyse_counts(dump, str(ana), counts=("lmgc90",))
     manifest = {"polyhedra": [{"label": "seed 1", "dump": dump, "analysis": str(ana), "info": None, "status": "ok",
                                "counts": {c: os.path.relpath(f, study) for c, f in done.items()}}]}
     (study / "manifest.json").write_text(json.dumps(manifest))
     md = open(build_report(str(study))).read()
     table = pd.read_csv(study / "report" / "claim6.csv")
-    assert table["count"].tolist() == ["points"] * 3 + ["commonplane"] * 3
+    assert table["count"].tolist() == ["points"] * 3 + ["lmgc90"] * 3
     assert table["factor"].tolist() == [0.5, 1.0, 2.0] * 2
     assert "## Claim 6 by contact count" in md
-    assert sum(line.startswith("| commonplane | 1 |") for line in md.splitlines()) == 3
+    assert sum(line.startswith("| lmgc90 | 1 |") for line in md.splitlines()) == 3

@@ -153,7 +153,9 @@ def test_claim6_says_how_many_seeds_would_decide_a_straddling_leaning():
 
 def test_claim6_names_the_criterion_it_was_read_with():
     for method, words in (("points", "contact-point count, tolerance 0.1 V/area"),
-                          ("commonplane", "LMGC90's common-plane count, band 0.1 x the radius"),
+                          ("commonplane", "the earlier band count on a common plane, band 0.1 x the radius"),
+                          ("lmgc90", "LMGC90's own count (today's point stage), alert distance 0.1 x the smallest "
+                                     "grain radius"),
                           ("footprint", "footprint criterion, threshold 0.1 d")):
         s = {k: _frames(v) for k, v in PAPER_LIKE.items()}
         for df in s["polyhedra"]:

@@ -217,7 +217,11 @@ def _criterion_text(df, tag=""):
     if method == "points":
         return f"contact-point count, tolerance {factor * df['ct_threshold'].iloc[0]:g} V/area"
     if method == "commonplane":
-        return f"LMGC90's common-plane count, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
+        return f"the earlier band count on a common plane, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
+    if method in ("lmgc90", "lmgc90-planplan"):
+        stage = "today's point stage" if method == "lmgc90" else "its older planplan point stage"
+        return (f"LMGC90's own count ({stage}), alert distance {factor * df['ct_threshold'].iloc[0]:g} x the "
+                f"smallest grain radius")
     if "ct_theta_deg" in df:
         return f"angular criterion, tolerance {factor * df['ct_theta_deg'].iloc[0]:g} deg"
     return None
