@@ -77,6 +77,25 @@ class ShapeTable:
         self.vertices = ckernel.f64(np.concatenate(verts))
         self.triangles = ckernel.i32(np.concatenate(tris))
 
+    def subset(self, rows):
+        """The table of the shapes ``rows`` (K,) only, in that order (row k
+        of the result is row rows[k] here): the same numbers, so the kernel
+        computes the same overlaps from it, and a call that needs a few
+        shapes of a large table does not pay for the rest (the kernel
+        prepares every shape of the table it is given)."""
+        rows = np.asarray(rows, np.int64)
+        sub = ShapeTable.__new__(ShapeTable)
+        sub.n = len(rows)
+        for name, data, off in (("vertices", self.vertices, self.voff), ("triangles", self.triangles, self.toff)):
+            lo, hi = off[rows].astype(np.int64), off[rows + 1].astype(np.int64)
+            lengths = hi - lo
+            start = np.repeat(lo - np.concatenate([[0], np.cumsum(lengths)[:-1]]), lengths)
+            idx = start + np.arange(lengths.sum())
+            setattr(sub, name, np.ascontiguousarray(data[idx]))
+            setattr(sub, "voff" if name == "vertices" else "toff",
+                    ckernel.i32(np.concatenate([[0], np.cumsum(lengths)])))
+        return sub
+
     def args(self):
         """The leading arguments of the kernel's geometry functions."""
         return (self.n, ckernel.iptr(self.voff), ckernel.dptr(self.vertices), ckernel.iptr(self.toff),
@@ -246,7 +265,10 @@ class OrientedGrains:
         out = np.zeros(len(J), bool)
         test = np.flatnonzero(h_k + h_j >= dist)
         if len(test):
-            res = batch_overlap(self.table, np.full(len(test), k), X[test], np.repeat(self.quat[k][None], len(test), 0),
-                                J[test], Y[test], self.quat[J[test]], threads=1)
+            # only the shapes of these pairs go to the kernel (it prepares every shape of its table)
+            rows, local = np.unique(np.concatenate([[k], J[test]]), return_inverse=True)
+            res = batch_overlap(self.table.subset(rows), np.full(len(test), local[0]), X[test],
+                                np.repeat(self.quat[k][None], len(test), 0), local[1:], Y[test], self.quat[J[test]],
+                                threads=1)
             out[test] = res["volume"] > 0
         return out
