@@ -62,6 +62,18 @@ PAPER_N = 36933
 STEP_LINE = re.compile(r"step (\d+) ")
 
 
+def _peak_mb(pid):
+    """The process's own peak resident memory so far (VmHWM, MB); 0 when gone."""
+    try:
+        with open(f"/proc/{pid}/status") as fh:
+            for line in fh:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return 0.0
+
+
 def run_once(folder, threads, steps, timeout, fresh):
     """Run the scene in ``folder`` on ``threads`` threads for ``steps``
     steps (from the start when ``fresh``, else resumed from the checkpoint
@@ -81,9 +93,10 @@ def run_once(folder, threads, steps, timeout, fresh):
     t0 = time.perf_counter()
     proc = subprocess.Popen(["yade", "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
-    setup, sent, lines = None, False, []
+    setup, sent, lines, hwm = None, False, [], 0.0
     for line in proc.stdout:
         lines.append(line)
+        hwm = max(hwm, _peak_mb(proc.pid))
         if setup is None and " dt = " in line:
             setup = time.perf_counter() - t0
         m = STEP_LINE.search(line)
@@ -93,7 +106,7 @@ def run_once(folder, threads, steps, timeout, fresh):
         if time.perf_counter() - t0 > timeout and not sent:
             proc.send_signal(signal.SIGTERM)
             sent = True
-    _, status, usage = os.wait4(proc.pid, 0)
+    _, status, _ = os.wait4(proc.pid, 0)
     wall = time.perf_counter() - t0
     code = os.waitstatus_to_exitcode(status)
     if code != 75:
@@ -105,7 +118,7 @@ def run_once(folder, threads, steps, timeout, fresh):
     calls = max(ka["calls"] - kb["calls"], 1)
     sec = {k: v - kb["seconds"].get(k, 0.0) for k, v in ka["seconds"].items()}
     out = {"from_step": before["step"], "steps": n, "setup_s": setup, "attempt_wall_s": wall,
-           "peak_rss_mb": usage.ru_maxrss / 1024, "touch_per_step": (ka["touch_steps"] - kb["touch_steps"]) / calls,
+           "peak_rss_mb": hwm, "touch_per_step": (ka["touch_steps"] - kb["touch_steps"]) / calls,
            "read_ms": 1e3 * sec["read"] / calls, "kernel_ms": 1e3 * sec["kernel"] / calls,
            "apply_ms": 1e3 * sec["apply"] / calls,
            "newton_ms": 1e3 * eng.get("newton", np.nan) / n, "controller_ms": 1e3 * eng.get("controller", np.nan) / n,
