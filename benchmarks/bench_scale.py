@@ -26,7 +26,8 @@ the differences between the checkpoints before and after it. The set-up
 (sizes, shapes, the exact placement, the bodies; redone by every attempt
 before the checkpoint replaces the scene) is the time from the start to the
 scene's first line (``N polyhedra, dt = ...``); the peak memory is the
-process's maximum resident set (``os.wait4``).
+process's own high-water mark (VmHWM, read at every line it prints, the
+last after its checkpoint is written).
 
 Attempts alternate: every (N, threads) runs once per round, ``--repeat``
 rounds, so a drift of the shared machine hits all alike; figures are
