@@ -116,7 +116,7 @@ def _import(args):
 
     from .library import write_library
     from .meshimport import Budget, import_paths
-    from .report import write_report
+    from .report import budget_text, write_report
 
     try:
         budget = (Budget(vertices=args.vertices, max_error=None) if args.vertices is not None else
@@ -129,9 +129,8 @@ def _import(args):
         args.paths, budget, split=args.components,
         log=lambda name, reason: print(f"shapes: refused {name}: {reason}", file=sys.stderr))
     seconds = time.perf_counter() - t0
-    tried = len(grains) + len(refused)
     if not grains:
-        print(f"shapes: imported 0 of {tried} meshes, {len(refused)} refused; no library written",
+        print(f"shapes: 0 grains imported, {len(refused)} refused (listed above); no library written",
               file=sys.stderr)
         return 2
     extra = {"source": [g.source for g in grains],
@@ -153,20 +152,21 @@ def _import(args):
     missed = sum(not g.target_met for g in grains)
     nv = np.array([g.polyhedron.n_vertices for g in grains])
     err = extra["reduction_hausdorff"]
-    notes = [f"budget: {budget.as_dict()}; import took {seconds:.1f} s",
+    notes = [f"{budget_text(budget.as_dict())}; the import took {seconds:.1f} s",
              f"reduction error (Hausdorff / d): median {np.median(err):.3g}, max {err.max():.3g}"]
     if missed:
-        notes.append(f"{missed} grains reached {budget.max_vertices} vertices before the error target "
-                     f"{budget.max_error}")
+        notes.append(f"{missed} grains above the error target {budget.max_error} d: at {budget.max_vertices} "
+                     "vertices, or where every nearer choice fails the validity checks (a nearly flat edge)")
     if ignored:
         notes.append(f"{ignored} files in the folders were not meshes and were ignored")
     write_report(ShapeLibrary(args.out), report, seconds=seconds, refused=refused, notes=notes)
-    print(f"shapes: imported {len(grains)} of {tried} meshes -> {args.out} in {seconds:.1f} s, "
-          f"{len(refused)} refused; vertices {nv.min()}-{nv.max()} (mean {nv.mean():.1f}), "
-          f"reduction error median {np.median(err):.3g} d, max {err.max():.3g} d"
-          + (f", {missed} above the error target at {budget.max_vertices} vertices" if missed else "")
-          + (f"; {ignored} non-mesh files ignored" if ignored else "") + f"; report in {report}",
-          file=sys.stderr)
+    print(f"shapes: {len(grains)} grains imported -> {args.out} in {seconds:.1f} s, {len(refused)} refused"
+          + (" (listed above)" if refused else "")
+          + f"; vertices {nv.min()}-{nv.max()} (mean {nv.mean():.1f}), reduction error median "
+          f"{np.median(err):.3g} d, max {err.max():.3g} d"
+          + (f", {missed} above the error target (see the report)" if missed else "")
+          + (f"; {ignored} non-mesh file{'s' if ignored > 1 else ''} ignored" if ignored else "")
+          + f"; report in {report}", file=sys.stderr)
     return 1 if refused else 0
 
 

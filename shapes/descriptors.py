@@ -75,6 +75,7 @@ def principal_extents(vertices, triangles):
     import trimesh
 
     v = np.asarray(vertices, float)
+    v = v - v.mean(axis=0)                   # about an inner point: no cancellation far from the origin
     m = trimesh.Trimesh(v, np.asarray(triangles), process=False)
     _, R = np.linalg.eigh(m.moment_inertia)
     local = (v - m.center_mass) @ R

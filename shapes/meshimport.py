@@ -72,6 +72,8 @@ DEFAULT_MAX_ERROR = 0.02
 DEFAULT_MAX_VERTICES = 37
 #: above this many hull vertices the greedy runs on a thinned subset
 MAX_CANDIDATES = 30000
+#: a vertex removed by a repair bans the points this near it (units of d_hull)
+BAN_RADIUS = 0.005
 
 
 class ImportRefused(ValueError):
@@ -378,33 +380,30 @@ def _hull_of(q):
     return verts, tri
 
 
-def _defects(vq, tri, rank):
-    """Local indices of vertices to remove from a chosen hull (vq (m, 3),
-    triangles, insertion rank (m,)) so that it can pass the validity checks:
-    per defect, the most recently added vertex involved. Empty when none."""
+def _defects(vq, tri):
+    """The defects that would fail the validity checks of a chosen hull (vq
+    (m, 3), outward triangles), each as the local indices of the vertices
+    involved: two vertices closer than VERTEX_TOL d; the two triangles'
+    four vertices at an edge bending by COPLANAR_DEG to CREASE_DEG; a
+    sliver triangle's three. Empty when there are none."""
     from scipy.spatial.distance import pdist, squareform
 
-    bad = set()
+    out = []
     d = 2 * np.max(np.linalg.norm(vq - vq.mean(axis=0), axis=1))
     dist = squareform(pdist(vq))
     np.fill_diagonal(dist, np.inf)
     i, j = np.nonzero(np.triu(dist < VERTEX_TOL * d))
-    for a, b in zip(i, j):
-        bad.add(a if rank[a] > rank[b] else b)
+    out += [(int(a), int(b)) for a, b in zip(i, j)]
     edges, pairs, bend = bend_angles(vq, tri)
     for k in np.flatnonzero((bend >= COPLANAR_DEG) & (bend < CREASE_DEG)):
-        # the two vertices opposite the edge
-        opp = [int(x) for x in np.concatenate([tri[pairs[k, 0]], tri[pairs[k, 1]]])
-               if x != edges[k, 0] and x != edges[k, 1]]
-        bad.add(max(opp, key=lambda x: rank[x]))
+        out.append(tuple(int(x) for x in np.unique(np.concatenate([tri[pairs[k, 0]], tri[pairs[k, 1]]]))))
     tf = geometric_faces(vq, tri)
     own = np.bincount(tf, minlength=tf.max() + 1)[tf] == 1
     _, area = triangle_normals(vq, tri)
     longest = np.max(np.stack([np.linalg.norm(vq[tri[:, a]] - vq[tri[:, (a + 1) % 3]], axis=1)
                                for a in range(3)]), axis=0)
-    for k in np.flatnonzero(own & (2 * area / longest < HEIGHT_TOL * d)):
-        bad.add(max(tri[k], key=lambda x: rank[x]))
-    return sorted(bad)
+    out += [tuple(int(x) for x in tri[k]) for k in np.flatnonzero(own & (2 * area / longest < HEIGHT_TOL * d))]
+    return out
 
 
 def _initial_simplex(q):
@@ -557,6 +556,22 @@ def thin_points(q, max_points=MAX_CANDIDATES):
         delta *= 1.5
 
 
+def _cheapest_removal(q, sub, chosen, involved):
+    """Of the chosen points at local indices ``involved``, the one (index
+    into q) whose removal leaves the hull of the rest nearest to the points
+    q[sub] (Hausdorff distance)."""
+    best, arg = np.inf, chosen[involved[0]]
+    for i in involved:
+        rest = [k for j, k in enumerate(chosen) if j != i]
+        hq = _hull_of(q[rest]) if len(rest) >= 4 else None
+        if hq is None:
+            continue
+        err, _ = hausdorff_to_convex(q[sub], q[rest][hq[0]], hq[1])
+        if err < best:
+            best, arg = err, chosen[i]
+    return arg
+
+
 def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     """Choose the reduced grain's vertices among ``points`` (N, 3), the full
     hull's vertices (any units), by greedy furthest-point insertion (module
@@ -586,7 +601,6 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
         raise ShapeError("all points on a line or a plane: no volume")
     sub = np.union1d(sub, first)
     chosen = list(first)                # indices into q
-    rank = {k: r for r, k in enumerate(chosen)}
     banned = np.zeros(len(q), bool)
     greedy = _Greedy(q[sub])
     pos = {int(k): i for i, k in enumerate(sub)}
@@ -607,38 +621,40 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
         if len(chosen) < cap and len(cand) and h[cand].max() > stop:
             grow = int(live[cand[np.argmax(h[cand])]])
         elif len(chosen) < cap:
-            # the planes say done: the exact distances of every point decide
-            pts = q[live] if len(sub) == len(q) else q
+            # the planes say done: the exact distances of every eligible point decide
             idx = live if len(sub) == len(q) else np.arange(len(q))
-            err, k = hausdorff_to_convex(pts, q[chosen], tri)
-            if err > stop and not banned[idx[k]]:
+            idx = idx[~banned[idx]]
+            err, k = hausdorff_to_convex(q[idx], q[chosen], tri)
+            if err > stop:
                 grow = int(idx[k])
                 if grow not in pos:     # a point the thinning left out: the greedy takes it in
                     sub = np.union1d(sub, [grow])
                     pos = {int(x): i for i, x in enumerate(sub)}
                     greedy = _Greedy(q[sub])
         if grow is not None:
-            rank[grow] = len(rank)
             chosen.append(grow)
             continue
-        bad = _defects(q[chosen], tri, np.array([rank[k] for k in chosen]))
+        bad = _defects(q[chosen], tri)
         if not bad:
             err, _ = hausdorff_to_convex(q, q[chosen], tri)
             return np.array(chosen), tri, err, budget.vertices is not None or err <= stop
-        for b in bad:
-            banned |= np.linalg.norm(q - q[chosen[b]], axis=1) < VERTEX_TOL
-        chosen = [k for i, k in enumerate(chosen) if i not in set(bad)]
+        # repair the first defect: drop the vertex involved whose loss costs least (the error
+        # over the greedy's points), and ban the points within BAN_RADIUS of it
+        drop = _cheapest_removal(q, sub, chosen, bad[0])
+        banned |= np.linalg.norm(q - q[drop], axis=1) < BAN_RADIUS
+        chosen = [k for k in chosen if k != drop]
         greedy.reset()                  # the hull shrank: points inside may be outside again
         if len(chosen) < 4:
             raise ShapeError("no valid polyhedron: repairs left fewer than 4 vertices")
     # out of steps: remove defects without adding until the hull is valid
     while len(chosen) >= 4:
         chosen, tri = hull_of_chosen()
-        bad = _defects(q[chosen], tri, np.array([rank[k] for k in chosen]))
+        bad = _defects(q[chosen], tri)
         if not bad:
             err, _ = hausdorff_to_convex(q, q[chosen], tri)
             return np.array(chosen), tri, err, budget.vertices is not None or err <= stop
-        chosen = [k for i, k in enumerate(chosen) if i not in set(bad)]
+        drop = _cheapest_removal(q, sub, chosen, bad[0])
+        chosen = [k for k in chosen if k != drop]
     raise ShapeError(f"no valid polyhedron within {max_steps} greedy steps")
 
 
@@ -679,7 +695,7 @@ def import_mesh(vertices, triangles, budget=None, source=""):
         idx, rt, err, met = reduce_hull(hv, budget, d=d_hull)
         rv = hv[idx]
         check_polyhedron(rv, rt)
-        poly = normalise(rv, rt)
+        poly = normalise(rv - rv.mean(axis=0), rt)      # centred first: no cancellation far from the origin
     except ShapeError as exc:
         raise ImportRefused(f"no valid library polyhedron: {exc}") from None
     sec["reduce"] = time.perf_counter() - t0

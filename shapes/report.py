@@ -250,6 +250,15 @@ def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
     return stats
 
 
+def budget_text(b):
+    """A vertex budget (:meth:`shapes.meshimport.Budget.as_dict`) in words."""
+    if b.get("vertices") is not None:
+        return f"reduced to {b['vertices']} vertices"
+    if b.get("max_error") is not None:
+        return f"reduced to within {b['max_error']:g} d of the hull, at most {b.get('max_vertices')} vertices"
+    return "budget not recorded"
+
+
 def study_section(library_path, outdir, figure="library_descriptors.png"):
     """Markdown lines of the study report's section on the grains of S1:
     the library's name and origin, its descriptors beside the published
@@ -271,7 +280,7 @@ def study_section(library_path, outdir, figure="library_descriptors.png"):
     except ValueError:
         recipe = {}
     if "source" in lib.data:
-        origin += f", imported from {len(lib)} meshes (budget {recipe.get('budget')})"
+        origin += f", imported from {len(lib)} meshes ({budget_text(recipe.get('budget') or {})})"
     elif lib.attrs.get("seed", -1) >= 0:
         origin += f", seed {lib.attrs.get('seed')}"
     if recipe.get("like"):
@@ -280,7 +289,10 @@ def study_section(library_path, outdir, figure="library_descriptors.png"):
               "class of the study (50 / 34 / 16 % of d = 2.5 / 3.75 / 5 cm); S2's spheres have the "
               "same classes.", ""]
     lines += descriptor_table({lib.name: desc})
-    plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, figure))
+    try:
+        plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, figure))
+    except Exception as exc:            # a figure that cannot be drawn is reported, not fatal
+        return lines + ["", f"(figure {figure} not drawn: {exc.__class__.__name__}: {exc})", ""]
     cap = "descriptors of S1's grains (published ranges shaded)"
     lines += ["", f"![{cap}]({figure})", "", f"*{cap}*", ""]
     return lines
