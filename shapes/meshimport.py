@@ -185,26 +185,38 @@ def _mix64(x):
 def merge_vertices(vertices, triangles):
     """Merge vertices with exactly equal coordinates and drop triangles left
     with a repeated corner (and vertices no triangle uses). Returns
-    (vertices (V', 3), triangles (T', 3)).
+    (vertices (V', 3), triangles (T', 3)); the merged vertices come in an
+    order fixed by their coordinates.
 
     A 64-bit hash of the coordinates' bits groups the rows (one sort of V
     keys rather than of V x 3 floats); every row is then compared with its
     group's representative, and a hash collision falls back to numpy's exact
     row unique, so the result is exact either way.
     """
-    v = np.ascontiguousarray(vertices, np.float64) + 0.0     # -0.0 -> 0.0
+    v = np.asarray(vertices, np.float64) + 0.0               # a contiguous copy; -0.0 -> 0.0
     t = np.asarray(triangles, np.int64)
     with np.errstate(over="ignore"):
         bits = v.view(np.uint64)
         h = _mix64(_mix64(_mix64(bits[:, 0]) ^ bits[:, 1]) ^ bits[:, 2])
-    _, first, inv = np.unique(h, return_index=True, return_inverse=True)
-    if not np.array_equal(v[first[inv]], v, equal_nan=True):
+    order = np.argsort(h)
+    hs = h[order]
+    start = np.empty(len(hs), bool)
+    start[:1] = True
+    np.not_equal(hs[1:], hs[:-1], out=start[1:])
+    first = order[start]
+    inv = np.empty(len(v), np.int64)
+    inv[order] = np.cumsum(start) - 1
+    if not (bits[first[inv]] == bits).all():          # bitwise: NaN rows compare too
         _, first, inv = np.unique(v, axis=0, return_index=True, return_inverse=True)
-    t = inv.ravel()[t]
+        inv = inv.ravel()
+    t = inv[t]
     keep = (t[:, 0] != t[:, 1]) & (t[:, 1] != t[:, 2]) & (t[:, 2] != t[:, 0])
-    t = t[keep]
+    if not keep.all():
+        t = t[keep]
     used = np.zeros(len(first), bool)
     used[t.ravel()] = True
+    if used.all():
+        return v[first], t
     new = np.cumsum(used) - 1
     return v[first[used]], new[t]
 
@@ -233,21 +245,26 @@ def components(vertices, triangles):
 def mesh_volume(vertices, triangles):
     """Signed enclosed volume (units^3) of a closed triangle mesh, positive
     for outward (counter-clockwise from outside) triangles: the divergence
-    theorem, about the vertices' mean for round-off."""
+    theorem, sum of a . (b x c) / 6 over the triangles, about the vertices'
+    mean for round-off."""
     v = np.asarray(vertices, float)
-    c = v.mean(axis=0)
-    a, b, e = v[triangles[:, 0]] - c, v[triangles[:, 1]] - c, v[triangles[:, 2]] - c
-    return float(np.einsum("ij,ij->i", a, np.cross(b, e)).sum() / 6.0)
+    v = v - v.mean(axis=0)
+    t = np.asarray(triangles)
+    a, b, c = v[t[:, 0]].T, v[t[:, 1]].T, v[t[:, 2]].T     # (3, T) each: columns are cheap
+    det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0])
+    return float(det.sum() / 6.0)
 
 
 def check_closed(vertices, triangles):
-    """Raise ImportRefused unless the mesh is finite, closed, manifold and
-    consistently oriented with a non-zero volume; returns its signed volume
-    (units^3, positive for outward triangles).
+    """Raise ImportRefused unless the mesh is finite, closed, manifold,
+    consistently oriented and in one piece, with a non-zero volume; returns
+    its signed volume (units^3, positive for outward triangles).
 
     vertices : (V, 3) merged (:func:`merge_vertices`); triangles : (T, 3).
-    One sort of the 3T edge keys decides all three edge conditions: every
-    undirected edge must occur exactly twice, once in each direction.
+    One sort of the 3T directed edges, keyed (smaller index, larger index,
+    direction), decides the edge conditions: every undirected edge must
+    occur exactly twice, once in each direction. Its edges then give the
+    connected pieces.
     """
     v, t = vertices, triangles
     if not np.isfinite(v).all():
@@ -259,22 +276,24 @@ def check_closed(vertices, triangles):
     n = np.int64(len(v))
     i = t.T.ravel()
     j = t[:, [1, 2, 0]].T.ravel()
-    key = np.minimum(i, j) * n + np.maximum(i, j)
-    order = np.argsort(key)
-    ks = key[order]
-    cut = np.flatnonzero(ks[1:] != ks[:-1]) + 1
-    counts = np.diff(np.concatenate([[0], cut, [len(ks)]]))
+    key = np.sort((np.minimum(i, j) * n + np.maximum(i, j)) * 2 + (i < j))
+    und = key >> 1
+    cut = np.flatnonzero(und[1:] != und[:-1]) + 1
+    counts = np.diff(np.concatenate([[0], cut, [len(und)]]))
     if np.any(counts == 1):
         raise ImportRefused(f"open mesh: {int((counts == 1).sum())} boundary edges (each in one "
                             "triangle); a grain must be a closed surface")
     if np.any(counts > 2):
         raise ImportRefused(f"non-manifold: {int((counts > 2).sum())} edges are shared by more "
                             "than two triangles")
-    fwd = (i < j)[order]
-    rep = int(np.count_nonzero(fwd[0::2] == fwd[1::2]))
+    rep = int(np.count_nonzero((key[0::2] & 1) == (key[1::2] & 1)))
     if rep:
         raise ImportRefused(f"inconsistently oriented: {rep} edges run the same way in both their "
                             "triangles (some triangles face inwards)")
+    pieces = _count_pieces(und[0::2], n)
+    if pieces > 1:
+        raise ImportRefused(f"{pieces} separate pieces in one mesh (import each as a grain with "
+                            "--components)")
     vol = mesh_volume(v, t)
     ext = np.ptp(v, axis=0).max()
     # |V| within the round-off of the summed triple products: no volume at all
@@ -282,6 +301,19 @@ def check_closed(vertices, triangles):
         raise ImportRefused(f"no volume: the closed surface encloses {vol:.3g} (units^3), "
                             "a flat or collapsed mesh")
     return vol
+
+
+def _count_pieces(edge_keys, n):
+    """Connected components of the graph on n vertices whose edges are the
+    sorted keys a * n + b (a < b): the keys sorted by a are a CSR matrix as
+    they stand."""
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    a = edge_keys // n
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(a, minlength=n))])
+    g = csr_matrix((np.ones(len(edge_keys), np.int8), edge_keys % n, indptr), shape=(n, n))
+    return connected_components(g, directed=False)[0]
 
 
 # ---------------------------------------------------------------- geometry
@@ -665,21 +697,17 @@ def import_mesh(vertices, triangles, budget=None, source=""):
     :class:`ImportedGrain`. Raises ImportRefused with a one-line reason."""
     budget = budget or Budget()
     sec = {}
-    t0 = time.perf_counter()
+    t0, p0 = time.perf_counter(), time.process_time()
     v, t = merge_vertices(vertices, triangles)
     if not np.isfinite(v).all():
         raise ImportRefused(f"{int((~np.isfinite(v).all(axis=1)).sum())} vertices have NaN or "
                             "infinite coordinates")
-    pieces = components(v, t) if len(v) else [(v, t)]
-    if len(pieces) > 1:
-        raise ImportRefused(f"{len(pieces)} separate pieces in one mesh (import each as a grain "
-                            "with --components)")
     vol = check_closed(v, t)
     if vol < 0:                                    # inside-out as a whole: turn round
         t = t[:, [0, 2, 1]]
         vol = -vol
-    sec["check"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    sec["check"], sec["check_cpu"] = time.perf_counter() - t0, time.process_time() - p0
+    t0, p0 = time.perf_counter(), time.process_time()
     c0 = v.mean(axis=0)
     scale = float(np.ptp(v, axis=0).max())
     hq = _hull_of((v - c0) / scale)
@@ -689,8 +717,8 @@ def import_mesh(vertices, triangles, budget=None, source=""):
     hv = v[hq[0]]
     hull_volume, com = _volume_and_centre(hv, hq[1])
     d_hull = 2 * float(np.max(np.linalg.norm(hv - com, axis=1)))
-    sec["hull"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    sec["hull"], sec["hull_cpu"] = time.perf_counter() - t0, time.process_time() - p0
+    t0, p0 = time.perf_counter(), time.process_time()
     try:
         idx, rt, err, met = reduce_hull(hv, budget, d=d_hull)
         rv = hv[idx]
@@ -698,7 +726,7 @@ def import_mesh(vertices, triangles, budget=None, source=""):
         poly = normalise(rv - rv.mean(axis=0), rt)      # centred first: no cancellation far from the origin
     except ShapeError as exc:
         raise ImportRefused(f"no valid library polyhedron: {exc}") from None
-    sec["reduce"] = time.perf_counter() - t0
+    sec["reduce"], sec["reduce_cpu"] = time.perf_counter() - t0, time.process_time() - p0
     reduced_volume, rcom = _volume_and_centre(rv, rt)
     return ImportedGrain(polyhedron=poly, source=source, mesh_triangles=len(t), mesh_vertices=len(v),
                          mesh_volume=vol, hull_volume=hull_volume, hull_vertices=len(hv), d_hull=d_hull,
