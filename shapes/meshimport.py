@@ -644,11 +644,22 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
             raise ShapeError("the chosen points are coplanar: no volume")
         return [chosen[k] for k in hq[0]], hq[1]      # qhull drops points on a face
 
+    def crowded(pts):
+        """Points within VERTEX_TOL d of a chosen vertex (d as the checks
+        take it): they cannot be vertices of a valid grain."""
+        cq = q[chosen]
+        r = VERTEX_TOL * 2 * np.max(np.linalg.norm(cq - cq.mean(axis=0), axis=1))
+        near = np.zeros(len(pts), bool)
+        for x in cq:
+            near |= np.einsum("ij,ij->i", pts - x, pts - x) < r * r
+        return near
+
     for _ in range(max_steps):
         chosen, tri = hull_of_chosen()
         h = greedy.update([pos[k] for k in chosen], tri)
         live = sub[greedy.live]
         cand = np.flatnonzero(~banned[live])
+        cand = cand[~crowded(q[live[cand]])]
         grow = None
         if len(chosen) < cap and len(cand) and h[cand].max() > stop:
             grow = int(live[cand[np.argmax(h[cand])]])
@@ -656,6 +667,7 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
             # the planes say done: the exact distances of every eligible point decide
             idx = live if len(sub) == len(q) else np.arange(len(q))
             idx = idx[~banned[idx]]
+            idx = idx[~crowded(q[idx])]
             err, k = hausdorff_to_convex(q[idx], q[chosen], tri)
             if err > stop:
                 grow = int(idx[k])

@@ -1,6 +1,8 @@
 """Grains from meshes (shapes.meshimport, ``python -m shapes import``):
 meshes made here with known answers."""
+import json
 import os
+from contextlib import nullcontext
 
 import numpy as np
 import pytest
@@ -344,29 +346,32 @@ def test_bad_meshes_are_refused_in_one_line_and_the_others_imported(tmp_path, ca
     assert "0 grains imported" in capsys.readouterr().err
 
 
-def test_components_are_grains_when_asked(tmp_path, capsys):
+def test_components_are_grains_when_asked(tmp_path):
     v, t = cube()
     tv, tt = tetrahedron(3.0)
     write(tmp_path / "two.stl", np.vstack([v, tv + 10]), np.vstack([t, tt + 8]))
-    out = tmp_path / "lib.h5"
-    assert main(["import", str(tmp_path / "two.stl"), "--components", "--out", str(out)]) == 0
-    lib = ShapeLibrary(str(out))
-    assert [s.decode().rsplit("#", 1)[1] for s in lib.source] == ["0", "1"]
-    assert sorted(lib.n_vertices.tolist()) == [4, 8]
+    grains, refused, _ = import_paths([str(tmp_path / "two.stl")], split=True)
+    assert refused == [] and [g.source.rsplit("#", 1)[1] for g in grains] == ["0", "1"]
+    assert [g.polyhedron.n_vertices for g in grains] == [8, 4]          # largest piece first
 
 
 def test_budget_options_and_library_datasets(tmp_path, capsys):
     v, t, _ = noisy_sphere(4, 2e-3, (1.0, 0.7, 0.5))
     write(tmp_path / "ell.ply", v, t)
-    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
-    assert main(["import", str(tmp_path / "ell.ply"), "--vertices", "12", "--out", str(a)]) == 0
+    (a,), _, _ = import_paths([str(tmp_path / "ell.ply")], Budget(vertices=12, max_error=None))
+    assert a.polyhedron.n_vertices == 12 and a.reduction_hausdorff > 0.04
+    out = tmp_path / "b.h5"
     assert main(["import", str(tmp_path / "ell.ply"), "--max-error", "0.04", "--max-vertices", "60",
-                 "--out", str(b), "--name", "my scans"]) == 0
-    la, lb = ShapeLibrary(str(a)), ShapeLibrary(str(b))
-    assert la.n_vertices[0] == 12 and la.name == "a" and lb.name == "my scans"
-    assert lb.reduction_hausdorff[0] <= 0.04 < la.reduction_hausdorff[0]
-    assert la.reduction_volume_change[0] < lb.reduction_volume_change[0] < 0
-    assert la.mesh_triangles[0] == len(t) and la.convexity_deficit[0] < 1e-3
-    assert main(["import", str(tmp_path / "ell.ply"), "--vertices", "3", "--out", str(a)]) == 2
-    assert main(["import", str(tmp_path / "ell.ply"), "--max-error", "1.5", "--out", str(a)]) == 2
-    assert "Traceback" not in capsys.readouterr().err
+                 "--out", str(out), "--name", "my scans"]) == 0
+    lb = ShapeLibrary(str(out))
+    assert lb.name == "my scans" and lb.n_vertices[0] > 12
+    assert lb.reduction_hausdorff[0] <= 0.04 < a.reduction_hausdorff
+    assert a.reduction_volume_change < lb.reduction_volume_change[0] < 0
+    assert lb.mesh_triangles[0] == len(t) and lb.convexity_deficit[0] < 1e-3
+    assert json.loads(lb.attrs["recipe"])["budget"] == {"vertices": None, "max_error": 0.04, "max_vertices": 60}
+    for bad in (["--vertices", "3"], ["--max-error", "1.5"], ["--vertices", "12", "--max-error", "0.1"]):
+        # both budgets at once: argparse's own usage error (exit 2)
+        with pytest.raises(SystemExit) if "--vertices" in bad and "--max-error" in bad else nullcontext():
+            assert main(["import", str(tmp_path / "ell.ply"), *bad, "--out", str(tmp_path / "x.h5")]) == 2
+    assert "Traceback" not in capsys.readouterr().err and not (tmp_path / "x.h5").exists()
+

@@ -197,6 +197,7 @@ def default_library(tmp_path_factory):
     return path
 
 
+@pytest.mark.slow
 def test_report_against_shows_two_libraries_side_by_side(tmp_path, default_library, capsys):
     a = target_library(tmp_path / "a.h5", n=30)
     b = default_library
