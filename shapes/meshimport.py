@@ -12,8 +12,8 @@ ones (:mod:`shapes.polyhedron`):
    least 4 distinct vertices, exact duplicate vertices merged (STL stores
    each triangle's corners apart), triangles with a repeated corner after
    the merge dropped, one connected piece, closed (every edge in exactly two
-   triangles), consistently oriented (every directed edge once), enclosed
-   volume not zero. A wholly inside-out mesh (negative volume) is turned
+   triangles), manifold, consistently oriented (every directed edge once),
+   enclosed volume not zero. A wholly inside-out mesh (negative volume) is turned
    round.
 2. **Hull**: the convex hull of the vertices (qhull), its volume V_hull, its
    centre of mass and its size d_hull = 2 x the largest distance from that
@@ -24,22 +24,27 @@ ones (:mod:`shapes.polyhedron`):
    already chosen (quickhull's order), starting from four extreme points,
    until the budget is met:
 
-   * ``vertices=N``: N vertices (the whole hull when it has at most N and is
-     a valid polyhedron, else the greedy hull of N points);
+   * ``vertices=N``: N vertices (fewer when the hull has fewer);
    * ``max_error=E``: the fewest vertices whose hull is within E d_hull of
      the full hull (Hausdorff), at most ``max_vertices`` (default 37, the
      paper's largest grain).
 
    Points within ``ZERO_ERROR`` (1e-6 d_hull) of the chosen hull count as on
-   it (a float32 STL rounds coordinates by 6e-8 d). A chosen set whose hull
-   fails the validity checks of :mod:`shapes.polyhedron` (two vertices
-   closer than 0.02 d, an edge bending by 1-3 deg, a sliver triangle) is
-   repaired by removing the most recently added vertex involved and banning
-   the points within 0.02 d_hull of it; the greedy then goes on.
+   it (a float32 STL rounds coordinates by 6e-8 d). Points within 0.02 d of a
+   chosen vertex are never chosen (they could not be vertices of a valid
+   grain). A chosen set whose hull fails the validity checks of
+   :mod:`shapes.polyhedron` (two vertices closer than 0.02 d, an edge
+   bending by 1-3 deg, a sliver triangle) is repaired by removing the vertex
+   of the defect whose removal leaves the hull nearest to the points, and
+   banning the points within ``BAN_RADIUS`` (0.005 d_hull) of it; the greedy
+   then goes on. An error target can so be missed; the error is measured
+   and reported all the same. Above ``MAX_CANDIDATES`` hull vertices the
+   greedy runs on a grid-thinned subset (:func:`thin_points`).
 4. **Error of the reduction**, measured exactly: the reduced hull lies inside
    the full hull (its vertices are hull vertices), so their Hausdorff
    distance is the largest distance from a full-hull vertex to the reduced
-   polyhedron (:func:`distance_to_convex`), reported relative to d_hull;
+   polyhedron (:func:`distance_to_convex`, :func:`hausdorff_to_convex`),
+   reported relative to d_hull;
    and the volume change V_reduced / V_hull - 1 (<= 0).
 5. **Normalised** as the generated grains are
    (:func:`shapes.polyhedron.normalise`): centre of mass, principal frame,
@@ -64,8 +69,6 @@ from .polyhedron import (COPLANAR_DEG, CREASE_DEG, HEIGHT_TOL, VERTEX_TOL, Polyh
 FORMATS = {".stl": "stl", ".obj": "obj", ".ply": "ply", ".off": "off"}
 #: points within this distance (relative to d_hull) of a hull count as on it
 ZERO_ERROR = 1e-6
-#: the paper's grains: 8-37 vertices, mean 20
-PAPER_VERTICES = (8, 37, 20.0)
 #: default error target of ``python -m shapes import`` (relative to d_hull):
 #: see docs/shapes-import.md for how it was chosen
 DEFAULT_MAX_ERROR = 0.02
@@ -618,8 +621,9 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     Returns (indices (k,) into points, their hull's outward triangles (T, 3)
     as indices into the returned vertex list, the exact Hausdorff distance
     to the full hull in units of d, target_met: False when an error target
-    was not reached within ``budget.max_vertices``). Raises ShapeError when
-    no valid polyhedron is found.
+    was not reached, at ``budget.max_vertices`` or because the validity
+    repairs forbade the nearer choices). Raises ShapeError when no valid
+    polyhedron is found.
     """
     p = np.asarray(points, float)
     c = p.mean(axis=0)
@@ -627,6 +631,11 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     q = (p - c) / d                     # unit-size coordinates: tolerances are absolute
     cap = min(budget.cap, len(q))
     stop = max(budget.max_error if budget.max_error is not None else 0.0, ZERO_ERROR)
+    if len(q) <= cap and (budget.vertices is not None or stop <= ZERO_ERROR):
+        # the whole hull fits the budget: it is the answer when it is a valid grain
+        hq = _hull_of(q)
+        if hq is not None and len(hq[0]) == len(q) and not _defects(q[hq[0]], hq[1]):
+            return hq[0], hq[1], 0.0, True
     sub = thin_points(q, max_candidates or MAX_CANDIDATES)
     first = _initial_simplex(q)
     if first is None:
