@@ -14,6 +14,8 @@ ENSEMBLE ?= 3
 JOBS ?= 2
 JOB_THREADS ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
+# SHAPES=LIB.h5: S1 of make study on this library (e.g. from python -m shapes import)
+SHAPES ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
@@ -70,9 +72,9 @@ shapes: $(SHAPES_LIB)
 # (yade_scripts/pool.py: longest first, no core idle at the end; a polyhedra
 # job starts on JOB_THREADS threads). Finished runs are not run again.
 # One 16-core node: make study PRESET=intermediate ENSEMBLE=16 JOBS=16
-study: system venv kernel $(SHAPES_LIB)
+study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
-	    --jobs $(JOBS) --job-threads $(JOB_THREADS)
+	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES))
 
 # Speed against error: a yade-batch sweep over kappa and I around the
 # default preset, 3 seeds per point, S1 200 grains and S2 1000 spheres

@@ -1,46 +1,190 @@
-"""``python -m shapes build --n 1000 --seed 0 --out LIB.h5 [--report DIR]``"""
+"""``python -m shapes``: build, import and report shape libraries.
+
+::
+
+    python -m shapes build --n 1000 --seed 0 --out LIB.h5 [--report DIR] [--like TARGET.h5]
+    python -m shapes import MESH_OR_FOLDER... --out LIB.h5 [--report DIR]
+                     [--vertices N | --max-error E] [--max-vertices M] [--components] [--name NAME]
+    python -m shapes report LIB.h5 --report DIR [--against OTHER.h5]
+
+Exit codes: 0 done; 1 (import) some meshes refused, the library holds the
+others; 2 nothing written (bad options, an unreadable library, every mesh
+refused).
+"""
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 
 
-def main(argv=None):
+def _tolerances():
     from . import polyhedron
-    from .generate import Recipe, generate_library
-    from .library import ShapeLibrary, write_library
-    from .report import write_report
 
-    ap = argparse.ArgumentParser(prog="python -m shapes", description="ballast-like polyhedra library")
+    return {k: getattr(polyhedron, k) for k in
+            ("VERTEX_TOL", "EDGE_TOL", "HEIGHT_TOL", "VOLUME_TOL", "CONVEX_TOL", "COPLANAR_DEG")}
+
+
+def _err(msg):
+    print(f"shapes: error: {msg}", file=sys.stderr)
+    return 2
+
+
+def _parser():
+    from .meshimport import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
+
+    ap = argparse.ArgumentParser(prog="python -m shapes", description="ballast-like polyhedra libraries")
     sub = ap.add_subparsers(dest="cmd", required=True)
     b = sub.add_parser("build", help="generate a library and its report")
     b.add_argument("--n", type=int, default=1000, help="number of shapes (default 1000)")
     b.add_argument("--seed", type=int, default=0)
     b.add_argument("--out", required=True, help="library file (.h5)")
     b.add_argument("--report", help="folder for the report (default: next to the library)")
-    r = sub.add_parser("report", help="report on an existing library")
+    b.add_argument("--like", metavar="TARGET.h5",
+                   help="draw grains whose elongation, flatness and vertex counts follow this library's")
+    b.add_argument("--name", help="the library's name (default: the file's stem)")
+    i = sub.add_parser("import", help="grains from mesh files (STL, OBJ, PLY, OFF)")
+    i.add_argument("paths", nargs="+", metavar="MESH_OR_FOLDER")
+    i.add_argument("--out", required=True, help="library file (.h5)")
+    i.add_argument("--report", help="folder for the report (default: next to the library)")
+    g = i.add_mutually_exclusive_group()
+    g.add_argument("--vertices", type=int, metavar="N", help="reduce every grain to N vertices")
+    g.add_argument("--max-error", type=float, metavar="E",
+                   help=f"fewest vertices within E d of the hull (default {DEFAULT_MAX_ERROR})")
+    i.add_argument("--max-vertices", type=int, default=DEFAULT_MAX_VERTICES,
+                   help=f"at most this many vertices with --max-error (default {DEFAULT_MAX_VERTICES})")
+    i.add_argument("--components", action="store_true",
+                   help="each connected piece of a file is a grain (file#k, largest first)")
+    i.add_argument("--name", help="the library's name (default: the file's stem)")
+    r = sub.add_parser("report", help="report on an existing library, or two side by side")
     r.add_argument("library")
     r.add_argument("--report", required=True)
-    args = ap.parse_args(argv)
-    if args.cmd == "build":
-        if args.n < 1:
-            print("shapes: error: --n must be at least 1", file=sys.stderr)
-            return 2
-        t0 = time.perf_counter()
-        recipe = Recipe()
+    r.add_argument("--against", metavar="OTHER.h5", help="a second library, compared side by side")
+    return ap
+
+
+def main(argv=None):
+    args = _parser().parse_args(argv)
+    return {"build": _build, "import": _import, "report": _report}[args.cmd](args)
+
+
+def _build(args):
+    from .generate import Recipe, generate_library
+    from .library import LibraryError, ShapeLibrary, write_library
+    from .report import write_comparison, write_report
+
+    if args.n < 1:
+        return _err("--n must be at least 1")
+    report = args.report or args.out.rsplit(".", 1)[0] + "-report"
+    t0 = time.perf_counter()
+    recipe = Recipe()
+    if args.like:
+        from .descriptors import library_descriptors
+        from .match import generate_like
+        from .polyhedron import ShapeError
+
+        try:
+            target = ShapeLibrary(args.like)
+            shapes, rejections = generate_like(library_descriptors(target), args.n, args.seed, recipe)
+        except (LibraryError, ShapeError) as exc:
+            return _err(str(exc))
+        spec = {**recipe.as_dict(), "like": args.like, "matched": ["elongation", "flatness", "n_vertices"],
+                "method": "smoothed bootstrap of the target, generated grains stretched along their "
+                          "principal axes (shapes/match.py)"}
+        created = f"python -m shapes build --like {os.path.basename(args.like)}"
+    else:
         shapes, rejections = generate_library(args.n, args.seed, recipe)
-        tol = {k: getattr(polyhedron, k) for k in
-               ("VERTEX_TOL", "EDGE_TOL", "HEIGHT_TOL", "VOLUME_TOL", "CONVEX_TOL", "COPLANAR_DEG")}
-        write_library(args.out, shapes, args.seed, recipe.as_dict(), tol)
-        seconds = time.perf_counter() - t0
-        report = args.report or args.out.rsplit(".", 1)[0] + "-report"
-        st = write_report(ShapeLibrary(args.out), report, rejections, seconds)
-        print(f"shapes: {args.n} shapes -> {args.out} in {seconds:.1f} s; mean vertices "
-              f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}",
+        spec, created = recipe.as_dict(), "python -m shapes build"
+    write_library(args.out, shapes, args.seed, spec, _tolerances(), name=args.name, created_by=created)
+    seconds = time.perf_counter() - t0
+    lib = ShapeLibrary(args.out)
+    st = write_report(lib, report, rejections, seconds)
+    msg = (f"shapes: {args.n} shapes -> {args.out} in {seconds:.1f} s; mean vertices "
+           f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}")
+    if args.like:
+        cmp = write_comparison(target, lib, report, "target", lib.name)
+        ks = ", ".join(f"{k} {cmp[k]['ks_D']:.3f}" for k in ("elongation", "flatness", "n_vertices"))
+        msg += (f"\nshapes: match to {args.like} ({len(target)} grains), KS D: {ks} (95 % critical value "
+                f"{cmp['elongation']['ks_D_crit95']:.3f}); {report}/compare.md")
+    print(msg, file=sys.stderr)
+    return 0
+
+
+def _import(args):
+    import numpy as np
+
+    from .library import write_library
+    from .meshimport import Budget, import_paths
+    from .report import budget_text, write_report
+
+    try:
+        budget = (Budget(vertices=args.vertices, max_error=None) if args.vertices is not None else
+                  Budget(max_error=args.max_error, max_vertices=args.max_vertices)
+                  if args.max_error is not None else Budget(max_vertices=args.max_vertices))
+    except ValueError as exc:
+        return _err(str(exc))
+    t0 = time.perf_counter()
+    grains, refused, ignored = import_paths(
+        args.paths, budget, split=args.components,
+        log=lambda name, reason: print(f"shapes: refused {name}: {reason}", file=sys.stderr))
+    seconds = time.perf_counter() - t0
+    if not grains:
+        print(f"shapes: 0 grains imported, {len(refused)} refused (listed above); no library written",
               file=sys.stderr)
-        return 0
-    st = write_report(ShapeLibrary(args.library), args.report)
+        return 2
+    extra = {"source": [g.source for g in grains],
+             "source_d": np.array([g.source_d for g in grains]),
+             "mesh_triangles": np.array([g.mesh_triangles for g in grains], np.int64),
+             "hull_vertices": np.array([g.hull_vertices for g in grains], np.int64),
+             "convexity_deficit": np.array([g.convexity_deficit for g in grains]),
+             "reduction_hausdorff": np.array([g.reduction_hausdorff for g in grains]),
+             "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
+    spec = {"source": "meshes", "inputs": list(args.paths), "budget": budget.as_dict(),
+            "components": bool(args.components)}
+    out_dir = os.path.dirname(os.path.abspath(args.out))
+    os.makedirs(out_dir, exist_ok=True)
+    write_library(args.out, [g.polyhedron for g in grains], -1, spec, _tolerances(), name=args.name,
+                  created_by="python -m shapes import", extra=extra)
+    from .library import ShapeLibrary
+
+    report = args.report or args.out.rsplit(".", 1)[0] + "-report"
+    missed = sum(not g.target_met for g in grains)
+    nv = np.array([g.polyhedron.n_vertices for g in grains])
+    err = extra["reduction_hausdorff"]
+    notes = [f"{budget_text(budget.as_dict())}; the import took {seconds:.1f} s",
+             f"reduction error (Hausdorff / d): median {np.median(err):.3g}, max {err.max():.3g}"]
+    if missed:
+        notes.append(f"{missed} grains above the error target {budget.max_error} d: at {budget.max_vertices} "
+                     "vertices, or where every nearer choice fails the validity checks (a nearly flat edge)")
+    if ignored:
+        notes.append(f"{ignored} files in the folders were not meshes and were ignored")
+    write_report(ShapeLibrary(args.out), report, seconds=seconds, refused=refused, notes=notes)
+    print(f"shapes: {len(grains)} grains imported -> {args.out} in {seconds:.1f} s, {len(refused)} refused"
+          + (" (listed above)" if refused else "")
+          + f"; vertices {nv.min()}-{nv.max()} (mean {nv.mean():.1f}), reduction error median "
+          f"{np.median(err):.3g} d, max {err.max():.3g} d"
+          + (f", {missed} above the error target (see the report)" if missed else "")
+          + (f"; {ignored} non-mesh file{'s' if ignored > 1 else ''} ignored" if ignored else "")
+          + f"; report in {report}", file=sys.stderr)
+    return 1 if refused else 0
+
+
+def _report(args):
+    from .library import LibraryError, ShapeLibrary
+    from .report import write_comparison, write_report
+
+    try:
+        lib = ShapeLibrary(args.library)
+        other = ShapeLibrary(args.against) if args.against else None
+    except LibraryError as exc:
+        return _err(str(exc))
+    write_report(lib, args.report)
+    if other is not None:
+        st = write_comparison(lib, other, args.report)
+        worst = max(st, key=lambda k: st[k]["ks_D"] / st[k]["ks_D_crit95"])
+        print(f"shapes: {args.report}/compare.md: largest KS D {st[worst]['ks_D']:.3f} ({worst}, "
+              f"95 % critical value {st[worst]['ks_D_crit95']:.3f})", file=sys.stderr)
     print(f"shapes: report in {args.report}", file=sys.stderr)
     return 0
 

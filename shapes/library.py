@@ -20,6 +20,21 @@ file attributes  ``seed``, ``n_shapes``, ``recipe`` (JSON), ``tolerances``
 ``sphericity``        (S,) float64  Wadell's
 ``n_vertices``, ``n_faces``, ``n_edges``  (S,) int32  geometric counts
 
+Libraries imported from meshes (``python -m shapes import``, see
+:mod:`shapes.meshimport`) also hold, per grain (S,):
+
+``source``                   str  the file (``file#k``: its k-th piece)
+``source_d``                 float64  d in the mesh file's units
+``mesh_triangles``           int64  triangles of the mesh (after the merge)
+``hull_vertices``            int64  vertices of the mesh's convex hull
+``convexity_deficit``        float64  1 - V_mesh / V_hull
+``reduction_hausdorff``      float64  Hausdorff distance reduced-full hull / d_hull
+``reduction_volume_change``  float64  V_reduced / V_hull - 1
+
+and the file attribute ``name`` (every library written here has one);
+``seed`` is -1 for an imported library. Readers ignore datasets they do not
+know, so these stay within version 1.
+
 A body of size d (m) and density rho (kg/m^3) has vertices d * v (m), volume
 d^3 * volume (m^3), mass rho * d^3 * volume and inertia rho * d^5 * inertia.
 """
@@ -39,15 +54,26 @@ class LibraryError(ValueError):
     """A shape library file that cannot be read."""
 
 
-def write_library(path, shapes, seed, recipe, tolerances):
+def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by="python -m shapes build",
+                  extra=None):
     """Write the list of Polyhedron ``shapes`` atomically (temporary file +
-    rename)."""
+    rename). name : the library's name (default: the file's stem);
+    extra : optional dict of per-shape datasets (S,) (module docstring)."""
     tmp = str(path) + ".tmp"
+    name = name or os.path.splitext(os.path.basename(str(path)))[0]
     with h5py.File(tmp, "w") as f:
         f.attrs.update({"schema": SCHEMA, "schema_version": VERSION, "seed": int(seed),
                         "n_shapes": len(shapes), "recipe": json.dumps(recipe),
-                        "tolerances": json.dumps(tolerances),
-                        "created_by": "python -m shapes build"})
+                        "tolerances": json.dumps(tolerances), "name": name,
+                        "created_by": created_by})
+        for k, x in (extra or {}).items():
+            if len(x) != len(shapes):
+                raise ValueError(f"extra dataset {k} has {len(x)} rows for {len(shapes)} shapes")
+            if k == "source":
+                f.create_dataset(k, data=np.array([str(s) for s in x], dtype=object),
+                                 dtype=h5py.string_dtype())
+            else:
+                f[k] = np.asarray(x)
         f["vertex_offsets"] = np.concatenate([[0], np.cumsum([s.n_vertices for s in shapes])]).astype(np.int64)
         f["triangle_offsets"] = np.concatenate([[0], np.cumsum([len(s.triangles) for s in shapes])]).astype(np.int64)
         f["vertices"] = np.concatenate([s.vertices for s in shapes])
@@ -78,6 +104,12 @@ class ShapeLibrary:
         except OSError as exc:
             raise LibraryError(f"{path}: unreadable ({exc.__class__.__name__})") from None
         self.path = path
+
+    @property
+    def name(self):
+        """The library's name: its ``name`` attribute, else (older files)
+        what built it."""
+        return str(self.attrs.get("name") or f"generated, seed {self.attrs.get('seed')}")
 
     def __len__(self):
         return len(self.data["volume"])

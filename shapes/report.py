@@ -1,4 +1,7 @@
-"""Statistics and figures of a shape library against the published ranges."""
+"""Statistics and figures of a shape library against the published ranges,
+its descriptors (:mod:`shapes.descriptors`), two libraries side by side
+(:func:`write_comparison`), and the library section of the study report
+(:func:`study_section`)."""
 from __future__ import annotations
 
 import json
@@ -30,9 +33,12 @@ def library_stats(lib):
     return out
 
 
-def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12):
-    """Write ``stats.json``, ``report.md``, ``counts.png``, ``shape_ratios.png``
-    and ``sheet.png`` (a dozen grains in 3D) into ``outdir``."""
+def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused=None, notes=()):
+    """Write ``stats.json``, ``report.md``, ``counts.png``, ``shape_ratios.png``,
+    ``descriptors.png`` (:func:`plot_descriptors`) and ``sheet.png`` (a
+    dozen grains in 3D) into ``outdir``. refused : list of (file, reason)
+    of an import, listed in the report; notes : extra lines for it."""
+    from .descriptors import library_descriptors
     import matplotlib
 
     matplotlib.use("Agg")
@@ -44,8 +50,12 @@ def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12):
     st["n_shapes"] = len(lib)
     st["rejections"] = dict(rejections or {})
     st["build_seconds"] = seconds
+    desc = library_descriptors(lib)
+    st["descriptors"] = {k: _summary(x) for k, x in desc.items()}
+    st["refused"] = [list(r) for r in (refused or [])]
     with open(os.path.join(outdir, "stats.json"), "w") as fh:
         json.dump(st, fh, indent=1)
+    plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, "descriptors.png"))
 
     fig, axes = plt.subplots(1, 2, figsize=(9, 3.5))
     for ax, key, label in zip(axes, ("n_vertices", "n_faces"), ("vertices", "geometric faces")):
@@ -96,18 +106,193 @@ def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12):
     fig.savefig(os.path.join(outdir, "sheet.png"), dpi=100)
     plt.close(fig)
 
-    lines = ["# Shape library report", "",
-             f"{len(lib)} shapes, seed {lib.attrs.get('seed')}, file `{lib.path}`"
-             + (f", built in {seconds:.1f} s" if seconds else ""), "",
-             "| quantity | min | mean | max | published |", "|---|---|---|---|---|"]
-    for k in ("n_vertices", "n_faces", "n_edges", "elongation_I_over_L", "flatness_S_over_I",
-              "S_over_L", "sphericity"):
-        s = st[k]
-        pub = s.get("published")
-        pub_txt = f"{pub['min']}-{pub['max']}, mean {pub['mean']:g} ({s['mean_rel_diff']:+.1%})" if pub else ""
-        lines.append(f"| {k} | {s['min']:.3g} | {s['mean']:.3g} | {s['max']:.3g} | {pub_txt} |")
+    lines = [f"# Shape library report: {lib.name}", "",
+             f"{len(lib)} shapes, file `{lib.path}`, made by `{lib.attrs.get('created_by')}`"
+             + (f" (seed {lib.attrs.get('seed')})" if lib.attrs.get("seed", -1) >= 0 else "")
+             + (f" in {seconds:.1f} s" if seconds else ""), ""]
+    lines += descriptor_table({lib.name: desc})
+    lines += [f"* {x}" for x in notes]
+    if refused:
+        lines += ["", f"Refused ({len(refused)}):", ""] + [f"* `{f}`: {r}" for f, r in refused]
     lines += ["", f"Redrawn attempts by reason: {st['rejections'] or 'none'}", "",
-              "![counts](counts.png)", "", "![ratios](shape_ratios.png)", "", "![sheet](sheet.png)", ""]
+              "![counts](counts.png)", "", "![ratios](shape_ratios.png)", "",
+              "![descriptors](descriptors.png)", "", "![sheet](sheet.png)", ""]
     with open(os.path.join(outdir, "report.md"), "w") as fh:
         fh.write("\n".join(lines))
     return st
+
+
+# ---------------------------------------------------------------- descriptors
+
+#: table labels of the descriptors (shapes.descriptors.NAMES)
+LABELS = {"n_vertices": "vertices", "n_faces": "faces", "n_edges": "edges",
+          "elongation": "elongation I/L", "flatness": "flatness S/I", "s_over_l": "S/L",
+          "sphericity": "Wadell sphericity", "angularity_deg": "angularity (deg)",
+          "sharpest_edge_deg": "sharpest edge (deg)", "convexity_deficit": "convexity deficit",
+          "reduction_hausdorff": "reduction Hausdorff / d", "reduction_volume_change": "reduction volume change"}
+
+
+def _summary(x):
+    x = np.asarray(x, float)
+    return {"min": float(x.min()), "mean": float(x.mean()), "max": float(x.max()),
+            "p10": float(np.percentile(x, 10)), "p50": float(np.percentile(x, 50)),
+            "p90": float(np.percentile(x, 90))}
+
+
+def _fmt(x):
+    return f"{x:.3g}" if abs(x) >= 1e-3 or x == 0 else f"{x:.2e}"
+
+
+def descriptor_table(tables, stats=None):
+    """Markdown lines: one row per descriptor, for each library (dict label
+    -> descriptor dict) min / mean / max, the published range where there
+    is one, and, given ``stats`` (:func:`shapes.descriptors.compare` of the
+    first two), the KS statistic D with its 95 % critical value."""
+    from .descriptors import NAMES
+
+    labels = list(tables)
+    head = "| descriptor | " + " | ".join(f"{lab}: min / mean / max" for lab in labels) + " | published |"
+    if stats:
+        head += " KS D (95 % crit.) |"
+    lines = [head, "|" + "---|" * (len(labels) + 2 + bool(stats))]
+    for k in NAMES:
+        cells = []
+        for lab in labels:
+            x = np.asarray(tables[lab][k], float)
+            cells.append(f"{_fmt(x.min())} / {_fmt(x.mean())} / {_fmt(x.max())}")
+        pub = PUBLISHED.get(k)
+        row = f"| {LABELS[k]} | " + " | ".join(cells) + f" | {f'{pub[0]}–{pub[1]}, mean {pub[2]:g}' if pub else '–'} |"
+        if stats:
+            row += f" {stats[k]['ks_D']:.3f} ({stats[k]['ks_D_crit95']:.3f}) |"
+        lines.append(row)
+    return lines
+
+
+def plot_descriptors(libs, path):
+    """One figure of histograms, every library of ``libs`` (dict label ->
+    (ShapeLibrary, descriptor dict)) overlaid as densities: vertex and face
+    counts (published range shaded), elongation, flatness, sphericity,
+    angularity per grain, the exterior dihedral angle of every edge
+    (length-weighted), convexity deficit and reduction error."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from .descriptors import library_edge_angles
+
+    keys = ["n_vertices", "n_faces", "elongation", "flatness", "sphericity", "angularity_deg",
+            "edges", "convexity_deficit", "reduction_hausdorff"]
+    fig, axes = plt.subplots(3, 3, figsize=(11, 8.5))
+    colours = ["0.35", "tab:orange", "tab:blue", "tab:green"]
+    for ax, k in zip(axes.ravel(), keys):
+        if k == "edges":
+            data = {lab: library_edge_angles(lib) for lab, (lib, _) in libs.items()}
+            bins = np.linspace(0, 180, 37)
+            for (lab, (a, w)), col in zip(data.items(), colours):
+                ax.hist(a, bins=bins, weights=w, density=True, histtype="step", lw=1.4, color=col, label=lab)
+            ax.set_xlabel("exterior dihedral angle at edges (deg), by length")
+            continue
+        xs = {lab: np.asarray(d[k], float) for lab, (_, d) in libs.items()}
+        allx = np.concatenate(list(xs.values()))
+        if k in ("n_vertices", "n_faces"):
+            bins = np.arange(allx.min() - 0.5, allx.max() + 1.5, max(1, int(np.ptp(allx) // 40) + 1))
+            lo, hi, mean = PUBLISHED[k]
+            ax.axvspan(lo, hi, color="tab:green", alpha=0.08)
+            ax.axvline(mean, color="tab:green", lw=1, label=f"published {lo}–{hi}, mean {mean:g}")
+        else:
+            span = np.ptp(allx)
+            bins = np.linspace(allx.min() - 0.05 * span - 1e-9, allx.max() + 0.05 * span + 1e-9, 31)
+        for (lab, x), col in zip(xs.items(), colours):
+            ax.hist(x, bins=bins, density=True, histtype="step", lw=1.4, color=col, label=lab)
+        ax.set_xlabel(LABELS[k])
+    for ax in axes.ravel():
+        ax.set_yticks([])
+    axes[0, 0].legend(fontsize=7)
+    axes[0, 1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
+    """Two libraries side by side in ``outdir``: ``compare.md`` (descriptor
+    table with both, the published ranges, KS statistics; quantile
+    differences), ``compare.json`` (:func:`shapes.descriptors.compare`, b
+    against a) and ``compare.png`` (overlaid histograms). Returns the
+    comparison dict."""
+    from .descriptors import compare, library_descriptors
+
+    os.makedirs(outdir, exist_ok=True)
+    la, lb = label_a or lib_a.name, label_b or lib_b.name
+    if la == lb:
+        la, lb = f"{la} (a)", f"{lb} (b)"
+    da, db = library_descriptors(lib_a), library_descriptors(lib_b)
+    stats = compare(da, db)
+    with open(os.path.join(outdir, "compare.json"), "w") as fh:
+        json.dump({"a": {"name": la, "file": str(lib_a.path), "n": len(lib_a)},
+                   "b": {"name": lb, "file": str(lib_b.path), "n": len(lib_b)}, "stats": stats}, fh, indent=1)
+    plot_descriptors({la: (lib_a, da), lb: (lib_b, db)}, os.path.join(outdir, "compare.png"))
+    lines = [f"# Shape libraries side by side: {la} and {lb}", "",
+             f"* {la}: `{lib_a.path}`, {len(lib_a)} grains, made by `{lib_a.attrs.get('created_by')}`",
+             f"* {lb}: `{lib_b.path}`, {len(lib_b)} grains, made by `{lib_b.attrs.get('created_by')}`", "",
+             "KS D: two-sample Kolmogorov–Smirnov statistic of each descriptor; the two libraries' "
+             "distributions differ at the 5 % level when D exceeds its critical value.", ""]
+    lines += descriptor_table({la: da, lb: db}, stats)
+    lines += ["", f"Quantile differences ({lb} − {la}):", "",
+              "| descriptor | p10 | p50 | p90 | KS p-value |", "|---|---|---|---|---|"]
+    for k, st in stats.items():
+        lines.append(f"| {LABELS[k]} | {_fmt(st['dq10'])} | {_fmt(st['dq50'])} | {_fmt(st['dq90'])} | "
+                     f"{st['ks_p']:.3g} |")
+    lines += ["", "![descriptors of both libraries](compare.png)", ""]
+    with open(os.path.join(outdir, "compare.md"), "w") as fh:
+        fh.write("\n".join(lines))
+    return stats
+
+
+def budget_text(b):
+    """A vertex budget (:meth:`shapes.meshimport.Budget.as_dict`) in words."""
+    if b.get("vertices") is not None:
+        return f"reduced to {b['vertices']} vertices"
+    if b.get("max_error") is not None:
+        return f"reduced to within {b['max_error']:g} d of the hull, at most {b.get('max_vertices')} vertices"
+    return "budget not recorded"
+
+
+def study_section(library_path, outdir, figure="library_descriptors.png"):
+    """Markdown lines of the study report's section on the grains of S1:
+    the library's name and origin, its descriptors beside the published
+    ranges (8–37 vertices, mean 20; 12–70 faces, mean 35) and a figure
+    written to ``outdir/figure``. A library that cannot be read gives a
+    one-line note instead."""
+    from .descriptors import library_descriptors
+    from .library import LibraryError, ShapeLibrary
+
+    lines = ["", "## The grains of S1", ""]
+    try:
+        lib = ShapeLibrary(library_path)
+        desc = library_descriptors(lib)
+    except (LibraryError, KeyError, ValueError) as exc:
+        return lines + [f"The shape library `{library_path}` could not be read: {exc}", ""]
+    origin = f"made by `{lib.attrs.get('created_by')}`"
+    try:
+        recipe = json.loads(lib.attrs.get("recipe", "{}"))
+    except ValueError:
+        recipe = {}
+    if "source" in lib.data:
+        origin += f", imported from {len(lib)} meshes ({budget_text(recipe.get('budget') or {})})"
+    elif lib.attrs.get("seed", -1) >= 0:
+        origin += f", seed {lib.attrs.get('seed')}"
+    if recipe.get("like"):
+        origin += f", drawn to match `{recipe['like']}`"
+    lines += [f"Library **{lib.name}**: {len(lib)} grains, {origin}. Each grain is placed at a size "
+              "class of the study (50 / 34 / 16 % of d = 2.5 / 3.75 / 5 cm); S2's spheres have the "
+              "same classes.", ""]
+    lines += descriptor_table({lib.name: desc})
+    try:
+        plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, figure))
+    except Exception as exc:            # a figure that cannot be drawn is reported, not fatal
+        return lines + ["", f"(figure {figure} not drawn: {exc.__class__.__name__}: {exc})", ""]
+    cap = "descriptors of S1's grains (published ranges shaded)"
+    lines += ["", f"![{cap}]({figure})", "", f"*{cap}*", ""]
+    return lines

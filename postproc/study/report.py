@@ -461,10 +461,26 @@ def build_report(study, out=None, reference=REFERENCE):
     pd.DataFrame(by_count).to_csv(os.path.join(out, "claim6.csv"), index=False)
 
     md = _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_count)
+    md += "\n".join(_library_section(runs, out))
     with open(os.path.join(out, "report.md"), "w") as fh:
         fh.write(md)
     _html(md, os.path.join(out, "report.html"))
     return os.path.join(out, "report.md")
+
+
+def _library_section(runs, out):
+    """The section on S1's grains (:func:`shapes.report.study_section`): the
+    library the first polyhedra run used (its run folder's copy, named in
+    its params.json), its name and descriptors beside the published ranges."""
+    from shapes.report import study_section
+
+    for r in runs.get("polyhedra", []):
+        folder = os.path.dirname(r.get("dump") or "")
+        pj = os.path.join(folder, "params.json")
+        if os.path.exists(pj):
+            with open(pj) as fh:
+                return study_section(os.path.join(folder, json.load(fh).get("library", "shapes.h5")), out)
+    return []
 
 
 def _fmt(x, digits=2):
