@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 
@@ -26,6 +27,12 @@ def main(argv=None):
     if args.cmd == "build":
         if args.n < 1:
             print("shapes: error: --n must be at least 1", file=sys.stderr)
+            return 2
+        folder = os.path.dirname(os.path.abspath(args.out))
+        try:
+            os.makedirs(folder, exist_ok=True)      # --out may name a folder that does not exist yet
+        except OSError as exc:
+            print(f"shapes: error: cannot make the folder of --out {args.out}: {exc.strerror}", file=sys.stderr)
             return 2
         t0 = time.perf_counter()
         recipe = Recipe()
