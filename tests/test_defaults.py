@@ -221,3 +221,18 @@ def test_the_core_hours_the_docs_quote():
     paper = estimate(resolve("paper", "polyhedra"))["core_hours"]
     assert f"about **{paper:.0f} core-hours per S1 seed**" in scenes
     assert math.isclose(round(paper * (0.34 + 0.66 / 64)), 28)
+
+
+def test_the_scene_parameters_the_docs_quote():
+    from yade_scripts.parameters import PARAMETERS
+
+    d = {q.name: q.default for q in PARAMETERS}
+    scenes = " ".join(text("docs/scenes.md").split())
+    assert f"`iso_tolerance` ({d['iso_tolerance']:.0%})".replace("%", " %") in scenes
+    assert f"the unbalanced force below {d['unbalanced_tolerance']:g}" in scenes
+    assert f"ε1 = `final_strain` ({d['final_strain']:g})" in scenes
+    assert f"`initial_fraction` of the grains themselves ({d['initial_fraction']:g})" in scenes
+    assert f"(I_c = {d['compaction_inertial_number']:g})" in scenes
+    assert f"every `checkpoint_seconds` of wall time (default {d['checkpoint_seconds']:g};" in scenes
+    assert d["wall_friction"] == 0.0 and d["friction"] == 0.5 and "friction 0.5 between particles and 0 with the walls" in scenes
+    assert f"margin `verlet_skin` × mean d = {d['verlet_skin']:g} d" in " ".join(text("docs/kernel.md").split())
