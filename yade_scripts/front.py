@@ -104,8 +104,8 @@ PLANS["timestep"] = {
                   for seed in (1, 2, 3) for s in TIMESTEP_SAFETIES],
     "spheres": [],
 }
-# The front around the default preset (docs/front.md, "The front at the
-# default"): kappa = 3000, S1 at I = 5e-3 with 200 grains, S2 at I = 1e-3
+# The front around the default preset (docs/front.md; measured: docs/measurements.md,
+# "The front at the default"): kappa = 3000, S1 at I = 5e-3 with 200 grains, S2 at I = 1e-3
 # with 1000 spheres, 3 paired seeds per point. A kappa sweep 300, 1000, 3000,
 # 10 000 at the default I, an I sweep at kappa = 3000 (S1 2.5e-3 to 2e-2, S2
 # 5e-4 to 5e-3) and one corner per sample. "reference" is each sample's default point, the
