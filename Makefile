@@ -19,7 +19,7 @@ SHAPES ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study results system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
@@ -55,7 +55,8 @@ docs: venv
 	$(PY) -m sphinx -E -W -q -b html docs runs/docs/html
 	@echo "docs: runs/docs/html/index.html"
 
-# The fast subset (no YADE, nothing slow): about a minute, for the edit-test loop.
+# The fast subset (no YADE, nothing slow): about 400 tests in 1 to 2 minutes on 2
+# quiet cores, for the edit-test loop.
 test-fast: venv kernel
 	$(PY) -m pytest -q -m "not yade and not slow"
 
@@ -75,6 +76,14 @@ shapes: $(SHAPES_LIB)
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES))
+
+# The committed results of the default study, from STUDY's report (after
+# make study): reference_data/default-study.json, the README's claims table
+# (generated from that file; tests/test_results.py holds the two together)
+# and the README's figure.
+results: venv
+	$(PY) -m postproc.cli results $(STUDY) --out reference_data/default-study.json \
+	    --readme README.md --figure docs/figures/study-qp.png
 
 # Speed against error: a yade-batch sweep over kappa and I around the
 # default preset, 3 seeds per point, S1 200 grains and S2 1000 spheres

@@ -1,7 +1,7 @@
 """Throughput of the postproc analysis on synthetic contacts.
 
 Run by hand (``make bench`` or ``python benchmarks/bench_analysis.py``);
-the figures go into the README. Timings are the best of ``--repeat`` runs.
+the figures go into docs/measurements.md. Timings are the best of ``--repeat`` runs.
 
 Measured paths, for N contacts already in memory:
   core      stress (sum f (x) l / V) + the four tensor anisotropies + sff,

@@ -2,7 +2,7 @@
 the former layer-by-layer peeling, on the two worst and usual cases.
 
 Run by hand: ``python benchmarks/bench_rattlers.py [--old-chain]``; the
-figures go into the README. Times are medians of ``--repeat`` runs.
+figures go into docs/measurements.md. Times are medians of ``--repeat`` runs.
 
   chain    a 300 000-contact chain (300 001 particles): its 2-core is empty
            and the peeling is 150 000 layers deep, the case that took the

@@ -7,6 +7,12 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import apigen  # noqa: E402  (docs/apigen.py: the API page from the packages)
+
+# the API page lists every module of the packages: regenerated before each build
+apigen.write()
 
 project = "Grain shape and the strength of ballast"
 extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon"]

@@ -71,8 +71,9 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     """summary.csv columns of the contact types of a polyhedra snapshot
     (seed figs. 10-12 and claim 6), and the class of each contact.
 
-    ``classifier`` a :class:`postproc.classify.Classifier` (footprint groups
-    by default, or the angular criterion). ``sel`` (C,) bool marks the
+    ``classifier`` a :class:`postproc.classify.Classifier` under any of its
+    four criteria (:func:`postproc.classify.classifier_for` makes the point
+    count by default). ``sel`` (C,) bool marks the
     force-bearing particle-particle contacts, over which proportions, force
     ratios, force shares and the signed branch fabric of each class are
     taken (:func:`postproc.pertype.class_statistics`). Partial stresses are
@@ -169,9 +170,11 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     compression axis (it equals q once sigma_1 lies along the axis).
 
     ``tables``: the contact-type criterion of polyhedra snapshots, a
-    :class:`postproc.classify.Classifier` (footprint groups by default), or
-    the angular :class:`postproc.contacttypes.ShapeTables` (angular criterion
-    at ``theta_deg``); None for no contact types.
+    :class:`postproc.classify.Classifier` under any of its four criteria
+    (:func:`postproc.classify.classifier_for` makes the point count by
+    default), or the angular :class:`postproc.contacttypes.ShapeTables`
+    (angular criterion at ``theta_deg``); None (the default) for no contact
+    types.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
     cs = resolve(snap)

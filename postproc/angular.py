@@ -33,7 +33,36 @@ from .axes import axis_vector
 
 @dataclass
 class AngularFunctions:
-    """Binned angular functions; every array is (nbins,) unless said."""
+    """Binned angular functions of one contact set (:func:`angular_functions`).
+
+    theta is measured from the compression axis and folded onto
+    [0, pi/2]; every array is (nbins,) unless said.
+
+    Attributes
+    ----------
+    edges : ndarray, shape (nbins + 1,)
+        rad, the theta edges on [0, pi/2].
+    solid_angle : ndarray
+        sr, the solid angle of each bin, both caps: 4 pi (cos theta_k -
+        cos theta_{k+1}).
+    count : ndarray
+        Contacts per bin.
+    P, P_se : ndarray
+        1/sr, the density of branch directions P_Omega(theta) (seed eq. 4;
+        its integral over the sphere is 1) and its standard error.
+    l_mean, l_se : ndarray
+        m, the mean branch length <l>(theta) and its standard error.
+    fn_mean, fn_se : ndarray
+        N, the mean radial force <f_n'>(theta) = <f . n'>, positive in
+        compression, and its standard error.
+    ft_mean, ft_se : ndarray
+        N, the mean orthoradial force <f_t'>(theta) = <f . t'>, t' pointing
+        towards the axis in the meridian plane (positive where friction
+        resists the axial compression), and its standard error.
+    p2_avg, s2_avg : ndarray
+        The bin averages of 3 cos^2 theta - 1 and sin 2 theta over the bin's
+        solid angle (the fits' regressors).
+    """
 
     edges: np.ndarray        # (nbins + 1,) rad, theta edges on [0, pi/2]
     solid_angle: np.ndarray  # sr, both caps
@@ -51,7 +80,7 @@ class AngularFunctions:
 
     @property
     def centers(self):
-        """(nbins,) rad, bin centres."""
+        """ndarray, shape (nbins,): rad, the bin centres."""
         return 0.5 * (self.edges[1:] + self.edges[:-1])
 
 
@@ -72,14 +101,28 @@ def angular_functions(branch, force, axis=2, nbins=18):
 
     Parameters
     ----------
-    branch : (N, 3) m, branch vectors l = x2 - x1.
-    force : (N, 3) N, forces on id2 by id1.
-    axis : compression axis (0/1/2, 'x'/'y'/'z' or a 3-vector).
-    nbins : number of equal theta bins on [0, pi/2] (default 18, i.e. 5 deg).
+    branch : array_like, shape (N, 3)
+        m, branch vectors l = x2 - x1 (none of zero length).
+    force : array_like, shape (N, 3)
+        N, the contact forces on id2 by id1.
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis: 0, 1, 2, 'x', 'y', 'z' or a vector (default z).
+    nbins : int, optional
+        Number of equal theta bins on [0, pi/2] (default 18, i.e. 5 deg).
 
     Returns
     -------
     AngularFunctions
+        P_Omega, <l>, <f_n'>, <f_t'> per bin with their standard errors.
+
+    Examples
+    --------
+    >>> from postproc.angular import angular_functions
+    >>> from postproc.synthetic import harmonic_contacts
+    >>> c = harmonic_contacts(100_000, 0.3, 0.1, 0.5, 0.2, seed=3)
+    >>> af = angular_functions(c.branch, c.force, "z", nbins=9)
+    >>> print(len(af.P), int(af.count.sum()), round(float((af.P * af.solid_angle).sum()), 12))
+    9 100000 1.0
     """
     L = np.asarray(branch, float)
     f = np.asarray(force, float)
@@ -132,9 +175,33 @@ def _wls(X, y, se, w):
 def fit_harmonics(af: AngularFunctions):
     """Least-squares fits of the seed's harmonic forms (eqs. 5-7).
 
-    Returns dict with ``a_fit, a_l_fit, a_n_fit, a_t_fit`` (dimensionless),
-    ``l0_fit`` (m), ``f0_fit`` (N) and standard errors ``*_fit_se``. Bins
-    with fewer than 2 contacts are left out of the mean-value fits.
+    P_Omega = (1 + a P2)/(4 pi), <l> = l0 (1 + a_l P2), <f_n'> = f0 (1 + a_n
+    P2), <f_t'> = f0 a_t sin 2theta, P2 = 3 cos^2 theta - 1, weighted by the
+    bins' solid angles, with the bin averages of P2 and sin 2theta as
+    regressors (module docstring).
+
+    Parameters
+    ----------
+    af : AngularFunctions
+        The binned functions of :func:`angular_functions`.
+
+    Returns
+    -------
+    dict
+        ``a_fit``, ``a_l_fit``, ``a_n_fit``, ``a_t_fit`` (dimensionless, the
+        signs of :func:`postproc.fabric.anisotropies`), ``l0_fit`` (m),
+        ``f0_fit`` (N) and the standard errors ``*_fit_se``. Bins with fewer
+        than 2 contacts are left out of the mean-value fits; with fewer than
+        2 such bins those values are NaN.
+
+    Examples
+    --------
+    >>> from postproc.angular import angular_functions, fit_harmonics
+    >>> from postproc.synthetic import harmonic_contacts
+    >>> c = harmonic_contacts(100_000, 0.3, 0.1, 0.5, 0.2, seed=3)
+    >>> fits = fit_harmonics(angular_functions(c.branch, c.force, "z", nbins=9))
+    >>> print([round(fits[k], 2) for k in ("a_fit", "a_l_fit", "a_n_fit", "a_t_fit")])
+    [0.3, 0.1, 0.5, 0.2]
     """
     ok = af.count >= 2
     w = af.solid_angle
@@ -168,9 +235,30 @@ def fit_harmonics(af: AngularFunctions):
 
 
 def harmonic_curves(fits, theta):
-    """The fitted functions of eqs. 5-7 at angles ``theta`` (rad, any shape).
+    """The fitted functions of eqs. 5-7 at given angles.
 
-    Returns dict with ``P`` (1/sr), ``l`` (m), ``fn`` and ``ft`` (N).
+    Parameters
+    ----------
+    fits : dict
+        ``a_fit``, ``a_l_fit``, ``a_n_fit``, ``a_t_fit``, ``l0_fit`` (m),
+        ``f0_fit`` (N), as :func:`fit_harmonics` returns them.
+    theta : array_like
+        rad, angles from the compression axis, any shape.
+
+    Returns
+    -------
+    dict
+        ``P`` (1/sr), ``l`` (m), ``fn`` and ``ft`` (N), each of the shape of
+        ``theta``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.angular import harmonic_curves
+    >>> fits = {"a_fit": 0.3, "a_l_fit": 0.0, "a_n_fit": 0.5, "a_t_fit": 0.2, "l0_fit": 0.03, "f0_fit": 10.0}
+    >>> curves = harmonic_curves(fits, np.array([0.0, np.pi / 4, np.pi / 2]))
+    >>> print(np.round(curves["fn"], 6), np.round(curves["ft"], 6))
+    [20.  12.5  5. ] [0. 2. 0.]
     """
     theta = np.asarray(theta, float)
     p2 = 3 * np.cos(theta) ** 2 - 1

@@ -1,6 +1,6 @@
 """Contact classes of a snapshot under one chosen criterion.
 
-Three criteria, one interface (:class:`Classifier`):
+Four criteria, one interface (:class:`Classifier`):
 
 * ``"points"`` (the default): LMGC90's count of contact points
   (:mod:`postproc.contactpoints`): the vertices of each side within the

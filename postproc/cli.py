@@ -72,6 +72,12 @@ def main(argv=None):
     rp = sub.add_parser("report", help="the study report (figures, published values, the six claims)")
     rp.add_argument("study", help="study folder written by 'make study' (holds manifest.json)")
     rp.add_argument("--out", help="report folder (default STUDY/report)")
+    rs = sub.add_parser("results", help="the study's results as one JSON file, and the README's claims table")
+    rs.add_argument("study", help="study folder with its report (report/claims.csv, comparison.csv, claim6.csv)")
+    rs.add_argument("--out", required=True, help="results file to write (make results: "
+                                                 "reference_data/default-study.json)")
+    rs.add_argument("--readme", help="README whose generated claims table is rewritten from the results")
+    rs.add_argument("--figure", help="copy the report's q/p figure (report/fig_qp.png) there")
     sz = sub.add_parser("size-front", help="the study's quantities against the number of grains (several studies)")
     sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
     sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
@@ -94,6 +100,19 @@ def main(argv=None):
             return 2
         path = build_report(args.study, args.out)
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
+        return 0
+    if args.cmd == "results":
+        from .study.results import update_readme, write_results
+
+        try:
+            results = write_results(args.study, args.out, figure=args.figure)
+            changed = update_readme(args.readme, results) if args.readme else False
+        except (InputError, OSError) as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(f"postproc: results written to {args.out}"
+              + (f"; {args.readme}'s claims table {'rewritten' if changed else 'unchanged'}" if args.readme else "")
+              + (f"; figure {args.figure}" if args.figure else ""), file=sys.stderr)
         return 0
     if args.cmd == "size-front":
         from .study.sizefront import write_size_front

@@ -14,10 +14,32 @@ _SCAN_LAYERS = 1
 
 
 def force_bearing(force):
-    """(C,) bool: contacts whose force magnitude exceeds FORCE_FLOOR times the
-    largest one (relative, so it does not depend on the force unit).
+    """The force-bearing contacts.
 
-    force : (C, 3) N.
+    Parameters
+    ----------
+    force : array_like, shape (C, 3)
+        N (any unit), the contact forces.
+
+    Returns
+    -------
+    ndarray of bool, shape (C,)
+        True where |f| exceeds FORCE_FLOOR (1e-9) times the largest |f| of
+        the set (relative, so it does not depend on the force unit); all
+        False when every force is zero.
+
+    Examples
+    --------
+    Particles 0, 1, 2 in a triangle, 0 and 1 also on a wall (the wall
+    contact of 1 unloaded), particle 3 hanging on 2 alone:
+
+    >>> import numpy as np
+    >>> from postproc.coordination import coordination, force_bearing, rattlers
+    >>> i1 = np.array([0, 1, 2, 3, 0, 1])
+    >>> i2 = np.array([1, 2, 0, 2, -1, -1])
+    >>> force = np.array([[1.0, 0.0, 0.0]] * 5 + [[0.0, 0.0, 0.0]])
+    >>> print(force_bearing(force))
+    [ True  True  True  True  True False]
     """
     mag = np.sqrt(np.einsum("ij,ij->i", force, force))
     top = mag.max() if len(mag) else 0.0
@@ -25,23 +47,47 @@ def force_bearing(force):
 
 
 def rattlers(i1, i2, bearing, n_particles, min_contacts=2):
-    """(B,) bool: particles with fewer than ``min_contacts`` force-bearing
-    contacts (walls count), removed iteratively: a particle that drops below
-    the threshold once its rattling neighbours are discarded is a rattler too.
-    The non-rattlers are the ``min_contacts``-core of the contact graph
-    (every particle in it keeps at least ``min_contacts`` bearing contacts
-    with other core particles or walls); the core is unique, so the order of
-    removal does not matter.
+    """The rattlers: particles with fewer than ``min_contacts``
+    force-bearing contacts (walls count), removed iteratively.
 
-    O(B + C): ``_SCAN_LAYERS`` whole-array peeling pass (it finds the
-    particles with too few contacts, and ends there when there are none),
-    then a queue over the adjacency of what is left, in which each contact
-    is seen once from each side. (Peeling pass after pass cost B x depth: 436 s for
-    a 300 000-contact chain.)
+    A particle that drops below the threshold once its rattling neighbours
+    are discarded is a rattler too: the non-rattlers are the
+    ``min_contacts``-core of the contact graph (every particle in it keeps
+    at least ``min_contacts`` bearing contacts with other core particles or
+    walls); the core is unique, so the order of removal does not matter.
+    O(B + C): ``_SCAN_LAYERS`` whole-array peeling pass, then a queue over
+    the adjacency of what is left, in which each contact is seen once from
+    each side.
 
-    i1, i2 : (C,) int, particle rows of the two sides (-1 for a wall).
-    bearing : (C,) bool, force-bearing contacts.
-    n_particles : int, B. min_contacts : int, k of the k-core (2 by default).
+    Parameters
+    ----------
+    i1, i2 : array_like of int, shape (C,)
+        The particle rows (0 .. B-1) of the two sides of each contact; -1
+        for a wall.
+    bearing : array_like of bool, shape (C,)
+        The force-bearing contacts (:func:`force_bearing`).
+    n_particles : int
+        B, the number of particles.
+    min_contacts : int, optional
+        k of the k-core (default 2).
+
+    Returns
+    -------
+    ndarray of bool, shape (B,)
+        True for the rattlers.
+
+    Examples
+    --------
+    Particles 0, 1, 2 in a triangle, 0 and 1 also on a wall (the wall
+    contact of 1 unloaded), particle 3 hanging on 2 alone:
+
+    >>> import numpy as np
+    >>> from postproc.coordination import coordination, force_bearing, rattlers
+    >>> i1 = np.array([0, 1, 2, 3, 0, 1])
+    >>> i2 = np.array([1, 2, 0, 2, -1, -1])
+    >>> force = np.array([[1.0, 0.0, 0.0]] * 5 + [[0.0, 0.0, 0.0]])
+    >>> print(rattlers(i1, i2, force_bearing(force), 4))
+    [False False False  True]
     """
     i1 = np.asarray(i1, np.int64)
     i2 = np.asarray(i2, np.int64)
@@ -91,13 +137,39 @@ def rattlers(i1, i2, bearing, n_particles, min_contacts=2):
 def coordination(i1, i2, force, n_particles):
     """Coordination numbers of the particle-particle contact network.
 
-    z = 2 N_c / N_p with N_c the force-bearing particle-particle contacts.
+    z = 2 N_c / N_p with N_c the force-bearing particle-particle contacts:
     ``z`` counts only non-rattlers and the contacts between them (the usual
-    definition); ``z_all`` counts every particle and contact.
+    definition), ``z_all`` every particle and contact. Every contact counts
+    once, so a face-face pair dumped as one contact counts once.
 
-    i1, i2 : (C,) int particle rows (-1 for walls); force : (C, 3) N.
+    Parameters
+    ----------
+    i1, i2 : array_like of int, shape (C,)
+        The particle rows of the two sides (-1 for a wall).
+    force : array_like, shape (C, 3)
+        N, the contact forces.
+    n_particles : int
+        The number of particles.
 
-    Returns dict with ``z``, ``z_all``, ``n_rattlers``, ``n_bearing``.
+    Returns
+    -------
+    dict
+        ``z`` and ``z_all`` (float), ``n_rattlers`` (int, :func:`rattlers`),
+        ``n_bearing`` (int, force-bearing particle-particle contacts).
+
+    Examples
+    --------
+    Particles 0, 1, 2 in a triangle, 0 and 1 also on a wall (the wall
+    contact of 1 unloaded), particle 3 hanging on 2 alone:
+
+    >>> import numpy as np
+    >>> from postproc.coordination import coordination, force_bearing, rattlers
+    >>> i1 = np.array([0, 1, 2, 3, 0, 1])
+    >>> i2 = np.array([1, 2, 0, 2, -1, -1])
+    >>> force = np.array([[1.0, 0.0, 0.0]] * 5 + [[0.0, 0.0, 0.0]])
+    >>> r = coordination(i1, i2, force, 4)
+    >>> print(float(r["z"]), float(r["z_all"]), r["n_rattlers"], r["n_bearing"])
+    2.0 2.0 1 4
     """
     bearing = force_bearing(force)
     pp = (np.asarray(i1) >= 0) & (np.asarray(i2) >= 0)
@@ -114,6 +186,23 @@ def coordination(i1, i2, force, n_particles):
 
 
 def fraction_below_mean(normal_force):
-    """Fraction of the given normal forces (N, any unit) below their mean."""
+    """The fraction of the given normal forces below their mean.
+
+    Parameters
+    ----------
+    normal_force : array_like, shape (C,)
+        N (any unit), normal forces, compression positive.
+
+    Returns
+    -------
+    float
+        The fraction of the values strictly below their mean; NaN for none.
+
+    Examples
+    --------
+    >>> from postproc.coordination import fraction_below_mean
+    >>> print(round(fraction_below_mean([1.0, 1.0, 4.0]), 4))
+    0.6667
+    """
     fn = np.asarray(normal_force, float)
     return float(np.mean(fn < fn.mean())) if len(fn) else np.nan

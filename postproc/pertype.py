@@ -15,12 +15,40 @@ from .stress import contact_stress
 
 
 def partial_stresses(labels, force, arm, volume):
-    """{label: (3, 3) Pa} partial stresses sigma_k = (1/V) sum_{c in k} f (x) arm
-    (seed eq. 2 restricted to class k). They sum to the total stress over all
-    contacts exactly (up to round-off), because every contact has one label.
+    """Partial stresses of the contact classes (seed eq. 2 restricted to a
+    class).
 
-    labels (C,); force (C, 3) N; arm (C, 3) m (branch vector for particle
-    pairs, particle-to-contact-point for walls); volume m^3.
+    sigma_k = (1/V) sum_{c in k} f (x) arm. They sum to the total stress over
+    all contacts exactly (up to round-off), because every contact has one
+    label.
+
+    Parameters
+    ----------
+    labels : array_like, shape (C,)
+        The class of each contact (e.g. "VF", "FF", "wall").
+    force : ndarray, shape (C, 3)
+        N, forces on id2 by id1.
+    arm : ndarray, shape (C, 3)
+        m, the branch vector for particle pairs, particle to contact point
+        for walls (:class:`~postproc.contactset.ContactSet`).
+    volume : float
+        m^3.
+
+    Returns
+    -------
+    dict
+        {label: ndarray (3, 3)}, Pa, compression positive.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.pertype import partial_stresses, stress_contributions
+    >>> labels = np.array(["FF", "VF", "wall"])
+    >>> force = np.array([[0, 0, 10.0], [3.0, 0, 0], [0, 0, -2.0]])
+    >>> arm = np.array([[0, 0, 0.05], [0.05, 0, 0], [0, 0, -0.02]])
+    >>> parts = partial_stresses(labels, force, arm, 1e-3)
+    >>> print({k: np.round(np.diag(v), 9).tolist() for k, v in parts.items()})
+    {'FF': [0.0, 0.0, 500.0], 'VF': [150.0, 0.0, 0.0], 'wall': [0.0, 0.0, 40.0]}
     """
     labels = np.asarray(labels)
     return {str(k): contact_stress(force[labels == k], arm[labels == k], volume)
@@ -28,18 +56,45 @@ def partial_stresses(labels, force, arm, volume):
 
 
 def class_statistics(labels, normal_force, branch, axis=2):
-    """Per-class statistics of the contacts given (typically the force-bearing
-    particle-particle contacts of one snapshot).
+    """Per-class statistics of the contacts given (typically the
+    force-bearing particle-particle contacts of one snapshot).
 
-    labels (C,); normal_force (C,) N, magnitudes; branch (C, 3) m.
-    Returns {label: dict} with ``fraction`` (of the contacts given),
-    ``mean_force_ratio`` (class mean of f_n over the overall mean),
-    ``force_share`` (class sum of f_n over the total), ``fabric_a`` (signed
-    branch-vector anisotropy of the class, (5/2)(F_3 - F_1) with F the
-    class fabric tensor: negative when the class leans towards the lateral,
-    minor principal directions) and its standard error ``fabric_a_se``
-    (sqrt(5/4 / n) would hold for an isotropic class; here the sample
-    variance of (15/4)(u^2 - 1/3) is used).
+    Parameters
+    ----------
+    labels : array_like, shape (C,)
+        The class of each contact.
+    normal_force : array_like, shape (C,)
+        N, normal force magnitudes.
+    branch : array_like, shape (C, 3)
+        m, branch vectors (their sign does not matter).
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis (default z).
+
+    Returns
+    -------
+    dict
+        {label: dict} with ``count``; ``fraction`` (of the contacts given);
+        ``mean_force_ratio`` (class mean of f_n over the overall mean);
+        ``force_share`` (class sum of f_n over the total); ``fabric_a``, the
+        class's signed branch-vector anisotropy (5/2)(F_3 - F_1) with F the
+        class fabric tensor, i.e. the mean of (5/4)(3 u^2 - 1), u the cosine
+        to the axis: positive when the class leans towards the compression
+        axis, negative towards the lateral (minor principal) directions;
+        ``fabric_a_se`` its standard error (sample variance over the class;
+        NaN for one contact).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.pertype import class_statistics
+    >>> labels = np.array(["FF", "VF", "VF", "EE"])
+    >>> fn = np.array([10.0, 3.0, 4.0, 1.0])
+    >>> branch = np.array([[0, 0, 0.05], [0.05, 0, 0], [0, 0.05, 0], [0.03, 0, 0.04]])
+    >>> st = class_statistics(labels, fn, branch)
+    >>> print(st["FF"]["fabric_a"], st["VF"]["fabric_a"], round(st["EE"]["fabric_a"], 4))
+    2.5 -1.25 1.15
+    >>> print(round(st["FF"]["mean_force_ratio"], 4), st["VF"]["fraction"])
+    2.2222 0.5
     """
     labels = np.asarray(labels)
     fn = np.asarray(normal_force, float)
@@ -64,13 +119,38 @@ def class_statistics(labels, normal_force, branch, axis=2):
 
 
 def stress_contributions(partials, p, axis=2):
-    """{label: (p_k / p, q_k / p)}: the share of the mean stress and of the
-    signed axial deviator q = (sigma_aa - mean lateral)/3 carried by each
-    class. Both are linear in the stress, so over all classes they sum to 1
-    and to the total q_axial / p (seed eq. 2 split by class).
+    """The shares of the mean stress and of the axial deviator carried by each
+    class (seed eq. 2 split by class).
 
-    partials {label: (3, 3) Pa} from :func:`partial_stresses`; p the total
-    mean stress, Pa, compression positive; axis the compression axis.
+    Parameters
+    ----------
+    partials : dict
+        {label: ndarray (3, 3)}, Pa, from :func:`partial_stresses`.
+    p : float
+        Pa, the total mean stress, compression positive.
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis (default z).
+
+    Returns
+    -------
+    dict
+        {label: (p_k / p, q_k / p)} with q_k = (sigma_aa - mean lateral)/3 of
+        the class's partial stress, signed (negative where the class resists
+        the lateral stress more than the axial one). Both are linear in the
+        stress, so over all classes they sum to 1 and to the total
+        q_axial / p; (NaN, NaN) when p is 0.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.pertype import partial_stresses, stress_contributions
+    >>> labels = np.array(["FF", "VF", "wall"])
+    >>> force = np.array([[0, 0, 10.0], [3.0, 0, 0], [0, 0, -2.0]])
+    >>> arm = np.array([[0, 0, 0.05], [0.05, 0, 0], [0, 0, -0.02]])
+    >>> parts = partial_stresses(labels, force, arm, 1e-3)
+    >>> p = np.trace(sum(parts.values())) / 3
+    >>> print({k: tuple(round(float(x), 4) for x in v) for k, v in stress_contributions(parts, p).items()})
+    {'FF': (0.7246, 0.7246), 'VF': (0.2174, -0.1087), 'wall': (0.058, 0.058)}
     """
     e = axis_vector(axis)
     out = {}

@@ -1,4 +1,10 @@
-"""Figures of the seed paper from analysis results (matplotlib, Agg)."""
+"""Figures of the seed paper from analysis results (matplotlib, Agg).
+
+Every function writes one PNG to ``path`` and returns the matplotlib
+``Figure`` it drew (closed: detached from pyplot, its axes, lines, labels
+and texts still readable), so that tests and callers can check what was
+plotted; :func:`plot_size_front` returns the plotted series instead.
+"""
 from __future__ import annotations
 
 import numpy as np
@@ -42,6 +48,7 @@ def plot_qp_sff(df, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_anisotropies(df, path, label=""):
@@ -65,6 +72,7 @@ def plot_anisotropies(df, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_polar(af: AngularFunctions, fits, path, label=""):
@@ -94,6 +102,7 @@ def plot_polar(af: AngularFunctions, fits, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 _CLASS_COLOURS = {"all": "k", "simple": "C0", "double": "C1", "triple": "C3", "VV": "C7",
@@ -126,6 +135,7 @@ def plot_force_pdf(pdf, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_networks(df, path, label=""):
@@ -151,6 +161,7 @@ def plot_networks(df, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def _criterion(df):
@@ -200,6 +211,7 @@ def plot_contact_types(df, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 TYPE_COLOURS = {"simple": "#4477aa", "double": "#ee6677", "triple": "#228833"}
@@ -257,6 +269,7 @@ def plot_slabs(panels, path, colour="force", title=""):
         fig.suptitle(title, fontsize=10)
     fig.savefig(path, dpi=130, bbox_inches="tight")
     plt.close(fig)
+    return fig
 
 
 _SAMPLE_STYLE = {"polyhedra": ("C3", "S1 polyhedra"), "spheres": ("C0", "S2 spheres")}
@@ -285,6 +298,7 @@ def plot_report_qp(summaries, published, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def _mean_over_seeds(frames, col):
@@ -323,6 +337,7 @@ def plot_report_anisotropies(summaries, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_report_sff(summaries, path):
@@ -345,6 +360,7 @@ def plot_report_sff(summaries, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_report_polar(polar, path):
@@ -369,6 +385,7 @@ def plot_report_polar(polar, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_front(runs, path):
@@ -402,6 +419,7 @@ def plot_front(runs, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 TREND_PANELS = (("qp_plateau", "q/p plateau"), ("qp_peak", "q/p peak"), ("psi_peak_deg", "dilatancy angle at peak (deg)"),
@@ -465,6 +483,7 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+    return fig
 
 
 #: the size front's panels: quantity (the count's columns without their
@@ -552,6 +571,7 @@ def plot_analysis_front(table, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_group_polar(data, caption, path):
@@ -575,6 +595,7 @@ def plot_group_polar(data, caption, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_footprint(extents, threshold, path, label=""):
@@ -600,6 +621,7 @@ def plot_footprint(extents, threshold, path, label=""):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig
 
 
 def plot_leanings_by_tolerance(tolerances, leanings, path, criterion="", unit=""):
@@ -642,3 +664,4 @@ def plot_leanings_by_tolerance(tolerances, leanings, path, criterion="", unit=""
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
+    return fig

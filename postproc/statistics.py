@@ -29,11 +29,30 @@ N_BATCHES = 4
 
 
 def steady_indices(eps_q, stage, start=STEADY_START):
-    """(K,) int rows of the steady part of shear: stage "shear" and
-    eps_q >= start * max eps_q over the shear rows. Falls back to the last
-    row alone when strains are unknown or fewer than 2 rows qualify.
+    """The rows of the steady part of shear.
 
-    eps_q (S,) strain (compression positive); stage (S,) str.
+    Parameters
+    ----------
+    eps_q : array_like, shape (S,)
+        The deviatoric strain of each snapshot (compression positive).
+    stage : array_like of str, shape (S,)
+        The stage of each snapshot ("isotropic", "shear", ...).
+    start : float, optional
+        The steady part starts at ``start`` x the largest eps_q of shear
+        (default STEADY_START, 0.5).
+
+    Returns
+    -------
+    ndarray of int, shape (K,)
+        The rows of stage "shear" with eps_q >= start x max eps_q over the
+        shear rows; the last row alone when strains are unknown or fewer
+        than 2 rows qualify.
+
+    Examples
+    --------
+    >>> from postproc.statistics import steady_indices
+    >>> print(steady_indices([0, 0.05, 0.1, 0.2, 0.3], ["isotropic"] + ["shear"] * 4))
+    [3 4]
     """
     eq = np.asarray(eps_q, float)
     stage = np.asarray(stage).astype(str)
@@ -48,7 +67,22 @@ def steady_indices(eps_q, stage, start=STEADY_START):
 
 @dataclass
 class Estimate:
-    """A mean with its standard error and degrees of freedom."""
+    """A mean with its standard error and degrees of freedom.
+
+    Attributes
+    ----------
+    mean : float
+        The estimate, in the quantity's units.
+    se : float
+        Its standard error (NaN when there is none).
+    dof : float
+        The degrees of freedom of its Student's t interval.
+    n : int
+        The seeds, or the batches of one seed, behind it.
+    method : str
+        "seeds", "batch means (one seed)", "one value" or "no values"
+        (differences of two methods join them with " / ").
+    """
 
     mean: float
     se: float
@@ -57,7 +91,18 @@ class Estimate:
     method: str         # "seeds", "batch means (one seed)" or "one value"
 
     def ci(self, level=0.95):
-        """(low, high) Student's t interval; (nan, nan) without an error."""
+        """The Student's t confidence interval.
+
+        Parameters
+        ----------
+        level : float, optional
+            The confidence level (default 0.95).
+
+        Returns
+        -------
+        tuple of float
+            (low, high), mean -+ t_dof x se; (nan, nan) without an error.
+        """
         if not (np.isfinite(self.se) and self.dof >= 1):
             return (np.nan, np.nan)
 
@@ -65,6 +110,19 @@ class Estimate:
         return (self.mean - h, self.mean + h)
 
     def text(self, digits=2):
+        """The estimate as the tables print it.
+
+        Parameters
+        ----------
+        digits : int, optional
+            Decimals (default 2).
+
+        Returns
+        -------
+        str
+            "mean [low, high]" with its 95 % interval, the mean alone
+            without an interval, "n/a" without a value.
+        """
         lo, hi = self.ci()
         if np.isfinite(lo):
             return f"{self.mean:.{digits}f} [{lo:.{digits}f}, {hi:.{digits}f}]"
@@ -72,12 +130,30 @@ class Estimate:
 
 
 def plateau_estimate(series):
-    """Estimate of the plateau mean from a list with one (K_s,) array of
-    steady-state values per seed (NaNs dropped).
+    """The plateau mean with its 95 % interval, over seeds or batches.
 
-    Two or more seeds with values: t over the per-seed means. One seed:
-    batch means over N_BATCHES consecutive batches (fewer when K < 8, at
-    least 2 values per batch); a single value gives no interval.
+    Parameters
+    ----------
+    series : list of array_like
+        One (K_s,) array of steady-state values per seed (NaNs dropped).
+
+    Returns
+    -------
+    Estimate
+        Two or more seeds with values: the mean of the per-seed means, with
+        Student's t over them (n - 1 degrees of freedom), method "seeds".
+        One seed: batch means over N_BATCHES consecutive batches (fewer when
+        K < 8, at least 2 values per batch), method "batch means (one
+        seed)"; a single value gives no interval ("one value").
+
+    Examples
+    --------
+    >>> from postproc.statistics import plateau_estimate
+    >>> e = plateau_estimate([[0.42, 0.44], [0.45, 0.47], [0.40, 0.42]])
+    >>> print(e.text(), e.method, e.n)
+    0.43 [0.37, 0.50] seeds 3
+    >>> print(plateau_estimate([[0.40, 0.42, 0.44, 0.46, 0.41, 0.43, 0.45, 0.47]]).text())
+    0.43 [0.40, 0.47]
     """
     series = [np.asarray(s, float) for s in series]
     series = [s[np.isfinite(s)] for s in series]
@@ -98,7 +174,27 @@ def plateau_estimate(series):
 
 
 def difference(e1, e2):
-    """Estimate of e1 - e2 for independent estimates (Welch)."""
+    """The difference of two independent estimates (Welch).
+
+    Parameters
+    ----------
+    e1, e2 : Estimate
+        Independent estimates of quantities in the same unit.
+
+    Returns
+    -------
+    Estimate
+        e1 - e2 with the standard error sqrt(se1^2 + se2^2) and the
+        Welch-Satterthwaite degrees of freedom.
+
+    Examples
+    --------
+    >>> from postproc.statistics import difference, plateau_estimate
+    >>> s1 = plateau_estimate([[0.42, 0.44], [0.45, 0.47], [0.40, 0.42]])
+    >>> s2 = plateau_estimate([[0.25], [0.26], [0.24]])
+    >>> print(difference(s1, s2).text())
+    0.18 [0.13, 0.24]
+    """
     se = np.hypot(e1.se, e2.se)
     if not np.isfinite(se) or se == 0:
         dof = 0
@@ -110,14 +206,22 @@ def difference(e1, e2):
 
 @dataclass
 class SeedScatter:
-    """How the plateau means of an ensemble scatter, in the quantity's units.
+    """How the plateau means of an ensemble scatter, in the quantity's units
+    (:func:`seed_scatter`).
 
-    ``between``: standard deviation of the per-seed plateau means (ddof 1);
-    ``within``: root mean square over seeds of each seed's batch-means
-    standard error (the noise of a plateau mean from its own window);
-    ``persistent``: sqrt(max(between² - within², 0)), the part of a seed's
-    plateau set by its sample, which a longer window would not remove;
-    ``n``: seeds with values."""
+    Attributes
+    ----------
+    between : float
+        The standard deviation of the per-seed plateau means (ddof 1).
+    within : float
+        The root mean square over seeds of each seed's batch-means standard
+        error: the noise of a plateau mean from its own window.
+    persistent : float
+        sqrt(max(between^2 - within^2, 0)), the part of a seed's plateau set
+        by its sample, which a longer window would not remove.
+    n : int
+        The seeds with values.
+    """
 
     between: float
     within: float
@@ -127,15 +231,35 @@ class SeedScatter:
 
 def seed_scatter(series):
     """Split the scatter of per-seed plateau means into window noise and a
-    persistent, per-sample part (one-way random effects, method of moments:
-    var(seed means) = persistent² + mean of the seeds' squared standard errors).
+    persistent, per-sample part.
 
-    series: list with one (K_s,) array of steady-state values per seed (NaNs
-    dropped); each seed's standard error is the batch-means one of
-    :func:`plateau_estimate` (N_BATCHES batches), which underestimates the
-    noise when the series is correlated over more than a batch, so
-    ``persistent`` is an upper bound in that case. Needs 2 seeds with at
-    least 4 values each; otherwise every field is NaN.
+    One-way random effects, method of moments: var(seed means) =
+    persistent^2 + the mean of the seeds' squared standard errors. Each
+    seed's standard error is the batch-means one of :func:`plateau_estimate`
+    (N_BATCHES batches), which underestimates the noise when the series is
+    correlated over more than a batch, so ``persistent`` is an upper bound
+    in that case.
+
+    Parameters
+    ----------
+    series : list of array_like
+        One (K_s,) array of steady-state values per seed (NaNs dropped).
+
+    Returns
+    -------
+    SeedScatter
+        Every field NaN unless 2 seeds have at least 4 values each.
+
+    Examples
+    --------
+    Three seeds whose plateaus differ by far more than their windows' noise:
+
+    >>> import numpy as np
+    >>> from postproc.statistics import seed_scatter
+    >>> base = np.array([0.0, 0.02, 0.01, 0.03])
+    >>> sc = seed_scatter([0.1 + base, 0.2 + base, 0.15 + base])
+    >>> print(round(sc.between, 4), round(sc.within, 4), round(sc.persistent, 4), sc.n)
+    0.05 0.005 0.0497 3
     """
     series = [np.asarray(s, float) for s in series]
     series = [s[np.isfinite(s)] for s in series]
@@ -150,12 +274,38 @@ def seed_scatter(series):
 
 
 def seeds_needed(mean, sd, level=0.95, n_max=100000):
-    """Smallest number of seeds n >= 2 whose Student's t interval,
-    mean ± t_{n-1} sd / sqrt(n), excludes 0, for an ensemble whose seed
-    means have this ``mean`` and standard deviation ``sd`` (same units).
-    A planning figure: the next seeds move both. Returns None when
-    mean == 0 or n would exceed n_max; 1 is never returned (one seed gives
-    no interval over seeds)."""
+    """How many seeds an interval needs to exclude 0: a planning figure.
+
+    Parameters
+    ----------
+    mean : float
+        The mean of the seed means (any unit; its sign does not matter).
+    sd : float
+        Their standard deviation (same unit, >= 0).
+    level : float, optional
+        The confidence level (default 0.95).
+    n_max : int, optional
+        The largest number of seeds considered (default 100 000).
+
+    Returns
+    -------
+    int or None
+        The smallest n >= 2 whose Student's t interval, mean -+ t_{n-1} sd /
+        sqrt(n), excludes 0 (the next seeds move both mean and sd); None
+        when mean == 0 or n would exceed n_max. 1 is never returned: one
+        seed gives no interval over seeds.
+
+    Raises
+    ------
+    ValueError
+        When mean or sd is not finite, or sd < 0.
+
+    Examples
+    --------
+    >>> from postproc.statistics import seeds_needed
+    >>> print(seeds_needed(0.04, 0.066), seeds_needed(0.2, 0.05), seeds_needed(0.0, 0.1))
+    13 3 None
+    """
     mean, sd = abs(float(mean)), float(sd)
     if not (np.isfinite(mean) and np.isfinite(sd)) or sd < 0:
         raise ValueError(f"seeds_needed: mean and sd must be finite and sd >= 0, got {mean}, {sd}")

@@ -12,22 +12,43 @@ from .schema import WALL_ORDER
 
 
 def contact_stress(force, vector, volume):
-    """sigma = (1/V) sum_c f^c (x) v^c (seed eq. 2), compression positive.
+    """The stress tensor of a set of contacts, sigma = (1/V) sum_c f^c (x) v^c
+    (seed eq. 2), compression positive.
 
     Parameters
     ----------
-    force : (C, 3) N, contact force on id2 by id1.
-    vector : (C, 3) m. With the branch vectors l = x2 - x1 of
-        particle-particle contacts this is the branch-vector form; with the
-        lever arms of :class:`~postproc.contactset.ContactSet` (wall contacts
-        included) it is the sum of the particles' internal moments
-        M^i = sum_c f^c (x) (x^c - x^i) (seed eq. 1), with the sign flipped
-        to make compression positive.
-    volume : float, m^3.
+    force : array_like, shape (C, 3)
+        N, the force of each contact on its particle id2 by id1.
+    vector : array_like, shape (C, 3)
+        m. With the branch vectors l = x2 - x1 of particle-particle contacts
+        this is the branch-vector form; with the lever arms of
+        :class:`~postproc.contactset.ContactSet` (wall contacts included) it
+        is the sum of the particles' internal moments
+        M^i = sum_c f^c (x) (x^c - x^i) (seed eq. 1), with the sign flipped to
+        make compression positive.
+    volume : float
+        m^3, the volume of the packing.
 
     Returns
     -------
-    (3, 3) Pa, ``sigma[a, b] = sum_c f_a v_b / V``; not symmetrised.
+    sigma : ndarray, shape (3, 3)
+        Pa, ``sigma[a, b] = sum_c f_a v_b / V``; compression positive; not
+        symmetrised (its antisymmetric part measures the imbalance of
+        moments).
+
+    Examples
+    --------
+    Two contacts of a 1 litre packing, 10 N along z and 4 N along x, each
+    pushing particle id2 away from id1 (compression):
+
+    >>> import numpy as np
+    >>> from postproc.stress import contact_stress
+    >>> force = np.array([[0.0, 0.0, 10.0], [4.0, 0.0, 0.0]])
+    >>> branch = np.array([[0.0, 0.0, 0.05], [0.05, 0.0, 0.0]])
+    >>> print(contact_stress(force, branch, 1e-3))
+    [[200.   0.   0.]
+     [  0.   0.   0.]
+     [  0.   0. 500.]]
     """
     force = np.asarray(force, float)
     vector = np.asarray(vector, float)
@@ -38,18 +59,37 @@ def wall_stress(wall_forces, box_lengths):
     """Stress from the forces on the six walls of a rectangular box.
 
     sigma[a, b] = (F^{b+}_a - F^{b-}_a) / (2 A_b) with A_b the area of the
-    walls normal to axis b, i.e. the mean traction on the two opposite walls.
-    Compression positive.
+    walls normal to axis b: the mean traction on the two opposite walls,
+    compression positive.
 
     Parameters
     ----------
-    wall_forces : (6, 3) N, force on each wall by the particles, walls in the
-        order x-, x+, y-, y+, z-, z+ (``schema.WALL_ORDER``).
-    box_lengths : (3,) m.
+    wall_forces : array_like, shape (6, 3)
+        N, the force on each wall by the particles, walls in the order x-,
+        x+, y-, y+, z-, z+ (``schema.WALL_ORDER``). Particles pressing
+        outward push the x- wall along -x and the x+ wall along +x.
+    box_lengths : array_like, shape (3,)
+        m, the box's lengths along x, y, z.
 
     Returns
     -------
-    (3, 3) Pa.
+    sigma : ndarray, shape (3, 3)
+        Pa, compression positive.
+
+    Examples
+    --------
+    A 0.1 x 0.1 x 0.2 m box whose particles press 5 N on each z wall and
+    2 N on each lateral wall:
+
+    >>> import numpy as np
+    >>> from postproc.stress import wall_stress
+    >>> walls = np.zeros((6, 3))
+    >>> walls[0, 0], walls[1, 0], walls[2, 1], walls[3, 1] = -2.0, 2.0, -2.0, 2.0
+    >>> walls[4, 2], walls[5, 2] = -5.0, 5.0
+    >>> print(wall_stress(walls, [0.1, 0.1, 0.2]))
+    [[100.   0.   0.]
+     [  0. 100.   0.]
+     [  0.   0. 500.]]
     """
     F = np.asarray(wall_forces, float).reshape(len(WALL_ORDER), 3)
     L = np.asarray(box_lengths, float)
@@ -65,20 +105,31 @@ def invariants(sigma, axis=2):
 
     Parameters
     ----------
-    sigma : (3, 3) Pa, compression positive (symmetrised here).
-    axis : int or (3,) unit vector, the compression axis.
+    sigma : array_like, shape (3, 3)
+        Pa, compression positive (symmetrised here).
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis: 0, 1, 2, 'x', 'y', 'z' or a unit vector
+        (default 2, z).
 
     Returns
     -------
-    dict with
-      ``principal`` (3,) Pa, sigma_1 >= sigma_2 >= sigma_3;
-      ``directions`` (3, 3), column k is the direction of sigma_k;
-      ``p`` = (s1 + s2 + s3)/3 and ``q`` = (s1 - s3)/3 (Pa; the factor 1/3 is
-      the seed's convention, which makes q/p = (2/5) sum of anisotropies);
-      ``q_over_p``; ``q_axial`` = (sigma_aa - mean lateral)/3 along the given
-      axis, signed (negative in extension); ``angle_1`` (deg) between the
-      major principal direction and the axis; ``antisymmetry`` =
-      |skew(sigma)| / |sigma| (Frobenius norms).
+    dict
+        ``principal`` : ndarray (3,), Pa, sigma_1 >= sigma_2 >= sigma_3;
+        ``directions`` : ndarray (3, 3), column k the direction of sigma_k;
+        ``p`` = (s1 + s2 + s3)/3 and ``q`` = (s1 - s3)/3, Pa (the factor 1/3
+        is the seed's convention, which makes q/p = (2/5) sum of
+        anisotropies, eq. 8); ``q_over_p``; ``q_axial`` = (sigma_aa - mean
+        lateral)/3 along ``axis``, Pa, signed (negative in extension);
+        ``angle_1``, degrees between the major principal direction and the
+        axis; ``antisymmetry`` = |skew(sigma)| / |sigma| (Frobenius norms).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.stress import invariants
+    >>> inv = invariants(np.diag([100.0, 100.0, 300.0]), axis="z")
+    >>> print(round(inv["p"], 3), round(inv["q"], 3), round(inv["q_over_p"], 3), inv["angle_1"])
+    166.667 66.667 0.4 0.0
     """
     sigma = np.asarray(sigma, float)
     sym = 0.5 * (sigma + sigma.T)
@@ -103,8 +154,26 @@ def invariants(sigma, axis=2):
 
 
 def relative_difference(sigma, reference):
-    """|sigma - reference| / |reference| (Frobenius norms); NaN if either is
-    not finite."""
+    """The relative difference of two stress tensors.
+
+    Parameters
+    ----------
+    sigma, reference : array_like, shape (3, 3)
+        Pa, any common unit.
+
+    Returns
+    -------
+    float
+        |sigma - reference| / |reference| (Frobenius norms), dimensionless;
+        NaN when either is not finite or the reference is zero.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.stress import relative_difference
+    >>> print(round(relative_difference(np.diag([1.0, 1.0, 1.1]), np.eye(3)), 4))
+    0.0577
+    """
     sigma = np.asarray(sigma, float)
     reference = np.asarray(reference, float)
     if not (np.isfinite(sigma).all() and np.isfinite(reference).all()):

@@ -31,6 +31,15 @@ def _err(msg):
     return 2
 
 
+def _make_folder_of(out):
+    """Make the folder of ``--out`` when missing; the error message, or None."""
+    try:
+        os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    except OSError as exc:
+        return f"cannot make the folder of --out {out}: {exc.strerror}"
+    return None
+
+
 def _parser():
     from .meshimport import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
 
@@ -76,6 +85,9 @@ def _build(args):
 
     if args.n < 1:
         return _err("--n must be at least 1")
+    problem = _make_folder_of(args.out)
+    if problem:
+        return _err(problem)
     report = args.report or args.out.rsplit(".", 1)[0] + "-report"
     t0 = time.perf_counter()
     recipe = Recipe()
@@ -142,8 +154,9 @@ def _import(args):
              "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
     spec = {"source": "meshes", "inputs": list(args.paths), "budget": budget.as_dict(),
             "components": bool(args.components)}
-    out_dir = os.path.dirname(os.path.abspath(args.out))
-    os.makedirs(out_dir, exist_ok=True)
+    problem = _make_folder_of(args.out)
+    if problem:
+        return _err(problem)
     write_library(args.out, [g.polyhedron for g in grains], -1, spec, _tolerances(), name=args.name,
                   created_by="python -m shapes import", extra=extra)
     from .library import ShapeLibrary

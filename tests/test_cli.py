@@ -16,7 +16,17 @@ COLUMNS = ("step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l", 
            "a_t_fit", "s_xx", "s_zz", "s_xz")
 
 
-def test_analyze_synthetic_dump(tmp_path):
+def test_analyze_synthetic_dump(tmp_path, monkeypatch):
+    from postproc import plots
+
+    drawn = {}
+    for name in ("plot_qp_sff", "plot_anisotropies", "plot_polar"):
+        def keep(*args, _f=getattr(plots, name), **kw):
+            fig = _f(*args, **kw)
+            png = next(a for a in args if isinstance(a, str) and a.endswith(".png"))
+            drawn[os.path.basename(png)] = fig
+            return fig
+        monkeypatch.setattr(plots, name, keep)
     path = str(tmp_path / "run.h5")
     truths = write_synthetic_dump(path, n_contacts=20_000, n_snapshots=4, seed=1)
     out = tmp_path / "out"
@@ -28,8 +38,17 @@ def test_analyze_synthetic_dump(tmp_path):
     for k in ("a", "a_l", "a_n", "a_t"):
         truth = np.array([t[k] for t in truths])
         assert np.all(np.abs(df[k] - truth) < 5 * df[k + "_se"]), k
+    # every figure written, and what it shows is the summary's numbers
+    assert sorted(drawn) == sorted(FIGURES)
     for fig in FIGURES:
-        assert (out / fig).stat().st_size > 1000
+        with open(out / fig, "rb") as fh:
+            assert fh.read(8) == b"\x89PNG\r\n\x1a\n", fig
+    qp = [ln for ln in drawn["qp_sff.png"].axes[0].get_lines() if ln.get_label() == "q/p (internal moments)"][0]
+    np.testing.assert_allclose(qp.get_xdata(), df["eps_q"])
+    np.testing.assert_allclose(qp.get_ydata(), df["q_over_p"])
+    a_t = [ln for ln in drawn["anisotropies.png"].axes[0].get_lines() if ln.get_label() == "a_t"][0]
+    np.testing.assert_allclose(a_t.get_ydata(), df["a_t"])
+    assert len(drawn["polar_last.png"].axes) == 4
     assert df["eps_q"].iloc[0] == 0 and df["eps_q"].iloc[-1] == pytest.approx(np.log(1 / 0.9))
     assert not (out / "errors.txt").exists()
 

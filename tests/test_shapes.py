@@ -179,3 +179,19 @@ def test_build_command_writes_library_and_report(tmp_path):
     assert len(ShapeLibrary(str(out))) == 24
     for f in ("report.md", "stats.json", "counts.png", "shape_ratios.png", "sheet.png"):
         assert (tmp_path / "rep" / f).stat().st_size > 100
+
+
+def test_build_makes_the_folder_of_its_library(tmp_path, capsys):
+    """``python -m shapes build --out NEW/DIR/LIB.h5`` (docs/shapes.md) makes
+    the missing folders; a folder that cannot be made is one line, exit 2."""
+    from shapes.__main__ import main
+
+    out = tmp_path / "new" / "dir" / "lib.h5"
+    assert main(["build", "--n", "3", "--seed", "2", "--out", str(out)]) == 0
+    assert len(ShapeLibrary(str(out))) == 3
+    assert (tmp_path / "new" / "dir" / "lib-report" / "report.md").exists()
+    capsys.readouterr()
+    (tmp_path / "file").write_text("")
+    assert main(["build", "--n", "3", "--out", str(tmp_path / "file" / "lib.h5")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("shapes: error: cannot make the folder of --out")

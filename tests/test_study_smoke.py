@@ -8,6 +8,7 @@ import shutil
 
 import pandas as pd
 import pytest
+from matplotlib.image import imread
 
 YADE = shutil.which("yade")
 pytestmark = [pytest.mark.yade,
@@ -36,14 +37,41 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     md = (rep / "report.md").read_text()
     assert (rep / "report.html").stat().st_size > 0
     for name in FIGURES:
-        assert (rep / name).stat().st_size > 1000, name
+        image = imread(rep / name)                 # a PNG with something drawn on it
+        assert image.ndim == 3 and image.shape[0] > 200 and image[..., :3].std() > 0.05, name
         assert f"]({name})" in md, name
     claims = pd.read_csv(rep / "claims.csv")
     assert claims["id"].tolist() == [1, 2, 3, 4, 5, 6]
-    assert set(claims["verdict"]) <= {"reproduced", "not reproduced", "inconclusive"}
     assert (claims["basis"] == "seeds").all()
     comp = pd.read_csv(rep / "comparison.csv")
     assert comp["ours"].map(math.isfinite).all() and (comp["interval"] == "seeds").all()
+    # the verdicts are the rules applied to the analyses the manifest lists
+    from postproc.study.claims import NEGLIGIBLE, evaluate
+    from postproc.study.report import _summaries, discover
+
+    again = pd.DataFrame(evaluate(_summaries(discover(str(out)))))
+    assert claims["verdict"].tolist() == again["verdict"].tolist()
+    assert claims["numbers"].tolist() == again["numbers"].tolist()
+    # claim 3 decided again here from the a_l intervals of comparison.csv
+    lo = {s: comp.loc[(comp["quantity"] == "a_l") & (comp["sample"] == s), ["ci_low", "ci_high"]].iloc[0]
+          for s in ("polyhedra", "spheres")}
+    sph = 1 if -NEGLIGIBLE < lo["spheres"]["ci_low"] and lo["spheres"]["ci_high"] < NEGLIGIBLE else \
+        (-1 if lo["spheres"]["ci_low"] > NEGLIGIBLE or lo["spheres"]["ci_high"] < -NEGLIGIBLE else 0)
+    poly = 1 if lo["polyhedra"]["ci_low"] > NEGLIGIBLE or lo["polyhedra"]["ci_high"] < -NEGLIGIBLE else \
+        (-1 if -NEGLIGIBLE < lo["polyhedra"]["ci_low"] and lo["polyhedra"]["ci_high"] < NEGLIGIBLE else 0)
+    expected = "not reproduced" if -1 in (sph, poly) else ("reproduced" if sph == poly == 1 else "inconclusive")
+    assert claims.loc[2, "verdict"] == expected
+    # claim 1 quotes the plateaus of comparison.csv
+    for s in ("polyhedra", "spheres"):
+        q = comp.loc[(comp["quantity"] == "q/p plateau") & (comp["sample"] == s), "ours"].iloc[0]
+        assert f"{s} {q:.2f} [" in claims.loc[0, "numbers"], s
+    # claim 6 by count: both counts at half, nominal and double their parameter;
+    # the point count's nominal row is claim 6 of claims.csv
+    c6 = pd.read_csv(rep / "claim6.csv")
+    assert sorted(zip(c6["count"], c6["factor"])) == sorted((c, f) for c in ("points", "commonplane")
+                                                            for f in (0.5, 1.0, 2.0))
+    assert c6.loc[(c6["count"] == "points") & (c6["factor"] == 1.0), "verdict"].iloc[0] == claims.loc[5, "verdict"]
+    assert (c6["seeds"] == 2).all() and "## Claim 6 by contact count" in md
     assert "Intervals are 95 % over seeds" in md
     manifest = json.loads((out / "manifest.json").read_text())
     assert [r["status"] for s in manifest.values() for r in s] == ["ok"] * 4
@@ -72,7 +100,26 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
     manifest = json.loads((out / "manifest.json").read_text())
     manifest["polyhedra"][1]["status"] = "run failed (3); see polyhedra-ensemble"
     (out / "manifest.json").write_text(json.dumps(manifest))
-    md = open(build_report(str(out), str(out / "report-failed"))).read()
+    from postproc import plots
+
+    drawn = {}
+
+    def keep(summaries, published, path):
+        drawn["qp"] = fig = plot_report_qp(summaries, published, path)
+        return fig
+
+    plot_report_qp = plots.plot_report_qp
+    plots.plot_report_qp = keep
+    try:
+        md = open(build_report(str(out), str(out / "report-failed"))).read()
+    finally:
+        plots.plot_report_qp = plot_report_qp
+    # q/p of the two sphere seeds and the one polyhedra seed left, as analysed
+    lines = [ln for ln in drawn["qp"].axes[0].get_lines() if ln.get_linestyle() == "-"]
+    assert len(lines) == 3
+    s1 = pd.read_csv(out / manifest["polyhedra"][0]["analysis"] / "summary.csv")
+    s1 = s1[s1["stage"] == "shear"]
+    assert list(lines[0].get_ydata()) == pytest.approx(s1["q_over_p"].tolist())
     assert "S1 polyhedra seed 2: run failed (3)" in md
     comp = pd.read_csv(out / "report-failed" / "comparison.csv")
     # one seed left: no interval over seeds (tiny runs have 2 steady snapshots: "one value")

@@ -1,7 +1,10 @@
 """Speed against error: a yade-batch sweep over stiffness, inertial number,
 particle count (and, in the older ``quick`` plan, shape detail), for S1 and S2.
 
-    python -m yade_scripts.front --plan kernel --out runs/front [--jobs 2]
+    python -m yade_scripts.front --plan default --out runs/front [--jobs 2]
+
+``make front`` runs the ``default`` plan (the sweep around the default
+preset), also this command's default (:data:`DEFAULT_PLAN`).
 
 Each sample gets one run folder ``OUT/<sample>`` (one scene, one table):
 every table line overrides ``kappa``, ``inertial_number``, ``n_particles``,
@@ -25,6 +28,9 @@ import sys
 
 from .generate import DEFAULT_LIBRARY, generate
 from .parameters import ConfigError, coerce
+
+#: the plan ``make front`` and this command run unless told otherwise
+DEFAULT_PLAN = "default"
 
 # plan: {sample: [(description, overrides)]}; the first line is the reference
 PLANS = {
@@ -98,8 +104,8 @@ PLANS["timestep"] = {
                   for seed in (1, 2, 3) for s in TIMESTEP_SAFETIES],
     "spheres": [],
 }
-# The front around the default preset (docs/front.md, "The front at the
-# default"): kappa = 3000, S1 at I = 5e-3 with 200 grains, S2 at I = 1e-3
+# The front around the default preset (docs/front.md; measured: docs/measurements.md,
+# "The front at the default"): kappa = 3000, S1 at I = 5e-3 with 200 grains, S2 at I = 1e-3
 # with 1000 spheres, 3 paired seeds per point. A kappa sweep 300, 1000, 3000,
 # 10 000 at the default I, an I sweep at kappa = 3000 (S1 2.5e-3 to 2e-2, S2
 # 5e-4 to 5e-3) and one corner per sample. "reference" is each sample's default point, the
@@ -219,7 +225,7 @@ def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra"))
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.front", description=__doc__.splitlines()[0])
-    ap.add_argument("--plan", default="kernel", help=f"one of {sorted(PLANS)}")
+    ap.add_argument("--plan", default=DEFAULT_PLAN, help=f"one of {sorted(PLANS)} (default {DEFAULT_PLAN})")
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--library")

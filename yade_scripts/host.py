@@ -1,7 +1,8 @@
 """Where a run ran: the host facts that can change its numbers bit for bit.
 
 A run repeats step for step only on hosts whose CPUs make glibc's maths
-library pick the same code (docs/scenes.md, "Preparation": switching off
+library pick the same code (docs/scenes.md, "Preparation"; measured, on
+docs/measurements.md, "Preparation": switching off
 glibc's AVX2/FMA code moved the isotropic state by 50 steps; numpy's vector
 dispatch, the kernel's thread count and the venv's numpy/scipy did not), and a
 packing's dynamics amplify a last-bit difference. The scene records these

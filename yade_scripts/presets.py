@@ -2,12 +2,12 @@
 
 ``tiny``     the test suite: a few dozen particles, a few percent of strain,
              well under 3 minutes per sample on this machine.
-``default``  the main job of ``make study`` (see docs/scenes.md for its cost and
-             how it was chosen): 1000 grains per sample at kappa = 3000,
-             I = 5e-3, prepared as published: solid fraction about 0.56-0.6
-             after isotropic compaction for both samples, reached with the
-             interparticle friction of the compaction (``compaction_friction``:
-             0.5 for polyhedra, 0 for spheres); friction 0.5 for both in
+``default``  the main job of ``make study`` (docs/scenes.md gives its cost,
+             docs/measurements.md how it was chosen): 1000 grains per sample at kappa = 3000,
+             I = 5e-3, prepared toward the published solid fraction of about
+             0.6 with the interparticle friction of the compaction
+             (``compaction_friction``: 0.5 for polyhedra, which reach about
+             0.57, 0 for spheres, about 0.60); friction 0.5 for both in
              shear; the spheres are sheared at the paper's I = 1e-3 (their
              q/p is rate-sensitive, and they are cheap). The compaction starts from the grains placed with their
              exact shapes at a solid fraction of 0.25 (``placement``) and
@@ -15,7 +15,8 @@
              start (docs/scenes.md, "Preparation"). The polyhedra step at
              0.45 of the critical time step (``safety``, the parameter's
              default): 2/3 of the steps of 0.3, with no change the time-step
-             sweep could tell from chance (docs/front.md, "The time step");
+             sweep could tell from chance (docs/front.md, "The time step",
+             and docs/measurements.md);
              the spheres, cheap and not swept, keep 0.3 in every preset.
 ``soft``     the earlier default: kappa = 300, I = 2e-2, bounding-sphere
              placement, I_c = 5e-2, time step 0.3 of the critical one (ten
@@ -29,7 +30,7 @@
 ``loose``    the default with both samples compacted at friction 0.5.
 ``dense``    the default with both samples compacted frictionless.
 ``small``    the default with 200 polyhedra and 200 spheres: the small end
-             of the size front (docs/front.md, "The size front").
+             of the size front (``make size-front``).
 ``intermediate``  the default with 5000 polyhedra and 5000 spheres (the
              same kappa, I and preparation; S2 at the same N as S1, so the
              two samples compare as at 1000): the large end of the size
@@ -65,9 +66,10 @@ PRESETS = {
         "polyhedra": {"n_particles": 20, "initial_fraction": 0.12},
         "spheres": {"n_particles": 40},
     },
-    # solid fraction after compaction about 0.6 for both, as published:
-    # polyhedra compacted with mu = 0.5 (0.587 at 1000 grains, 0.602 at
-    # 3000; frictionless gives 0.71), spheres frictionless (0.61)
+    # toward the published solid fraction of about 0.6: polyhedra compacted
+    # with mu = 0.5 (about 0.57 from the grains placed with their exact
+    # shapes; frictionless they reach about 0.71), spheres frictionless
+    # (about 0.60)
     "default": {
         "common": {},
         "polyhedra": {},
@@ -88,7 +90,7 @@ PRESETS = {
               "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3}},
     "intermediate": {"common": {"n_particles": 5000}, "polyhedra": {},
                      "spheres": {"compaction_friction": 0.0, "inertial_number": 1e-3}},
-    # prepared like the default (solid fraction about 0.6 in both): the
+    # prepared like the default: the
     # polyhedra compacted at mu = 0.5 (frictionless they reach 0.71), the
     # spheres frictionless. The polyhedra step at 0.45 of the critical one,
     # as in the default.

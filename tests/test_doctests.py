@@ -1,0 +1,66 @@
+"""The analysis library's docstrings: every public function and class of
+the core modules has numpydoc sections (Parameters and Returns, or
+Attributes for a data class), and their Examples run and give what they
+show (doctest)."""
+import doctest
+import importlib
+import inspect
+import io
+
+import pytest
+
+#: the analysis library's modules whose public API is documented in numpydoc
+NUMPYDOC = ("stress", "fabric", "angular", "coordination", "networks", "pertype", "strain", "statistics")
+#: the core modules whose every public function shows a runnable example
+EXAMPLES = ("stress", "fabric", "angular", "strain", "coordination", "networks", "pertype", "statistics")
+
+
+def public(module):
+    mod = importlib.import_module(f"postproc.{module}")
+    for name, obj in vars(mod).items():
+        if name.startswith("_") or getattr(obj, "__module__", None) != mod.__name__:
+            continue
+        if inspect.isfunction(obj) or inspect.isclass(obj):
+            yield name, obj
+
+
+def sections(doc):
+    """The numpydoc section titles of a docstring (a title line underlined
+    by dashes of the same length)."""
+    lines = inspect.cleandoc(doc or "").split("\n")
+    return {a.strip() for a, b in zip(lines, lines[1:]) if b.strip() and set(b.strip()) == {"-"}
+            and len(b.strip()) == len(a.strip())}
+
+
+@pytest.mark.parametrize("module", NUMPYDOC)
+def test_every_public_definition_has_numpydoc_sections(module):
+    missing = []
+    for name, obj in public(module):
+        have = sections(obj.__doc__)
+        need = {"Attributes"} if inspect.isclass(obj) else {"Parameters", "Returns"}
+        if inspect.isfunction(obj) and not inspect.signature(obj).parameters:
+            need = {"Returns"}
+        if not need <= have:
+            missing.append(f"{name}: {sorted(need - have)}")
+        if inspect.isclass(obj):
+            for mname, meth in vars(obj).items():
+                if not mname.startswith("_") and inspect.isfunction(meth) and "Returns" not in sections(meth.__doc__):
+                    missing.append(f"{name}.{mname}: ['Returns']")
+    assert not missing, "without numpydoc sections: " + "; ".join(missing)
+
+
+@pytest.mark.parametrize("module", EXAMPLES)
+def test_the_examples_run(module):
+    mod = importlib.import_module(f"postproc.{module}")
+    finder = doctest.DocTestFinder()
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    out = io.StringIO()
+    tested = set()
+    for test in finder.find(mod, mod.__name__):
+        if test.examples:
+            tested.add(test.name.split(".")[2] if test.name.count(".") >= 2 else test.name)
+            runner.run(test, out=out.write)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, out.getvalue()
+    functions = {name for name, obj in public(module) if inspect.isfunction(obj)}
+    assert functions <= tested, f"public functions without an example: {sorted(functions - tested)}"
