@@ -14,7 +14,7 @@ ENSEMBLE ?= 3
 JOBS ?= 2
 JOB_THREADS ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
-# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
+# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
 .PHONY: test test-fast docs study system venv bench clean-venv shapes front kernel size-front

@@ -5,7 +5,7 @@
 
 writes ``slurm.sh`` next to ``table.txt``: one array task per table line.
 Task k makes the folder ``<description of line k>/`` (links to the scene,
-``lib/`` and the shape library), runs ``yade -x triaxial.py`` there with
+``pkg/`` and the shape library), runs ``yade -x triaxial.py`` there with
 that line's parameters (``YADE_BATCH=table.txt:LINE``, as yade-batch does),
 and keeps its log (``triaxial.log``) and dump in that folder. A task whose
 dump is already complete exits at once, so the array can be resubmitted
@@ -110,7 +110,7 @@ def write_slurm(folder, params, rows, cpus=2, time="24:00:00", partition=None, n
     lines = [str(k) for k, _ in rows]
     outs = [os.path.basename(dump_of(folder, r)) for _, r in rows]
     est = estimate(params)
-    links = ["triaxial.py", "lib"] + ([params["library"]] if params["sample"] == "polyhedra" else [])
+    links = ["triaxial.py", "pkg"] + ([params["library"]] if params["sample"] == "polyhedra" else [])
     part = f"#SBATCH --partition={partition}\n" if partition else ""
     text = f"""#!/bin/bash
 #SBATCH --job-name={name or os.path.basename(os.path.abspath(folder))}
