@@ -168,8 +168,10 @@ class Attempt:
 
     # ------------------------------------------------------------ the clock and the history
     def start(self):
-        """This attempt's clock starts now."""
+        """This attempt's clock starts now; the progress record says so (a
+        scheduler may send SIGTERM from now on: it is handled)."""
         self.t0 = self.last_checkpoint = time.time()
+        self.progress(step=self.O.iter, stage="starting", seconds_left=None)
 
     def wall_seconds(self):
         """Wall time of the run so far (s), earlier attempts included."""

@@ -16,17 +16,17 @@ Run it with ``cd FOLDER && yade -x triaxial.py`` or, every line of the
 table, ``python -m yade_scripts.batch FOLDER --jobs 2`` (or
 ``yade-batch -j 2 table.txt triaxial.py``). With ``--slurm`` also
 ``slurm.sh``, a SLURM job array with one task per table line
-(:mod:`yade_scripts.slurm`): ``cd FOLDER && sbatch slurm.sh``.
+(:mod:`yade_scripts.slurm`): ``sbatch FOLDER/slurm.sh`` from any folder.
 """
 from __future__ import annotations
 
 import argparse
 import json
 import os
-import re
 import shutil
 import sys
 
+from . import slurm
 from .parameters import SAMPLES, ConfigError, scene_with_block
 from .presets import resolve
 
@@ -106,23 +106,19 @@ def main(argv=None):
     ap.add_argument("--library", help="shape library (default runs/shapes/library.h5)")
     ap.add_argument("--slurm", action="store_true",
                     help="also write slurm.sh: a SLURM job array, one task per table line")
-    ap.add_argument("--slurm-cpus", type=int, default=2, help="cores per array task (default 2)")
-    ap.add_argument("--slurm-time", default="24:00:00", help="time limit per task (default 24:00:00)")
-    ap.add_argument("--slurm-partition", help="SLURM partition (default: the cluster's)")
+    slurm.add_options(ap)
     args = ap.parse_args(argv)
     try:
-        if args.slurm_cpus < 1 or not re.fullmatch(r"(\d+-)?\d+(:\d\d){0,2}", args.slurm_time):
-            raise ConfigError("--slurm-cpus must be >= 1 and --slurm-time like 24:00:00 or 7-00:00:00")
+        if args.slurm:
+            slurm.check_options(**slurm.options_of(args))
         p = generate(args.out, args.preset, args.sample, parse_overrides(args.set), args.seeds, args.library)
         if args.slurm:
             from .batch import read_table
-            from .slurm import estimate, write_slurm
 
-            script = write_slurm(args.out, p, read_table(args.out), args.slurm_cpus,
-                                 args.slurm_time, args.slurm_partition)
+            script = slurm.write_slurm(args.out, **slurm.options_of(args))
             print(f"generate: {script}: {len(read_table(args.out))} array task(s), about "
-                  f"{estimate(p)['core_hours']:.3g} core-hours each; submit with: "
-                  f"cd {args.out} && sbatch slurm.sh", file=sys.stderr)
+                  f"{slurm.estimate(p)['core_hours']:.3g} core-hours each; submit from any folder with: "
+                  f"sbatch {script}", file=sys.stderr)
     except ConfigError as exc:
         print(f"generate: error: {exc}", file=sys.stderr)
         return 2

@@ -7,8 +7,9 @@ A job is one run (:class:`Job`): a line of a generated run folder's
 ``table.txt`` (``YADE_BATCH=table.txt:LINE yade -jT -n -x triaxial.py``, as
 yade-batch runs it) or the folder's own scene (``line=None``). Every way of
 running runs goes through here: the study's single seeds
-(:func:`yade_scripts.study.run_samples`) and ensembles, and sweeps
-(:func:`yade_scripts.batch.run_batch`).
+(:func:`yade_scripts.study.run_samples`) and ensembles, sweeps
+(:func:`yade_scripts.batch.run_batch`) and SLURM array tasks
+(:mod:`yade_scripts.task`).
 
 * **Every attempt kept.** Each attempt appends to the job's log (a header
   line ``==== attempt K ...`` first) and to the run's record
@@ -35,6 +36,9 @@ running runs goes through here: the study's single seeds
 * The scene's lines are relayed with the sample in front: every line of a
   job with ``echo_all`` (a study's single seeds), else each running job's
   newest line every PROGRESS_SECONDS, when it changed.
+* ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
+  SIGTERM (it checkpoints and exits 75) as soon as its scene has started
+  (its SIGTERM handler installed), no job starts any more.
 
 Every attempt (job, start, end, threads, exit) goes to ``record`` (JSON),
 and :func:`idle_core_seconds` gives the idle core-time of the schedule:
@@ -67,6 +71,10 @@ POLL_SECONDS = 1.0
 PROGRESS_SECONDS = 20.0
 #: the prefix of the scene's own lines in its log
 SCENE = "triaxial.py: "
+#: a stop asked for while a run is still starting (YADE loading, before the
+#: scene's SIGTERM handler) waits until the scene's progress record says it
+#: has started, this long at most
+STARTING_SECONDS = 60.0
 
 
 def yade_env():
@@ -88,7 +96,8 @@ class Job:
     the order), ``widen`` (True when more threads speed it up), ``tag`` (the
     sample, for the messages), ``threads`` (threads it starts on), ``log``
     (default ``triaxial.py.<description>.log`` in the folder, as yade-batch
-    names it), ``echo_all`` (relay every line of the scene). After the
+    names it), ``echo_all`` (relay every line of the scene), ``table`` (the
+    table ``line`` is in, default the folder's ``table.txt``). After the
     pool: ``exits`` the exit codes of its attempts (stops asked for left
     out), ``verdict`` the rule's last :class:`~yade_scripts.runstate.Verdict`."""
     folder: str
@@ -101,6 +110,7 @@ class Job:
     threads: int = 1
     log: str = ""
     echo_all: bool = False
+    table: str = "table.txt"
     exits: list = field(default_factory=list)
     verdict: object = None
 
@@ -183,10 +193,28 @@ class _Running:
     def __init__(self, job, threads, proc, number, offset):
         self.job, self.threads, self.proc, self.number = job, threads, proc, number
         self.started, self.start_utc = time.time(), now_utc()
-        self.requested = False       # SIGTERM sent by us
+        self.requested = False       # a stop asked for by us (SIGTERM sent, or due once it has started)
+        self.term_sent = False
         self.widening = False        # ... to resume it on more threads
         self.offset = offset         # bytes of the log relayed so far
         self.newest = None           # the newest scene line not relayed yet (echo_all off)
+
+    def started_scene(self):
+        """True once the scene has started this attempt (its progress record
+        is newer than the process): it then handles SIGTERM."""
+        try:
+            return os.path.getmtime(RunFiles(self.job.dump).progress) >= self.started - 1.0
+        except OSError:
+            return False
+
+    def stop(self, now, at_once=False):
+        """Send SIGTERM ``at_once``, or once the scene has started, or
+        STARTING_SECONDS after the stop was asked for (a scene that writes
+        no progress record)."""
+        if self.term_sent or not (at_once or self.started_scene() or now - self.requested >= STARTING_SECONDS):
+            return
+        self.term_sent = True
+        self.proc.send_signal(signal.SIGTERM)
 
     def new_lines(self):
         """The scene's lines (prefix removed) appended to the log since the
@@ -203,11 +231,11 @@ class _Running:
                 if x.startswith(SCENE)]
 
 
-def _launch(job, threads, yade, number):
+def _launch(job, threads, yade, number, note):
     """Start an attempt: the header line in the job's log, then YADE."""
     env = yade_env()
     if job.line is not None:
-        env["YADE_BATCH"] = f"table.txt:{job.line}"
+        env["YADE_BATCH"] = f"{job.table}:{job.line}"
     env["DISPLAY"] = ""
     where = checkpoint_position(job.dump)
     how = f"resumes from its checkpoint at step {where[0]} ({where[1]})" if where else "starts"
@@ -215,27 +243,33 @@ def _launch(job, threads, yade, number):
     offset = os.path.getsize(job.log) if os.path.exists(job.log) else 0
     with open(job.log, "a") as log:
         log.write(f"==== attempt {number} of {job.description}: {how}; {now_utc()} on {platform.node()}, "
-                  f"{' '.join(os.path.basename(c) if k == 0 else c for k, c in enumerate(cmd))} ====\n")
+                  f"{' '.join(os.path.basename(c) if k == 0 else c for k, c in enumerate(cmd))}"
+                  f"{''.join(f', {k} {v}' for k, v in (note or {}).items())} ====\n")
         log.flush()
         proc = subprocess.Popen(cmd, cwd=job.folder, env=env, stdout=log, stderr=subprocess.STDOUT,
                                 stdin=subprocess.DEVNULL)
     return proc, offset
 
 
-def run_pool(jobs, cores, record=None, echo=print, yade=None, max_resumes=MAX_RESUMES):
+def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
+             max_resumes=MAX_RESUMES):
     """Run ``jobs`` (:class:`Job`) on ``cores`` cores (module docstring).
 
     Returns {description: status}: 0 done or complete already; the exit
-    code of a failed run; "no complete dump" when it exited 0 without one.
-    Each job's ``exits`` lists the exit codes of its attempts
+    code of a failed run; "no complete dump" when it exited 0 without one;
+    "stopped" when ``stopping()`` stopped it (resumable) or it never
+    started. Each job's ``exits`` lists the exit codes of its attempts
     (stops asked for left out) and ``verdict`` the rule's last word.
     ``record``: JSON file of every attempt and the schedule's
-    :func:`summary`, rewritten as the schedule goes. ``yade``: the executable (default: yade on the PATH)."""
+    :func:`summary`, rewritten as the schedule goes. ``note``: {key:
+    value} added to each attempt's header and record (a SLURM job id).
+    ``yade``: the executable (default: yade on the PATH)."""
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
+    stopping = stopping or (lambda: False)
     status, waiting = {}, []
     for job in order(jobs):
         if complete(job.dump):
@@ -249,7 +283,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, max_resumes=MAX_RE
         waiting.append(job)
     attempts, running = [], {}      # description -> _Running
     t0 = time.time()
-    next_relay = t0 + PROGRESS_SECONDS
+    next_relay, stop_sent = t0 + PROGRESS_SECONDS, False
 
     def write_record():
         if record:
@@ -260,25 +294,38 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, max_resumes=MAX_RE
 
     def launch(job, threads, why="started"):
         number = len(read_attempts(job.dump)) + 1
-        proc, offset = _launch(job, threads, yade, number)
+        proc, offset = _launch(job, threads, yade, number, note)
         running[job.description] = _Running(job, threads, proc, number, offset)
         echo(f"{job.name} {why} on {threads} thread(s)")
 
     while waiting or running:
+        if stopping() and not stop_sent:
+            stop_sent = True
+            for r in running.values():
+                r.requested = r.requested or time.time()
+            for job in waiting:
+                status[job.description] = "stopped"
+                echo(f"{job.name}: not started (stopping)")
+            waiting = []
+            if running:
+                echo(f"[pool] stopping: SIGTERM to {len(running)} run(s), each writes a checkpoint")
         busy = sum(r.threads for r in running.values())
         while waiting and (busy + waiting[0].threads <= cores or not running):
             job = waiting.pop(0)
             launch(job, job.threads)
             busy += job.threads
-        choice = widen_choice(
+        choice = None if stop_sent else widen_choice(
             cores - busy, len(waiting), [(r.job, r.threads, r.started) for r in running.values() if not r.requested],
             time.time(), {d: time_left(r.job.dump) for d, r in running.items()})
         if choice is not None:
             job, threads = choice
             r = running[job.description]
-            r.requested, r.widening = True, threads        # the cores are promised to it
-            r.proc.send_signal(signal.SIGTERM)
+            r.requested, r.widening = time.time(), threads        # the cores are promised to it
+            r.stop(time.time(), at_once=True)                     # it has run WIDEN_AFTER_SECONDS: started
             echo(f"{job.name}: a core is free, stopping it to resume on {threads} threads")
+        for r in running.values():
+            if r.requested:
+                r.stop(time.time())
         time.sleep(POLL_SECONDS)
         relay = time.time() >= next_relay
         if relay:
@@ -305,13 +352,13 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, max_resumes=MAX_RE
             attempts.append({"job": d, "tag": job.tag, "start": r.started - t0, "end": end - t0,
                              "threads": r.threads, "exit": code, "widening": bool(r.widening)})
             write_record()
-            v = judge(code, job.dump, resumes=sum(1 for c in job.exits if c != 0), requested=r.requested,
+            v = judge(code, job.dump, resumes=sum(1 for c in job.exits if c != 0), requested=bool(r.requested),
                       max_resumes=max_resumes)
             job.verdict = v
             record_attempt(job.dump, attempt=r.number, start=r.start_utc, seconds=round(end - r.started, 3),
-                           threads=r.threads, exit=code, requested=r.requested, action=v.action, reason=v.reason,
-                           log=os.path.basename(job.log), host=platform.node())
-            if r.widening and v.action == "resume":
+                           threads=r.threads, exit=code, requested=bool(r.requested), action=v.action, reason=v.reason,
+                           log=os.path.basename(job.log), host=platform.node(), **(note or {}))
+            if r.widening and v.action == "resume" and not stop_sent:
                 launch(job, r.widening, why="resumed")
                 continue
             if not r.requested:
@@ -319,9 +366,12 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, max_resumes=MAX_RE
             if v.action == "done":
                 status[d] = 0
                 echo(f"{job.name} done in {end - r.started:.0f} s")
-            elif v.action == "resume":
+            elif v.action == "resume" and not stop_sent:
                 echo(f"{job.name}: {v.reason}")
                 launch(job, r.threads, why="resumed")
+            elif v.action == "resume":
+                status[d] = "stopped"
+                echo(f"{job.name}: {v.reason}")
             else:
                 status[d] = "no complete dump" if code == 0 else code
                 echo(f"{job.name} FAILED ({v.reason}; see {job.log})")

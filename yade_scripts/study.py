@@ -187,9 +187,12 @@ def partial_progress(dump):
             "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
 
 
-def analyse_and_report(out, runs, attempts=None):
+def analyse_and_report(out, runs, attempts=None, unfinished=None):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
+    ``unfinished`` {sample: [manifest entry]}: runs that are not to be
+    analysed (:func:`collect`'s unfinished and invalid lines), listed after
+    the analysed ones with their status.
 
     A failed run whose dump got past the start of the steady state (two
     shear snapshots or more with eps_1 >= STEADY_START x final_strain, see
@@ -252,6 +255,8 @@ def analyse_and_report(out, runs, attempts=None):
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
                                 "analysis": os.path.relpath(analysis, out),
                                 "info": os.path.relpath(info, out), "status": why, **extra})
+    for s, entries in (unfinished or {}).items():
+        manifest.setdefault(s, []).extend(entries)
     with open(os.path.join(out, "manifest.json"), "w") as fh:
         json.dump(manifest, fh, indent=1)
     path = build_report(out)
@@ -268,12 +273,20 @@ def unusable_samples(out):
 
 def collect(folder):
     """Analyse and report whatever has finished in the generated run folders
-    at or below ``folder`` (each with a yade-batch ``table.txt``; dumps in
-    the line's own folder, as the SLURM array of ``generate --slurm``
-    writes them, or next to the table, as yade-batch does). Writes
-    FOLDER/manifest.json and FOLDER/report/. Returns (runs analysed as
-    {sample: [(label, dump, 0)]}, lines not finished, failures)."""
-    from .batch import dump_of, read_table
+    at or below ``folder`` (each with a ``table.txt``; a line's dump in the
+    line's own folder ``<description>/``, as a SLURM array task writes it,
+    or next to the table, as the study and sweeps do), and say what every
+    other line is: resumable at step N, failed (why), unfinished, not
+    started, or an invalid line (:func:`yade_scripts.batch.table_lines`:
+    named, never blocking the other lines or arrays). Writes
+    FOLDER/manifest.json (every line of every table) and FOLDER/report/.
+
+    Returns (runs analysed as {sample: [(label, dump, 0)]}, lines not
+    finished as ["<folder>/<description> (<state>)"], failures of the
+    analysis, {table folder: command that resubmits its unfinished lines}).
+    Raises ConfigError when no line has finished."""
+    from .batch import dump_of, table_lines
+    from .runstate import state_of
 
     if not os.path.isdir(folder):
         raise ConfigError(f"{folder}: no such folder")
@@ -282,31 +295,67 @@ def collect(folder):
         if os.path.exists(os.path.join(folder, d, "table.txt")))
     if not tables:
         raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
-    runs, pending = {}, []
+    runs, others, pending, resubmit = {}, {}, [], {}
     for t in tables:
+        prefix = f"{os.path.basename(t)} " if len(tables) > 1 else ""
         try:
             with open(os.path.join(t, "params.json")) as fh:
                 sample = json.load(fh)["sample"]
-        except (OSError, ValueError, KeyError):
-            raise ConfigError(f"{t}: params.json missing or without 'sample'") from None
-        for _, r in read_table(t):
-            d = r["description"]
-            own = os.path.join(t, d, os.path.basename(dump_of(t, r)))
-            dump = own if os.path.exists(own) or not os.path.exists(dump_of(t, r)) else dump_of(t, r)
-            label = f"seed {r['seed']}" if "seed" in r else d
-            if len(tables) > 1:
-                label = f"{os.path.basename(t)} {label}"
-            if complete(dump):
-                runs.setdefault(sample, []).append((label, dump, 0))
+            lines = table_lines(t)
+        except (OSError, ValueError, KeyError, ConfigError) as exc:
+            why = str(exc) if isinstance(exc, ConfigError) else f"{t}: params.json missing or without 'sample'"
+            pending.append(f"{os.path.relpath(t, folder)} (invalid run folder: {why})")
+            others.setdefault("unknown", []).append({"label": prefix.strip() or os.path.basename(t), "dump": None,
+                                                     "status": f"invalid run folder: {why}"})
+            continue
+        todo = []
+        for line in lines:
+            label = prefix + (f"seed {line.row['seed']}" if "seed" in line.row and not line.error
+                              else line.description)
+            where = {"table": os.path.relpath(os.path.join(t, "table.txt"), folder), "line": line.number,
+                     "task": line.task}
+            if line.error:
+                st_detail, dump = f"invalid line: {line.error}", None
             else:
-                pending.append(f"{os.path.relpath(os.path.join(t, d), folder)} "
-                               f"({'unfinished' if os.path.exists(dump) else 'not started'})")
+                own = os.path.join(t, line.description)
+                dump = (os.path.join(own, os.path.basename(dump_of(t, line.row))) if os.path.isdir(own)
+                        else dump_of(t, line.row))
+                st = state_of(dump)
+                if st.finished:
+                    runs.setdefault(sample, []).append((label, dump, 0))
+                    continue
+                st_detail = st.detail
+                todo.append(line)
+            pending.append(f"{os.path.relpath(os.path.join(t, line.description), folder)} ({st_detail})")
+            others.setdefault(sample, []).append({"label": label, "dump": dump and os.path.relpath(dump, folder),
+                                                  "status": st_detail, **where})
+        name = os.path.basename(os.path.abspath(t))
+        slurm_sh = os.path.join(os.path.abspath(t), "slurm.sh")
+
+        def command(ls):
+            if os.path.exists(slurm_sh):
+                return f"sbatch --array={','.join(str(x.task) for x in ls)} {slurm_sh}"
+            return f"python -m yade_scripts.batch {os.path.abspath(t)} --only {' '.join(x.description for x in ls)}"
+
+        if todo:
+            resubmit[t] = command(todo)
+        mine = [e for e in others.get(sample, []) if e.get("table") == os.path.relpath(os.path.join(t, "table.txt"),
+                                                                                      folder)]
+        for e, line in zip(mine, [x for x in lines if x.error or x in todo]):
+            if line.error:
+                e["note"] = f"fix line {line.number} of {name}/table.txt, then: {command([line])}"
+            else:
+                e["resubmit"] = resubmit[t]
+                e["note"] = f"resubmit the unfinished lines of {name}: {resubmit[t]}"
     for p in pending:
         print(f"study: not finished: {p}", file=sys.stderr)
+    for t, cmd in resubmit.items():
+        print(f"study: resubmit the unfinished lines of {os.path.basename(os.path.abspath(t))}: {cmd}",
+              file=sys.stderr)
     if not runs:
         raise ConfigError(f"{folder}: no run has finished yet ({len(pending)} pending)")
-    failed = analyse_and_report(folder, runs)
-    return runs, pending, failed
+    failed = analyse_and_report(folder, runs, unfinished=others)
+    return runs, pending, failed, resubmit
 
 
 def main(argv=None):
@@ -326,7 +375,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if args.collect:
         try:
-            runs, pending, failed = collect(args.collect)
+            runs, pending, failed, _ = collect(args.collect)
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
