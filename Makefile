@@ -16,10 +16,10 @@ JOB_THREADS ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 # SHAPES=LIB.h5: S1 of make study on this library (e.g. from python -m shapes import)
 SHAPES ?=
-# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/batch.py)
+# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study results system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study results test-slurm system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
@@ -54,6 +54,13 @@ test: system venv kernel
 docs: venv
 	$(PY) -m sphinx -E -W -q -b html docs runs/docs/html
 	@echo "docs: runs/docs/html/index.html"
+
+# The cluster test: installs Debian's slurm-wlm, munge and MariaDB (.ci/slurm-node, root),
+# brings up a single-node SLURM and runs arrays of tiny scenes through it
+# (tests/test_slurm_cluster.py; the full suite runs it too where the packages are there).
+test-slurm: system venv kernel
+	$(SUDO) .ci/slurm-node install
+	$(PY) -m pytest -q -m slurm -s
 
 # The fast subset (no YADE, nothing slow): about 400 tests in 1 to 2 minutes on 2
 # quiet cores, for the edit-test loop.

@@ -13,8 +13,8 @@ and a stale build is never loaded. The build goes to a temporary name and is
 renamed into place, so two processes that build at once (yade-batch -j 2) do
 not see a half-written file. ``make kernel`` builds it ahead of time.
 
-Imports only the standard library and numpy (this file is copied into run
-folders next to ``polycontact.c``).
+Imports only the standard library and numpy (run folders get a copy of the
+package, ``polycontact.c`` included, and build it there).
 """
 from __future__ import annotations
 

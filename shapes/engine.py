@@ -37,10 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
-try:
-    from . import ckernel
-except ImportError:          # copied into a run folder's lib/ (no package)
-    import ckernel  # type: ignore
+from . import ckernel
 
 
 class EngineError(RuntimeError):

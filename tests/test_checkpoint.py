@@ -255,24 +255,27 @@ def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path
     assert "PARTIAL" in md2
 
 
-def test_study_resumes_a_crashed_run_a_stated_number_of_times(tmp_path, capsys):
-    """_run_with_resumes with a stand-in for YADE: a run killed by SIGKILL
-    that left a checkpoint is started again until it ends with 0, at most
+def test_a_crashed_run_is_resumed_a_stated_number_of_times(tmp_path, capsys):
+    """The one rule (yade_scripts.runstate.judge, applied by the pool that
+    runs every run) with a stand-in for YADE: a run killed by SIGKILL that
+    left a checkpoint is started again until it ends with 0, at most
     MAX_RESUMES times; a blow-up (exit 3) and a crash without a checkpoint
     are not retried."""
-    from yade_scripts.batch import MAX_RESUMES
-    from yade_scripts.study import _run_with_resumes
+    from yade_scripts.pool import Job, run_pool
+    from yade_scripts.runstate import MAX_RESUMES
+
+    def exits(script):
+        exe = tmp_path / "fake-yade"
+        exe.write_text("#!/bin/bash\n" + script + "\n")
+        exe.chmod(0o755)
+        job = Job(str(tmp_path), None, "s", str(tmp_path / "run.h5"), tag="s", log=str(tmp_path / "yade.log"))
+        run_pool([job], 1, echo=print, yade=str(exe))
+        return job.exits
 
     (tmp_path / "run.ckpt").write_bytes(b"x")
-    once = ["bash", "-c", "if [ -f tried ]; then exit 0; fi; touch tried; kill -9 $$"]
-    result = {}
-    _run_with_resumes("s", once, str(tmp_path), result)
-    assert result["s"] == (0, [-9, 0])
+    assert exits("if [ -f tried ]; then exit 0; fi; touch tried; kill -9 $$") == [-9, 0]
     assert "exit -9: resuming from its checkpoint (resume 1 of at most 2)" in capsys.readouterr().out
-    _run_with_resumes("s", ["bash", "-c", "kill -9 $$"], str(tmp_path), result)
-    assert result["s"] == (-9, [-9] * (MAX_RESUMES + 1))
-    _run_with_resumes("s", ["bash", "-c", "exit 3"], str(tmp_path), result)
-    assert result["s"] == (3, [3])
+    assert exits("kill -9 $$") == [-9] * (MAX_RESUMES + 1)
+    assert exits("exit 3") == [3]
     (tmp_path / "run.ckpt").unlink()
-    _run_with_resumes("s", ["bash", "-c", "kill -9 $$"], str(tmp_path), result)
-    assert result["s"] == (-9, [-9])
+    assert exits("kill -9 $$") == [-9]

@@ -131,58 +131,98 @@ def test_log_row_matches_its_header():
     assert values["stage"] == "shear" and values["n_contacts"] == "40"
 
 
+class FakeEngine:
+    def __init__(self, label, exec_ns):
+        self.label, self.execTime = label, exec_ns
+
+
+class FakeO:
+    """What an Attempt touches of YADE's Omega outside a run."""
+    iter, stopAtIter, time = 41, 0, 0.0
+    engines = [FakeEngine("newton", 0.5e9), FakeEngine("kernel", 1.0e9)]
+
+    def load(self, path):
+        assert os.path.exists(path)
+
+
+def new_attempt(dump, params, resume, said):
+    """An Attempt, the process's SIGTERM handler put back afterwards."""
+    before = signal.getsignal(signal.SIGTERM)
+    try:
+        return attempt.Attempt(FakeO(), dump, params, 0.0, resume=resume, say=said.append)
+    finally:
+        signal.signal(signal.SIGTERM, before)
+
+
 def test_attempt_starts_afresh_resumes_or_finds_the_run_complete(tmp_path):
-    dump, ckpt, stem = str(tmp_path / "run.h5"), str(tmp_path / "run.ckpt"), str(tmp_path / "run")
+    from yade_scripts.runstate import RunFiles
+
+    dump = str(tmp_path / "run.h5")
+    files = RunFiles(dump)
+    params = {"seed": 1, "kappa": 150.0}
     said = []
     # leftovers of an unfinished attempt without a checkpoint: removed
-    for f in (stem + ".log.csv", stem + ".info.json", ckpt + ".prev"):
+    for f in (files.log_csv, files.info, files.checkpoint + ".prev"):
         open(f, "w").close()
-    os.makedirs(dump + ".parts")
-    assert attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append) == ("afresh", None)
-    assert not any(os.path.exists(p) for p in attempt.run_files(dump, ckpt, stem))
+    os.makedirs(files.parts)
+    run = new_attempt(dump, params, True, said)
+    assert not run.complete and run.resumed is None
+    assert not any(os.path.exists(p) for p in files.written_by_an_attempt())
     assert "removing the unfinished attempt" in said[-1]
     # a finished dump: nothing to do
     w = schema.DumpWriter(dump, "spheres", {"seed": 1})
     w.close(pack=True)
-    assert attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append) == ("complete", None)
+    assert new_attempt(dump, params, True, said).complete
     os.remove(dump)
     # a checkpoint of this run and its dump: resumed
     w = schema.DumpWriter(dump, "spheres", {"seed": 1})
     assert w.n_snapshots == 0
-    checkpoint.save(ckpt, {"fingerprint": "fp", "n_snapshots": 0, "step": 10}, {}, {})
-    how, chosen = attempt.resume_or_start(dump, ckpt, stem, "fp", True, schema, said.append)
-    assert how == "resume" and chosen[1]["step"] == 10 and chosen[4].n_snapshots == 0
-    chosen[4].close(pack=False, complete=False)
+    checkpoint.save(files.checkpoint, {"fingerprint": checkpoint.fingerprint(params), "n_snapshots": 0, "step": 10,
+                                       "dump_parameters": w.attrs["parameters"]}, {}, {"scene": b"yade"})
+    run = new_attempt(dump, params, True, said)
+    assert not run.complete and run.resumed.step == 10 and run.resumed.writer.n_snapshots == 0
+    assert run.resumed.scene == b"yade" and run.resumed.dump_parameters == {"seed": 1}
+    run.resumed.writer.close(pack=False, complete=False)
+    # another run's checkpoint (other parameters) is not used
+    run = new_attempt(dump, {**params, "kappa": 300.0}, True, said)
+    assert run.resumed is None and "other parameters" in said[-2] and not os.path.exists(files.checkpoint)
     # resume=False starts afresh even with a checkpoint
-    assert attempt.resume_or_start(dump, ckpt, stem, "fp", False, schema, said.append) == ("afresh", None)
-    assert not os.path.exists(ckpt)
+    w = schema.DumpWriter(dump, "spheres", {"seed": 1})
+    checkpoint.save(files.checkpoint, {"fingerprint": checkpoint.fingerprint(params), "n_snapshots": 0, "step": 10,
+                                       "dump_parameters": w.attrs["parameters"]}, {}, {"scene": b"yade"})
+    w.close(pack=False, complete=False)
+    run = new_attempt(dump, params, False, said)
+    assert run.resumed is None and not run.complete
+    assert not os.path.exists(files.checkpoint)
 
 
-def test_progress_lines_and_the_run_history():
+def test_progress_lines_and_the_run_history(tmp_path):
     p = attempt.Progress(0.0)
     p.restart(100)
     sps = p.tick(300)
     assert sps is not None and sps > 0 and p.steps_per_second == sps and p.last_step == 300
     assert attempt.Progress(1e9).tick(10) is None
 
-    class FakeO:
-        iter, stopAtIter = 41, 0
-
-    before = signal.getsignal(signal.SIGTERM)
-    try:
-        r = attempt.Runner(FakeO, 0.0)
-    finally:
-        signal.signal(signal.SIGTERM, before)
-    r.resumed_from({"wall_seconds": 7.0, "engine_seconds": {"newton": 2.0}, "resumes": [{"step": 1}]},
-                   {"step": 41})
-    h = r.history({"newton": 0.5, "kernel": 1.0})
-    assert h["engine_seconds"] == {"newton": 2.5, "kernel": 1.0} and h["resumes"] == [{"step": 1}, {"step": 41}]
-    assert h["wall_seconds"] >= 7.0
+    said = []
+    r = new_attempt(str(tmp_path / "run.h5"), {"seed": 1}, True, said)
+    # what the checkpoint says the earlier attempts took, and the scene's state put back
+    meta = {"wall_seconds": 7.0, "engine_seconds": {"newton": 2.0}, "resumes": [{"step": 1}], "why": "SIGTERM",
+            "x": 1, "step": 41}
+    restored = []
+    r.resumed = attempt.Resumed(str(tmp_path / "run.ckpt"), meta, {"a": np.zeros(2)}, b"scene", None)
+    r.writer = r.resumed.writer = schema.DumpWriter(str(tmp_path / "run.h5"), "spheres", {})
+    r.restore(lambda state, arrays: restored.append((state, sorted(arrays))), lambda: ("shear", 0.1))
+    assert restored == [(meta, ["a"])] and "resumed from run.ckpt at step 41 (shear" in said[-1]
+    h = r.history()
+    assert h["engine_seconds"] == {"newton": 2.5, "kernel": 1.0}
+    assert h["resumes"][0] == {"step": 1} and h["resumes"][1]["step"] == 41
+    assert h["resumes"][1]["written_because"] == "SIGTERM" and h["wall_seconds"] >= 7.0
+    r.writer.close(pack=False, complete=False)
     r._pause_request = True
     r.end_of_step()
-    assert FakeO.stopAtIter == 42 and not r._pause_request
+    assert r.O.stopAtIter == 42 and not r._pause_request
     r._on_term(15, None)
-    assert r.terminated and r.run_until_stop() is True
+    assert r.terminated and r._run_until_stop() is True
 
 
 def test_the_approach_runs_faster_until_half_the_target_stress_then_never_again():

@@ -13,7 +13,7 @@ import textwrap
 
 import pytest
 
-from yade_scripts import pool
+from yade_scripts import pool, runstate
 from yade_scripts.pool import Job, idle_core_seconds, order, run_pool, time_left, widen_choice
 
 # a stand-in for yade: `fake -j N -n -x triaxial.py` in a run folder, table
@@ -58,9 +58,10 @@ def fake(tmp_path, monkeypatch):
     exe = tmp_path / "fake-yade"
     exe.write_text(FAKE.format(python=sys.executable))
     exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
-    monkeypatch.setattr(pool, "complete", lambda dump: os.path.exists(dump) and open(dump).read() == "complete")
-    monkeypatch.setattr(pool, "has_checkpoint", lambda dump: os.path.exists(dump[:-3] + ".ckpt"))
-    monkeypatch.setattr(pool, "clear_attempt", lambda dump: None)
+    # the stand-in's dumps are text files: "complete" when done (pool and rule alike)
+    done = lambda dump: os.path.exists(dump) and open(dump).read() == "complete"   # noqa: E731
+    monkeypatch.setattr(pool, "complete", done)
+    monkeypatch.setattr(runstate, "complete", done)
     monkeypatch.setattr(pool, "POLL_SECONDS", 0.05)
     monkeypatch.setattr(pool, "WIDEN_AFTER_SECONDS", 0.2)
     monkeypatch.setattr(pool, "WIDEN_MIN_SECONDS", 0.3)
@@ -99,16 +100,15 @@ def test_widen_only_when_nothing_waits_and_to_the_longest():
     assert widen_choice(1, 0, [(c, 1, 0.0)], 100.0, left) is None     # not widenable
 
 
-def test_time_left_from_the_log(tmp_path):
-    log = tmp_path / "x.log"
-    assert time_left(str(log)) is None
-    log.write_text("triaxial.py: step 5 compaction: sigma/sigma0 [0.1 0.1 0.1], 3 interactions, 9 steps/s, "
-                   "time left known once shear starts\n")
-    assert time_left(str(log)) is None
-    with open(log, "a") as fh:
-        fh.write("triaxial.py: step 9 shear: eps_1 0.1000, q/p (walls) 0.300, 3 interactions, 9 steps/s, "
-                 "about 2.5 min left\nsomething else\n")
-    assert time_left(str(log)) == 150.0
+def test_time_left_from_the_progress_record(tmp_path):
+    dump = str(tmp_path / "x.h5")
+    assert time_left(dump) is None                               # no record yet
+    (tmp_path / "x.progress.json").write_text(json.dumps({"step": 5, "stage": "compaction", "seconds_left": None}))
+    assert time_left(dump) is None                               # compaction: not known
+    (tmp_path / "x.progress.json").write_text(json.dumps({"step": 9, "stage": "shear", "seconds_left": 150.0}))
+    assert time_left(dump) == 150.0
+    (tmp_path / "x.progress.json").write_text('{"step": 9, "sec')  # half written: not a number
+    assert time_left(dump) is None
 
 
 def test_idle_core_seconds_exact():
@@ -167,10 +167,3 @@ def test_progress_lines_are_relayed(tmp_path, fake, monkeypatch):
     msgs = []
     assert run_pool(js, 1, echo=msgs.append, yade=fake) == {"a": 0}
     assert any(m.startswith("[t] a: step 1 shear:") and m.endswith("s left") for m in msgs), msgs
-
-
-def test_time_left_skips_other_lines(tmp_path):
-    log = tmp_path / "x.log"
-    log.write_text("triaxial.py: step 9 shear: eps_1 0.1, 9 steps/s, about 1.5 min left\n"
-                   "triaxial.py: checkpoint (periodic) at step 10 (shear, eps_1 = 0.1000): run.ckpt\n")
-    assert time_left(str(log)) == 90.0

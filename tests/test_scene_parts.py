@@ -89,7 +89,7 @@ def test_a_batch_table_is_checked_before_any_run(tmp_path):
 def test_generate_run_folder(tmp_path):
     out = tmp_path / "run"
     generate(str(out), "tiny", "spheres", seeds=[3, 4])
-    assert (out / "triaxial.py").exists() and (out / "lib" / "dumpschema.py").exists()
+    assert (out / "triaxial.py").exists() and (out / "pkg" / "postproc" / "schema.py").exists()
     lines = (out / "table.txt").read_text().splitlines()
     assert lines[0].split() == ["description", "seed", "out"] and len(lines) == 3
     with pytest.raises(ConfigError, match="already holds a run"):

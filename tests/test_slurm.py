@@ -1,11 +1,16 @@
 """SLURM job arrays: generate --slurm writes a script bash accepts,
-one array task per table line; two tiny lines run locally with
-SLURM_ARRAY_TASK_ID set, then study --collect analyses what has finished."""
+one array task per table line; tiny lines run locally with
+SLURM_ARRAY_TASK_ID set (from another folder, one stopped by SIGTERM and
+resumed, bad lines refused), then study --collect analyses what has
+finished and lists every line. The real single-node cluster is
+tests/test_slurm_cluster.py."""
 import json
 import math
 import os
 import shutil
+import signal
 import subprocess
+import time
 
 import h5py
 import pytest
@@ -26,11 +31,15 @@ def make(tmp_path, seeds=(1, 2, 3), *extra):
     return out
 
 
-def task(out, k, cwd):
+def task_env(k, **extra):
     env = {k_: v for k_, v in os.environ.items() if not k_.startswith("SLURM_")}
     if k is not None:
         env["SLURM_ARRAY_TASK_ID"] = str(k)
-    return subprocess.run(["bash", str(out / "slurm.sh")], cwd=cwd, env=env,
+    return {**env, **extra}
+
+
+def task(out, k, cwd, **extra):
+    return subprocess.run(["bash", str(out / "slurm.sh")], cwd=cwd, env=task_env(k, **extra),
                           capture_output=True, text=True, timeout=600)
 
 
@@ -40,8 +49,16 @@ def test_script_is_valid_bash_with_one_task_per_line(tmp_path):
     assert subprocess.run(["bash", "-n", str(out / "slurm.sh")]).returncode == 0
     assert "#SBATCH --array=1-3" in script and "#SBATCH --cpus-per-task=4" in script
     assert "#SBATCH --time=2-00:00:00" in script
-    assert "LINES=(2 3 4)" in script and "DESCS=(spheres-seed1 spheres-seed2 spheres-seed3)" in script
-    assert "yade -j" in script and "-x triaxial.py" in script
+    # SLURM's output in the run folder whatever folder sbatch runs in, kept across requeues; SIGTERM
+    # before the time limit to the batch shell, which is the task itself (exec)
+    assert f"#SBATCH --output={out}/slurm-%A_%a.out" in script and "#SBATCH --open-mode=append" in script
+    assert "#SBATCH --signal=B:TERM@300" in script and "#SBATCH --requeue" in script
+    assert f'HERE="${{RUN_DIR:-{out}}}"' in script
+    assert 'exec "$PY" -m yade_scripts.task "$HERE" --requeues 10' in script
+    # task k is the k-th run line of the table
+    from yade_scripts.batch import table_lines
+    assert [(t.task, t.number, t.description) for t in table_lines(str(out))] == [
+        (1, 2, "spheres-seed1"), (2, 3, "spheres-seed2"), (3, 4, "spheres-seed3")]
     # out-of-range and missing task ids are refused without running anything
     for k in (0, 4, "x"):
         r = task(out, k, tmp_path)
@@ -60,6 +77,59 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
     out = make(tmp_path, (1,))
     assert study_main(["--collect", str(out)]) == 2
     assert "no run has finished yet (1 pending)" in capsys.readouterr().err
+    for bad in (["--slurm-signal", "90", "--slurm-time", "1:00"], ["--slurm-requeues", "-1"],
+                ["--slurm-cpus", "0"]):
+        assert generate_main(["--preset", "tiny", "--sample", "spheres", "--out", str(tmp_path / "y"),
+                              "--slurm", *bad]) == 2
+        assert "--slurm-" in capsys.readouterr().err and not (tmp_path / "y").exists()
+
+
+def test_the_script_runs_from_any_folder_and_names_a_missing_table(tmp_path):
+    """sbatch from another folder (SLURM_SUBMIT_DIR is that folder) or with
+    -D: the task runs in its generated folder; a moved or broken folder is
+    one line, and nothing is created outside the run folder."""
+    out = make(tmp_path, (1, 2))
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    os.remove(out / "table.txt")
+    r = task(out, 1, elsewhere, SLURM_SUBMIT_DIR=str(elsewhere))
+    assert r.returncode == 2 and r.stderr.strip() == (
+        f"slurm.sh: {out}/table.txt is missing: not the generated run folder (moved? write slurm.sh again "
+        f"there: python -m yade_scripts.slurm FOLDER)")
+    assert list(elsewhere.iterdir()) == [] and not (out / "spheres-seed1").exists()
+    # RUN_DIR names the folder instead (a moved one)
+    moved = tmp_path / "moved"
+    shutil.copytree(out, moved, symlinks=True)
+    r = task(out, 1, elsewhere, RUN_DIR=str(moved))
+    assert r.returncode == 2 and f"{moved}/table.txt is missing" in r.stderr
+    from yade_scripts.slurm import main as slurm_main
+    (out / "table.txt").write_text("description seed out\nspheres-seed1 1 'spheres-seed1.h5'\n")
+    assert slurm_main([str(out), "--cpus", "1"]) == 0
+    assert "#SBATCH --array=1-1" in (out / "slurm.sh").read_text()
+
+
+def test_a_bad_table_line_fails_its_task_alone_in_one_line_before_yade(tmp_path):
+    """A hand-edited table: a value out of range, one that is not a number,
+    a misspelt column. Each task of a bad line stops at once with one line
+    naming the line and the parameter (exit 2, no YADE, no run folder); a
+    good line of the same table is unaffected (its task would run)."""
+    out = make(tmp_path, (1, 2, 3))
+    (out / "table.txt").write_text("description seed kappa out\n"
+                                   "spheres-seed1 1 150.0 'spheres-seed1.h5'\n"
+                                   "spheres-seed2 2 -150 'spheres-seed2.h5'\n"
+                                   "spheres-seed3 15O 150.0 'spheres-seed3.h5'\n")
+    r = task(out, 2, tmp_path)
+    assert r.returncode == 2 and r.stderr.strip().splitlines()[-1] == (
+        f"task: FINAL invalid line: {out}/table.txt line 3: kappa = -150.0 is outside [1, 1e+09]")
+    r = task(out, 3, tmp_path)
+    assert r.returncode == 2 and r.stderr.strip().splitlines()[-1] == (
+        f"task: FINAL invalid line: {out}/table.txt line 4: seed = 15O is not a Python literal")
+    (out / "table.txt").write_text("description seed kapa out\nspheres-seed1 1 150.0 'spheres-seed1.h5'\n")
+    r = task(out, 1, tmp_path)
+    assert r.returncode == 2 and r.stderr.strip().splitlines()[-1] == (
+        f"task: FINAL invalid line: {out}/table.txt line 2: unknown parameter 'kapa' (did you mean 'kappa'?)")
+    assert not any((out / f"spheres-seed{k}").exists() for k in (1, 2, 3))
+    assert "Traceback" not in r.stdout + r.stderr
 
 
 def test_cost_model_scaling():
@@ -108,6 +178,8 @@ def test_cost_model_scaling():
 @pytest.mark.skipif(YADE is None, reason="needs Debian's yade")
 def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
     out = make(tmp_path, (1, 2, 3))
+    with open(out / "table.txt", "a") as fh:                # a hand edit: a fourth line, out of range
+        fh.write("spheres-seed4 4 'spheres-seed4.h5'\n".replace(" 4 ", " -4 "))
     for k in (1, 2):
         r = task(out, k, tmp_path)            # from another folder: the script finds its own
         assert r.returncode == 0, r.stdout + r.stderr
@@ -118,14 +190,56 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
             assert json.loads(f.attrs["parameters"])["seed"] == k     # the line's parameters
     again = task(out, 1, tmp_path)
     assert again.returncode == 0 and "is complete, nothing to do" in again.stdout
-    # line 3 never ran: collected as pending, the two finished ones analysed
+    # line 3 never ran, line 4 is invalid: both listed, the two finished ones analysed
     assert study_main(["--collect", str(out)]) == 0
     err = capsys.readouterr().err
     assert "not finished: spheres-seed3 (not started)" in err
+    assert f"resubmit the unfinished lines of arr: sbatch --array=3 {out}/slurm.sh" in err
     manifest = json.loads((out / "manifest.json").read_text())
-    assert [m["label"] for m in manifest["spheres"]] == ["seed 1", "seed 2"]
-    assert all(m["status"] == "ok" for m in manifest["spheres"])
-    assert (out / "report" / "report.md").exists()
+    assert [m["label"] for m in manifest["spheres"]] == ["seed 1", "seed 2", "seed 3", "spheres-seed4"]
+    assert [m["status"] for m in manifest["spheres"][:3]] == ["ok", "ok", "not started"]
+    assert manifest["spheres"][3]["status"] == (f"invalid line: {out}/table.txt line 5: seed = -4 is outside "
+                                                f"[0, 9.22337e+18]")
+    assert manifest["spheres"][2]["resubmit"] == f"sbatch --array=3 {out}/slurm.sh"
+    md = (out / "report" / "report.md").read_text()
+    assert f"| S2 spheres | seed 3 | not started (resubmit the unfinished lines of arr: sbatch --array=3 " \
+           f"{out}/slurm.sh) |" in md
+    assert "* S2 spheres spheres-seed4: invalid line:" in md
+
+
+@pytest.mark.yade
+@pytest.mark.skipif(YADE is None, reason="needs Debian's yade")
+def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, capsys):
+    """SIGTERM to the task (what SLURM's --signal sends the batch shell):
+    YADE writes its checkpoint, the task says it is resumable and at which
+    step, exits 75 (no SLURM here to requeue it); run again, it resumes to
+    the end, and the line's log keeps both attempts. --collect in between
+    says the line is resumable at that step."""
+    out = make(tmp_path, (1,))
+    d = out / "spheres-seed1"
+    p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    t0 = time.time()
+    while not ((d / "spheres-seed1.log.csv").exists() and "triaxial.py: 40 spheres" in
+               (d / "triaxial.log").read_text()):
+        assert p.poll() is None and time.time() - t0 < 300, "the run did not start"
+        time.sleep(0.2)
+    p.send_signal(signal.SIGTERM)
+    text = p.communicate(timeout=300)[0]
+    assert p.returncode == 75, text
+    from yade_scripts.runstate import checkpoint_position
+    step, stage = checkpoint_position(str(d / "spheres-seed1.h5"))
+    assert f"task: FINAL not finished (resumable at step {step} ({stage})): run the task again" in text
+    assert study_main(["--collect", str(tmp_path)]) == 2     # nothing finished yet
+    assert f"not finished: arr/spheres-seed1 (resumable at step {step} ({stage}))" in capsys.readouterr().err
+    r = task(out, 1, tmp_path)
+    assert r.returncode == 0 and "task: FINAL done: spheres-seed1.h5 complete" in r.stdout
+    log = (d / "triaxial.log").read_text()
+    assert log.count("==== attempt ") == 2 and "==== attempt 2 of spheres-seed1: resumes from its checkpoint " \
+        f"at step {step}" in log
+    assert log.index("stopped on SIGTERM") < log.index(f"resumed from spheres-seed1.ckpt at step {step}")
+    tries = json.loads((d / "spheres-seed1.attempts.json").read_text())
+    assert [(a["exit"], a["requested"], a["action"]) for a in tries] == [(75, True, "resume"), (0, False, "done")]
 
 
 def test_intermediate_preset_fills_a_16_core_node(tmp_path):

@@ -320,7 +320,7 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
     for name in ("triaxial.py", "params.json", "table.txt", "shapes.h5"):
         if (first / name).exists():
             shutil.copy(first / name, again / name)
-    shutil.copytree(first / "lib", again / "lib", ignore=shutil.ignore_patterns("_build", "__pycache__"))
+    shutil.copytree(first / "pkg", again / "pkg", ignore=shutil.ignore_patterns("_build", "__pycache__"))
     res = run_yade(["triaxial.py"], cwd=again, timeout=900)
     assert res.returncode == 0, res.stdout[-3000:] + res.stderr[-2000:]
     with DumpReader(str(first / "run.h5")) as a, DumpReader(str(again / "run.h5")) as b:

@@ -1,67 +1,66 @@
-"""One attempt at a run, for the scene (``triaxial.py``): resume from the
-newest usable checkpoint or start afresh, run YADE with periodic and
-SIGTERM checkpoints, and the exit codes.
+"""One attempt at a run, as the scene (``triaxial.py``) sees it: how it
+begins, how YADE runs with checkpoints on time and on SIGTERM, and what a
+checkpoint holds.
 
-Exit codes of ``triaxial.py``: :data:`EXIT_DONE` done (or complete
-already), :data:`EXIT_FAILED` stopped on a blow-up or max_steps (message
-printed, snapshots kept), :data:`EXIT_TERM` checkpoint written after
-SIGTERM (run again to resume); anything else is a crash (run again to
-resume from the last periodic checkpoint).
+    run = Attempt(O, dump, parameters, checkpoint_seconds, resume, timing, say)
+    if run.complete: ...                      # the dump is finished already
+    writer = run.open_dump(new_dump)          # reopened after the checkpoint's snapshots, or new_dump()
+    log = run.open_log(header)                # cut at the checkpoint's row, or new with its header
+    run.start()
+    if run.resumed: run.restore(set_state, where)
+    outcome = run.loop(done, get_state, where)    # "done", "failed", "terminated" or "stalled"
 
-numpy + the standard library; the YADE objects (``O``) are passed in.
+A checkpoint (:mod:`yade_scripts.checkpoint`) holds YADE's scene (O.save),
+the dump's and the log's positions, the run's history (wall and engine
+seconds, earlier resumes) and the scene's own state: ``get_state()``
+returns (JSON-able dict, {name: array}), whose keys join the checkpoint's
+metadata, and ``set_state(meta, arrays)`` gets that metadata back (the
+loading program, the kernel's pair histories ...).
+Whether an attempt resumes, and from which checkpoint, is decided here;
+the exit codes and what comes after an attempt are
+:mod:`yade_scripts.runstate`'s.
+
+numpy, h5py and the standard library; the YADE objects (``O``) are passed in.
 """
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import signal
 import time
+from dataclasses import dataclass
 
-try:
-    from yade_scripts import checkpoint
-except ImportError:           # run folder: lib/checkpoint.py
-    import checkpoint  # type: ignore
+from postproc.schema import DumpFormatError, DumpReader, DumpWriter
 
-EXIT_DONE, EXIT_FAILED, EXIT_TERM = 0, 3, 75
-
-
-def run_files(dump, ckpt, stem):
-    """Every file an attempt writes: the dump and its parts folder, the
-    checkpoint and its previous copy, STEM.log.csv and STEM.info.json."""
-    return [dump, dump + ".parts", ckpt, ckpt + ".prev", stem + ".log.csv", stem + ".info.json"]
+from . import checkpoint
+from .runstate import RunFiles
 
 
-def resume_or_start(dump, ckpt, stem, fingerprint, resume, dumpschema, say):
-    """Decide how this attempt begins. Returns ``("resume", chosen)`` with
-    the checkpoint :func:`checkpoint.choose` picked and its reopened dump
-    writer (path, meta, arrays, blobs, writer); ``("complete", None)`` when
-    the dump is finished already; or ``("afresh", None)`` after removing
-    what an unfinished attempt left (said through ``say``)."""
-    if resume:
-        chosen = checkpoint.choose(ckpt, fingerprint,
-                                   lambda meta: dumpschema.DumpWriter.resume(dump, meta["n_snapshots"]), say=say)
-        if chosen is not None:
-            return "resume", chosen
-    if os.path.exists(dump):
-        try:
-            with dumpschema.DumpReader(dump) as r:
-                if r.complete:
-                    return "complete", None
-        except dumpschema.DumpFormatError:
-            pass
-    left = [p for p in run_files(dump, ckpt, stem) if os.path.exists(p)]
-    if left:
-        say(f"starting afresh: removing the unfinished attempt ({', '.join(map(os.path.basename, left))})")
-        shutil.rmtree(dump + ".parts", ignore_errors=True)
-        for p in left:
-            if os.path.isfile(p):
-                os.remove(p)
-    return "afresh", None
+@dataclass
+class Resumed:
+    """The checkpoint an attempt resumes from. checkpoint : its file;
+    meta, arrays : what it holds (:func:`yade_scripts.checkpoint.read`);
+    scene : YADE's saved scene (bytes); writer : the dump, reopened after
+    the checkpoint's snapshots."""
+    checkpoint: str
+    meta: dict
+    arrays: dict
+    scene: bytes
+    writer: DumpWriter
+
+    @property
+    def step(self):
+        return int(self.meta["step"])
+
+    @property
+    def dump_parameters(self):
+        """The dump's parameters as the first attempt wrote them (dict)."""
+        return json.loads(self.meta["dump_parameters"])
 
 
 def scene_bytes(O, path):
-    """The YADE scene (O.save) as bytes, through the temporary file
-    ``path``."""
+    """The YADE scene (O.save) as bytes, through the temporary file ``path``."""
     O.save(path)
     with open(path, "rb") as fh:
         blob = fh.read()
@@ -77,59 +76,180 @@ def load_scene_bytes(O, blob, path):
     os.remove(path)
 
 
-class Runner:
-    """Runs YADE until the scene stops it or a checkpoint is due.
+class Attempt:
+    """One attempt at the run that writes ``dump``.
 
-    SIGTERM only raises a flag (:attr:`terminated`); the run then stops at
-    the end of a step. The stop goes through ``O.stopAtIter``, set by
-    :meth:`end_of_step` inside the step (the scene's controller calls it
-    first thing every step): YADE then ends its loop after that step is
-    complete. (``O.pause()`` from this thread would clear ``O.running``
-    while a step is still under way, so ``O.wait()`` returns early and a
-    checkpoint could catch half a step.)"""
+    On creation it decides how the attempt begins: :attr:`complete` (the
+    dump is finished: nothing to do), :attr:`resumed` (a
+    :class:`Resumed`: the newest usable checkpoint written with the same
+    ``parameters``, see :func:`yade_scripts.checkpoint.choose`), or afresh
+    (what an unfinished attempt left is removed, with a line through
+    ``say``). ``resume=False`` always starts afresh. From then on SIGTERM
+    only raises :attr:`terminated`; the run stops at the end of a step and
+    writes a checkpoint.
 
-    def __init__(self, O, checkpoint_seconds):
-        self.O, self.checkpoint_seconds = O, checkpoint_seconds
+    The stop goes through ``O.stopAtIter``, set by :meth:`end_of_step`
+    inside the step (the scene's controller calls it first thing every
+    step): YADE then ends its loop after that step is complete. (``O.pause()``
+    from this thread would clear ``O.running`` while a step is still under
+    way, so ``O.wait()`` returns early and a checkpoint could catch half a
+    step.)"""
+
+    def __init__(self, O, dump, parameters, checkpoint_seconds, resume=True, timing=True, say=print):
+        self.O, self.say, self.timing = O, say, timing
+        self.files = RunFiles(dump)
+        self.fingerprint = checkpoint.fingerprint(parameters)
+        self.checkpoint_seconds = checkpoint_seconds
+        self.complete, self.resumed = False, None
+        self.writer = self.log = None
         self.terminated = False
         self.failed = None                   # why the scene stopped the run, when it did
         self._pause_request = False
-        self.last_checkpoint = self.t0 = time.time()
+        self.t0 = self.last_checkpoint = time.time()
         # what the earlier attempts of this run took (from the checkpoint)
         self.earlier_wall_seconds, self.earlier_engine_seconds, self.resumes = 0.0, {}, []
-        signal.signal(signal.SIGTERM, self._on_term)
+        self._begin(resume)
+        if not self.complete:
+            signal.signal(signal.SIGTERM, self._on_term)
 
+    def _begin(self, resume):
+        f = self.files
+        if resume:
+            chosen = checkpoint.choose(f.checkpoint, self.fingerprint,
+                                       lambda meta: DumpWriter.resume(f.dump, meta["n_snapshots"]), say=self.say)
+            if chosen is not None:
+                path, meta, arrays, blobs, writer = chosen
+                writer.attrs["parameters"] = meta["dump_parameters"]
+                self.resumed = Resumed(path, meta, arrays, blobs["scene"], writer)
+                return
+        if os.path.exists(f.dump):
+            try:
+                with DumpReader(f.dump) as r:
+                    if r.complete:
+                        self.complete = True
+                        return
+            except DumpFormatError:
+                pass
+        left = [p for p in f.written_by_an_attempt() if os.path.exists(p)]
+        if left:
+            self.say(f"starting afresh: removing the unfinished attempt ({', '.join(map(os.path.basename, left))})")
+            for p in left:
+                if os.path.isdir(p):
+                    shutil.rmtree(p, ignore_errors=True)
+                else:
+                    os.remove(p)
+
+    # ------------------------------------------------------------ the dump and the log
+    def open_dump(self, new_dump):
+        """The dump writer: the resumed one, else ``new_dump()``."""
+        self.writer = self.resumed.writer if self.resumed else new_dump()
+        return self.writer
+
+    def open_log(self, header):
+        """STEM.log.csv: appended after the checkpoint's last row when
+        resuming, else new with its ``header``."""
+        if self.resumed:
+            self.log = open(self.files.log_csv, "a+")
+            self.log.truncate(min(self.resumed.meta["log_bytes"], self.log.seek(0, os.SEEK_END)))
+            self.log.seek(0, os.SEEK_END)
+        else:
+            self.log = open(self.files.log_csv, "w")
+            self.log.write(header)
+        return self.log
+
+    def progress(self, **fields):
+        """Rewrite the run's progress record (STEM.progress.json) with
+        ``fields`` (step, stage, eps_1, steps_per_second, seconds_left ...)
+        and the time; what a scheduler reads to see how long a run has left."""
+        path = self.files.progress
+        with open(path + ".tmp", "w") as fh:
+            json.dump({**fields, "time": time.time()}, fh)
+        os.replace(path + ".tmp", path)
+
+    # ------------------------------------------------------------ the clock and the history
     def start(self):
-        """This attempt's clock starts now."""
+        """This attempt's clock starts now; the progress record says so (a
+        scheduler may send SIGTERM from now on: it is handled)."""
         self.t0 = self.last_checkpoint = time.time()
+        self.progress(step=self.O.iter, stage="starting", seconds_left=None)
 
     def wall_seconds(self):
         """Wall time of the run so far (s), earlier attempts included."""
         return self.earlier_wall_seconds + time.time() - self.t0
 
-    def history(self, engine_seconds):
-        """{wall_seconds, engine_seconds, resumes} of the run so far, with
-        ``engine_seconds`` ({engine: s}) of this attempt added to the
-        earlier attempts'."""
-        total = {k: self.earlier_engine_seconds.get(k, 0.0) + v for k, v in engine_seconds.items()}
-        return {"wall_seconds": self.wall_seconds(), "resumes": self.resumes, "engine_seconds": total}
+    def engine_seconds(self):
+        """{engine: s} of the run so far (YADE's execTime of each engine,
+        earlier attempts included); {} without timing."""
+        now = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in self.O.engines} if self.timing else {}
+        return {k: self.earlier_engine_seconds.get(k, 0.0) + v for k, v in now.items()}
 
-    def resumed_from(self, meta, record):
-        """This attempt continues the checkpoint ``meta`` (as written with
-        :meth:`history`); ``record`` describes the resume."""
-        self.earlier_wall_seconds = meta["wall_seconds"]
-        self.earlier_engine_seconds = meta["engine_seconds"]
-        self.resumes = meta["resumes"] + [record]
+    def history(self):
+        """{wall_seconds, engine_seconds, resumes} of the run so far."""
+        return {"wall_seconds": self.wall_seconds(), "resumes": self.resumes, "engine_seconds": self.engine_seconds()}
 
+    # ------------------------------------------------------------ checkpoints
+    def save_checkpoint(self, why, get_state, where):
+        """Write STEM.ckpt now (between two steps): YADE's scene, the dump's
+        and log's positions, the history and ``get_state()``."""
+        O, f = self.O, self.files
+        t_save = time.time()
+        scene = scene_bytes(O, f.checkpoint + ".scene.yade")
+        self.log.flush()
+        stage, eps_1 = where()
+        state, arrays = get_state()
+        meta = {"fingerprint": self.fingerprint, "step": O.iter, "time": O.time, "stage": stage,
+                "eps_1": float(eps_1), "n_snapshots": self.writer.n_snapshots,
+                "dump_parameters": self.writer.attrs["parameters"], "log_bytes": self.log.tell(), "why": why,
+                **self.history()}
+        clash = sorted(set(meta) & set(state))
+        if clash:
+            raise ValueError(f"the scene's checkpoint state may not use the names {clash}")
+        meta.update(state)
+        size = checkpoint.save(f.checkpoint, meta, arrays, {"scene": scene})
+        self.say(f"checkpoint ({why}) at step {O.iter} ({stage}, eps_1 = {eps_1:.4f}): "
+                 f"{os.path.basename(f.checkpoint)}, {size / 1e6:.1f} MB in {time.time() - t_save:.2f} s")
+        self.last_checkpoint = time.time()
+
+    def restore(self, set_state, where):
+        """Put the run back in the state of :attr:`resumed`: YADE's scene,
+        then ``set_state(meta, arrays)`` for the scene's own parts (``meta``:
+        the checkpoint's metadata, the keys of ``get_state()`` among them)."""
+        r, O = self.resumed, self.O
+        load_scene_bytes(O, r.scene, self.files.checkpoint + ".scene.yade")
+        set_state(r.meta, r.arrays)
+        stage, eps_1 = where()
+        self.earlier_wall_seconds = r.meta["wall_seconds"]
+        self.earlier_engine_seconds = r.meta["engine_seconds"]
+        self.resumes = r.meta["resumes"] + [{
+            "step": O.iter, "stage": stage, "eps_1": eps_1, "checkpoint": os.path.basename(r.checkpoint),
+            "written_because": r.meta["why"], "at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}]
+        self.say(f"resumed from {os.path.basename(r.checkpoint)} at step {O.iter} ({stage}, eps_1 = {eps_1:.4f}, "
+                 f"{self.writer.n_snapshots} snapshots kept)")
+
+    def finish(self):
+        """The run is over (done, or failed: a blow-up replays identically
+        from a checkpoint): its checkpoints and progress record go."""
+        checkpoint.remove(self.files.checkpoint)
+        if os.path.exists(self.files.progress):
+            os.remove(self.files.progress)
+
+    # ------------------------------------------------------------ running
     def _on_term(self, signum, frame):
         self.terminated = True
 
     def end_of_step(self):
-        """If a checkpoint is due, make this step the last of the run."""
+        """If a checkpoint is due, make this step the last of the run (the
+        scene's controller calls this first thing every step)."""
         if self._pause_request:
             self._pause_request = False
             self.O.stopAtIter = self.O.iter + 1
 
-    def run_until_stop(self):
+    def fail(self, reason):
+        """The scene stops the run: ``reason`` (one line) is why."""
+        self.failed = reason
+        self.O.pause()
+
+    def _run_until_stop(self):
         """Run; True when it stopped because a checkpoint is due (SIGTERM,
         or checkpoint_seconds of wall time since the last one), False when
         the scene stopped it (done, failed, or an exception)."""
@@ -149,9 +269,23 @@ class Runner:
         O.stopAtIter = 0
         return due
 
-    def checkpointed(self):
-        """A checkpoint was written now."""
-        self.last_checkpoint = time.time()
+    def loop(self, done, get_state, where):
+        """Run YADE until ``done()``, a failure (:meth:`fail`) or SIGTERM,
+        with a checkpoint every checkpoint_seconds of wall time and one on
+        SIGTERM. Returns "done", "failed", "terminated" (a checkpoint was
+        written: run again to resume) or "stalled" (YADE stopped for no
+        reason the scene gave, e.g. an exception in a PyRunner)."""
+        while True:
+            due = self._run_until_stop()
+            if self.failed:
+                return "failed"
+            if done():
+                return "done"
+            if not due:
+                return "stalled"
+            self.save_checkpoint("SIGTERM" if self.terminated else "periodic", get_state, where)
+            if self.terminated:
+                return "terminated"
 
 
 class Progress:

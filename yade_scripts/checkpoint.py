@@ -18,8 +18,8 @@ at least one complete checkpoint: the new one, or the previous one as
 raises :class:`CheckpointError` with a one-line reason for a truncated,
 corrupt or foreign file; :func:`candidates` lists the newest first.
 
-numpy + standard library only: YADE's system Python imports it (copied into
-a run folder's ``lib/``) and so do the tests.
+numpy + standard library only: YADE's system Python imports it (from the run
+folder's copy of the packages) and so do the tests.
 """
 from __future__ import annotations
 
@@ -125,6 +125,28 @@ def decode(data, name="checkpoint"):
         raise CheckpointError(f"{name}: payload unreadable ({exc.__class__.__name__})") from None
     blobs = {k[len(_BLOB):]: items.pop(k).tobytes() for k in list(items) if k.startswith(_BLOB)}
     return meta, items, blobs
+
+
+def header(path):
+    """The JSON header of the checkpoint file ``path`` (payload_bytes,
+    sha256, step, stage), from its first two lines only: cheap for a large
+    checkpoint, but the payload is not checked (:func:`read` does).
+    CheckpointError (one line) when the file is missing or its first two
+    lines are not a header of this format."""
+    try:
+        with open(path, "rb") as fh:
+            first, second = fh.readline(), fh.readline(1 << 20)
+    except OSError as exc:
+        raise CheckpointError(f"{path}: cannot be read ({exc.strerror or exc})") from None
+    if first.rstrip(b"\n") != MAGIC + b" %d" % FORMAT_VERSION:
+        raise CheckpointError(f"{path}: not a triaxial checkpoint of format version {FORMAT_VERSION}")
+    try:
+        h = json.loads(second)
+    except ValueError:
+        raise CheckpointError(f"{path}: header line unreadable (truncated or corrupt)") from None
+    if not isinstance(h, dict):
+        raise CheckpointError(f"{path}: header line unreadable (truncated or corrupt)")
+    return h
 
 
 def read(path):

@@ -1,4 +1,4 @@
-"""Speed against error: a yade-batch sweep over stiffness, inertial number,
+"""Speed against error: a sweep over stiffness, inertial number,
 particle count (and, in the older ``quick`` plan, shape detail), for S1 and S2.
 
     python -m yade_scripts.front --plan default --out runs/front [--jobs 2]
@@ -11,8 +11,12 @@ every table line overrides ``kappa``, ``inertial_number``, ``n_particles``,
 ``seed`` (``kernel`` plan: 3 seeds per point, seed-major, the same seed at
 every point) and ``library`` (``shapes.h5`` is the standard library, 8-37
 vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices, mean
-10, from the same generator). Complete dumps are not run again. Each dump
-is analysed (``postproc analyze``) and :func:`postproc.study.front.write_front`
+10, from the same generator). The lines run ``--jobs`` at a time, one
+thread each, in table order (:func:`yade_scripts.batch.run_batch`).
+Complete dumps are not run again; a finished dump whose parameters differ
+from its line's (a plan edited without renaming the line) is reported and
+not used. Each dump is analysed (:func:`yade_scripts.study.analyse_dump`,
+without standard errors) and :func:`postproc.study.front.write_front`
 writes ``OUT/front.csv`` (one row per run: cost and every quantity of the
 study's comparison table), ``front-points.csv`` (means and 95 % intervals
 over seeds), ``front-fit.csv`` (the extrapolation to kappa -> inf, I -> 0
@@ -27,7 +31,7 @@ import os
 import sys
 
 from .generate import DEFAULT_LIBRARY, generate
-from .parameters import ConfigError, coerce
+from .parameters import SAMPLES, ConfigError, changed, coerce
 
 #: the plan ``make front`` and this command run unless told otherwise
 DEFAULT_PLAN = "default"
@@ -154,7 +158,7 @@ def low_detail_library(path, n=200, seed=0):
 
 
 def write_table(folder, sample, lines):
-    """The yade-batch table: one line per point, its overrides as columns."""
+    """The run folder's table: one line per point, its overrides as columns."""
     keys = sorted({k for _, o in lines for k in o} | {"library"})
     with open(os.path.join(folder, "table.txt"), "w") as fh:
         fh.write(" ".join(["description"] + keys + ["out"]) + "\n")
@@ -171,24 +175,25 @@ def write_table(folder, sample, lines):
 
 
 def _stale(dump, overrides):
-    """True when a finished dump's parameters differ from the line's overrides
-    (a plan edited without renaming its line): it is never silently reused."""
+    """The parameters of a finished dump that differ from its line's
+    overrides (:func:`yade_scripts.parameters.changed`): a plan edited
+    without renaming its line is never silently reused."""
     from postproc.schema import DumpReader
 
     with DumpReader(dump) as r:
         par = r.parameters
-    for k, v in overrides.items():
-        v = v if k == "library" else coerce(k, v)
-        if par.get(k) != v:
-            return True
-    return False
+    return changed(par, overrides, names=overrides)
 
 
-def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra")):
-    """Generate, run (yade-batch), analyse; returns {sample: {description: status}}."""
-    from postproc.cli import main as postproc_main
+#: the cheap sample first
+FRONT_SAMPLES = SAMPLES[::-1]
 
+
+def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
+    """Generate, run (:func:`yade_scripts.batch.run_batch`), analyse;
+    returns {sample: {description: status}}."""
     from .batch import dump_of, read_table, run_batch
+    from .study import analyse_dump
 
     if plan not in PLANS:
         raise ConfigError(f"unknown plan {plan!r}; choose from {sorted(PLANS)}")
@@ -209,14 +214,15 @@ def run_front(out, plan, jobs=2, library=None, samples=("spheres", "polyhedra"))
         for _, r in read_table(folder):
             dump = dump_of(folder, r)
             d = r["description"]
-            if st.get(d) == 0 and os.path.exists(dump) and _stale(dump, overrides.get(d, {})):
-                print(f"[{s}] {d}: {dump} was made with other parameters; delete it to rerun",
-                      flush=True)
+            stale = st.get(d) == 0 and os.path.exists(dump) and _stale(dump, overrides.get(d, {}))
+            if stale:
+                print(f"[{s}] {d}: {dump} was made with other parameters ({', '.join(stale)}); "
+                      f"delete it to rerun", flush=True)
                 st[d] = "stale dump"
             if st.get(d) == 0 and os.path.exists(dump):
                 ana = os.path.join(folder, "analysis-" + d)
                 if not os.path.exists(os.path.join(ana, "summary.csv")):
-                    postproc_main(["analyze", dump, "--out", ana, "--no-progress", "--no-errors"])
+                    analyse_dump(dump, ana, errors=False)
             status[s][d] = st.get(d)
     with open(os.path.join(out, "front-plan.json"), "w") as fh:
         json.dump({"plan": plan, **{k: v for k, v in spec.items()}}, fh, indent=1)
@@ -229,7 +235,7 @@ def main(argv=None):
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--library")
-    ap.add_argument("--samples", nargs="+", default=["spheres", "polyhedra"])
+    ap.add_argument("--samples", nargs="+", default=list(FRONT_SAMPLES), choices=SAMPLES)
     args = ap.parse_args(argv)
     try:
         status = run_front(args.out, args.plan, args.jobs, args.library, args.samples)

@@ -6,49 +6,37 @@
 The folder holds everything the run needs, so it can be moved or rerun:
 
     triaxial.py   the scene, its parameter block set from the preset
-    lib/          the helper modules (numpy + h5py only) and the dump schema
+    pkg/          a copy of this repository's packages yade_scripts, shapes and
+                  postproc (the scene imports them under their own names)
     shapes.h5     the polyhedra library (polyhedra runs)
     params.json   the resolved parameters
     table.txt     a yade-batch table (one line per seed, or the one run)
 
-Run it with ``cd FOLDER && yade -x triaxial.py`` or
-``yade-batch -j 2 table.txt triaxial.py``. With ``--slurm`` also
+Run it with ``cd FOLDER && yade -x triaxial.py`` or, every line of the
+table, ``python -m yade_scripts.batch FOLDER --jobs 2`` (or
+``yade-batch -j 2 table.txt triaxial.py``). With ``--slurm`` also
 ``slurm.sh``, a SLURM job array with one task per table line
-(:mod:`yade_scripts.slurm`): ``cd FOLDER && sbatch slurm.sh``.
+(:mod:`yade_scripts.slurm`): ``sbatch FOLDER/slurm.sh`` from any folder.
 """
 from __future__ import annotations
 
 import argparse
 import json
 import os
-import re
 import shutil
 import sys
 
-from .parameters import ConfigError, scene_with_block
+from . import slurm
+from .parameters import SAMPLES, ConfigError, scene_with_block
 from .presets import resolve
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-LIB_FILES = {  # copied name: source
-    "dumpschema.py": os.path.join(ROOT, "postproc", "schema.py"),
-    "shapelib.py": os.path.join(ROOT, "shapes", "library.py"),
-    "sizes.py": os.path.join(ROOT, "shapes", "sizes.py"),
-    "sample.py": os.path.join(HERE, "sample.py"),
-    "servo.py": os.path.join(HERE, "servo.py"),
-    "timestep.py": os.path.join(HERE, "timestep.py"),
-    "tangential.py": os.path.join(HERE, "tangential.py"),
-    "yadedump.py": os.path.join(HERE, "yadedump.py"),
-    "kernel_contacts.py": os.path.join(HERE, "kernel_contacts.py"),
-    "checkpoint.py": os.path.join(HERE, "checkpoint.py"),
-    "attempt.py": os.path.join(HERE, "attempt.py"),
-    "host.py": os.path.join(HERE, "host.py"),
-    "loading.py": os.path.join(HERE, "loading.py"),
-    "ckernel.py": os.path.join(ROOT, "shapes", "ckernel.py"),
-    "engine.py": os.path.join(ROOT, "shapes", "engine.py"),
-    "overlap.py": os.path.join(ROOT, "shapes", "overlap.py"),
-    "polycontact.c": os.path.join(ROOT, "shapes", "polycontact.c"),
-}
+#: the packages a run folder gets a copy of, under their own names, in its
+#: ``pkg/`` (the scene puts ``pkg/`` first on its sys.path): the scene's own
+#: modules, the shapes and the contact kernel (its C source included), the
+#: dump schema
+PACKAGES = ("yade_scripts", "shapes", "postproc")
 DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")
 
 
@@ -77,9 +65,8 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
     lib_src = library or DEFAULT_LIBRARY
     if sample == "polyhedra" and not os.path.exists(lib_src):
         raise ConfigError(f"shape library {lib_src} not found: build it with 'make shapes'")
-    os.makedirs(os.path.join(out, "lib"), exist_ok=True)
-    for name, src in LIB_FILES.items():
-        shutil.copyfile(src, os.path.join(out, "lib", name))
+    os.makedirs(out, exist_ok=True)
+    copy_packages(out)
     if sample == "polyhedra":
         shutil.copyfile(lib_src, os.path.join(out, params["library"]))
     with open(os.path.join(out, "triaxial.py"), "w") as fh:
@@ -88,6 +75,15 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
         json.dump({"preset": preset, **params}, fh, indent=1)
     write_seed_table(out, sample, seeds or [params["seed"]])
     return params
+
+
+def copy_packages(out):
+    """``out/pkg/<package>`` for each of :data:`PACKAGES`: this repository's
+    code as the run ran it (Python files and the kernel's C source; no
+    caches, no compiled kernel: it is built in the copy on first use)."""
+    for name in PACKAGES:
+        shutil.copytree(os.path.join(ROOT, name), os.path.join(out, "pkg", name), dirs_exist_ok=True,
+                        ignore=shutil.ignore_patterns("__pycache__", "_build", "*.pyc", "*.so"))
 
 
 def write_seed_table(out, sample, seeds):
@@ -103,30 +99,26 @@ def write_seed_table(out, sample, seeds):
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.generate", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
-    ap.add_argument("--sample", required=True, choices=("polyhedra", "spheres"))
+    ap.add_argument("--sample", required=True, choices=SAMPLES)
     ap.add_argument("--out", required=True)
     ap.add_argument("--set", action="append", metavar="NAME=VALUE", help="override a parameter")
     ap.add_argument("--seeds", type=int, nargs="+", help="seeds for the yade-batch table")
     ap.add_argument("--library", help="shape library (default runs/shapes/library.h5)")
     ap.add_argument("--slurm", action="store_true",
                     help="also write slurm.sh: a SLURM job array, one task per table line")
-    ap.add_argument("--slurm-cpus", type=int, default=2, help="cores per array task (default 2)")
-    ap.add_argument("--slurm-time", default="24:00:00", help="time limit per task (default 24:00:00)")
-    ap.add_argument("--slurm-partition", help="SLURM partition (default: the cluster's)")
+    slurm.add_options(ap)
     args = ap.parse_args(argv)
     try:
-        if args.slurm_cpus < 1 or not re.fullmatch(r"(\d+-)?\d+(:\d\d){0,2}", args.slurm_time):
-            raise ConfigError("--slurm-cpus must be >= 1 and --slurm-time like 24:00:00 or 7-00:00:00")
+        if args.slurm:
+            slurm.check_options(**slurm.options_of(args))
         p = generate(args.out, args.preset, args.sample, parse_overrides(args.set), args.seeds, args.library)
         if args.slurm:
             from .batch import read_table
-            from .slurm import estimate, write_slurm
 
-            script = write_slurm(args.out, p, read_table(args.out), args.slurm_cpus,
-                                 args.slurm_time, args.slurm_partition)
+            script = slurm.write_slurm(args.out, **slurm.options_of(args))
             print(f"generate: {script}: {len(read_table(args.out))} array task(s), about "
-                  f"{estimate(p)['core_hours']:.3g} core-hours each; submit with: "
-                  f"cd {args.out} && sbatch slurm.sh", file=sys.stderr)
+                  f"{slurm.estimate(p)['core_hours']:.3g} core-hours each; submit from any folder with: "
+                  f"sbatch {script}", file=sys.stderr)
     except ConfigError as exc:
         print(f"generate: error: {exc}", file=sys.stderr)
         return 2

@@ -30,10 +30,7 @@ import time
 
 import numpy as np
 
-try:
-    from shapes.engine import ContactEngine, EngineError
-except ImportError:           # run folder: lib/engine.py
-    from engine import ContactEngine, EngineError  # type: ignore
+from shapes.engine import ContactEngine, EngineError
 
 
 class KernelError(RuntimeError):

@@ -15,10 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-try:
-    from yade_scripts import servo
-except ImportError:           # run folder: lib/servo.py
-    import servo  # type: ignore
+from . import servo
 
 #: the compaction tests for the isotropic state every this many steps (the
 #: unbalanced force costs a pass over the contacts)

@@ -17,8 +17,14 @@ derived from :data:`PARAMETERS`:
 from __future__ import annotations
 
 import difflib
+import json
 import math
 from typing import NamedTuple
+
+from postproc.schema import SAMPLE_KINDS
+
+#: the two samples of the study, S1 and S2: the kinds of sample a dump holds
+SAMPLES = SAMPLE_KINDS
 
 BLOCK_START = "# --- parameters (generated from yade_scripts/parameters.py) ---"
 BLOCK_END = "# --- end of parameters ---"
@@ -37,7 +43,7 @@ class Parameter(NamedTuple):
 
 
 PARAMETERS = (
-    Parameter("sample", str, ("polyhedra", "spheres"), "polyhedra", '"polyhedra" (S1) or "spheres" (S2)'),
+    Parameter("sample", str, SAMPLES, "polyhedra", '"polyhedra" (S1) or "spheres" (S2)'),
     Parameter("n_particles", int, (2, 10_000_000), 1000, "number of particles"),
     Parameter("seed", int, (0, 2**63 - 1), 1, "sample seed (sizes, shapes, orientations, positions)"),
     Parameter("sigma0", float, (1e-3, 1e12), 1.0e4, "Pa, confining stress"),
@@ -168,6 +174,27 @@ def _check_box(p):
         raise ConfigError(f"n_particles = {n} with aspect {aspect:g} and initial_fraction {frac:g} makes a box at "
                           f"most {smallest:.3g} m across, less than the largest grain ({D_MAX:g} m): use more "
                           f"grains or an aspect nearer 1")
+
+
+def changed(recorded, wanted, names=None):
+    """The names (sorted) whose value in ``wanted`` differs from the one in
+    ``recorded``: a run is reused only when this is empty (the study's run
+    folders against their ``params.json``, a sweep's finished dumps against
+    their table line). recorded : dict of what a run was made with (from
+    JSON); wanted : dict of what is asked for now, a parameter's value given
+    as it would be set (checked with :func:`coerce`, so ``"300"`` equals
+    300.0); names : the names compared (default: every name of either).
+    Values are compared as JSON gives them back (tuples as lists)."""
+    def norm(k, v):
+        if k in SCHEMA and v is not None:
+            try:
+                v = coerce(k, v)
+            except ConfigError:     # not a valid value (any more): compared as it is
+                pass
+        return json.loads(json.dumps(v))
+
+    keys = sorted(set(recorded) | set(wanted)) if names is None else sorted(names)
+    return [k for k in keys if k not in recorded or k not in wanted or norm(k, recorded[k]) != norm(k, wanted[k])]
 
 
 def render_block(params):

@@ -1,35 +1,44 @@
-"""Many scene runs on a fixed number of cores, with no core left idle.
+"""Runs of the scene on a fixed number of cores: the one loop that starts
+YADE, applies the rule after each attempt and keeps every attempt's output.
 
     status = run_pool(jobs, cores=2, record="runs/study/schedule.json")
 
-A job is one line of a generated run folder's ``table.txt`` (a seed of a
-sample, :func:`yade_scripts.generate.write_seed_table`); it runs as
-yade-batch would run it (``YADE_BATCH=table.txt:LINE yade -jT -n -x
-triaxial.py``, log ``triaxial.py.<description>.log``), so the table, the
-run's files and its resume are those of :mod:`yade_scripts.batch`.
+A job is one run (:class:`Job`): a line of a generated run folder's
+``table.txt`` (``YADE_BATCH=table.txt:LINE yade -jT -n -x triaxial.py``, as
+yade-batch runs it) or the folder's own scene (``line=None``). Every way of
+running runs goes through here: the study's single seeds
+(:func:`yade_scripts.study.run_samples`) and ensembles, sweeps
+(:func:`yade_scripts.batch.run_batch`) and SLURM array tasks
+(:mod:`yade_scripts.task`).
 
-The schedule:
-
+* **Every attempt kept.** Each attempt appends to the job's log (a header
+  line ``==== attempt K ...`` first) and to the run's record
+  ``STEM.attempts.json`` (start, end, threads, exit, what the rule made of
+  it; :mod:`yade_scripts.runstate`).
+* **One rule after each attempt** (:func:`yade_scripts.runstate.judge`):
+  done, resumed (a crash that left a checkpoint, up to
+  :data:`~yade_scripts.runstate.MAX_RESUMES` times; a stop that was asked
+  for) or failed (a blow-up, exit 3, is never retried).
 * **Longest first.** Jobs start in decreasing order of their estimated
   core-seconds (:func:`yade_scripts.slurm.estimate`): the longest
   processing time rule (Graham 1969), which on identical cores finishes
-  within 4/3 of the best possible makespan. Seeds of both samples are
-  interleaved: the polyhedra seeds start first, the sphere seeds fill the
-  cores they leave.
-* **One thread per job while jobs wait** (or the job's ``threads``); each job whose contacts run in
-  the compiled kernel (``widen``) can use more. Once no job waits, a
-  core that frees up goes to the running widenable job with the most work
-  left: it gets SIGTERM, writes a checkpoint and exits 75 (the scene's
-  contract, :mod:`yade_scripts.attempt`), and is resumed at once with the
-  freed cores added (the kernel's OpenMP threads are YADE's ``-j``). A job
-  is widened only when its log does not give it less than
-  :data:`WIDEN_MIN_SECONDS` left and it has run at least
+  within 4/3 of the best possible makespan. Jobs of equal cost keep their
+  order (a sweep's table order).
+* **One thread per job while jobs wait** (or the job's ``threads``); each
+  job whose contacts run in the compiled kernel (``widen``) can use more.
+  Once no job waits, a core that frees up goes to the running widenable
+  job with the most work left: it gets SIGTERM, writes a checkpoint and
+  exits 75, and is resumed at once with the freed cores added (the
+  kernel's OpenMP threads are YADE's ``-j``). A job is widened only when its
+  progress record (``STEM.progress.json``, written by the scene) does not
+  give it less than :data:`WIDEN_MIN_SECONDS` left and it has run at least
   :data:`WIDEN_AFTER_SECONDS` (its SIGTERM handler is installed).
-* Every PROGRESS_SECONDS the newest progress line of each running job is
-  relayed (when it changed), with the sample in front.
-* A job that crashes and left a checkpoint is resumed, up to
-  :data:`yade_scripts.batch.MAX_RESUMES` times (stops for widening do
-  not count); exit 3 (a blow-up) is never retried.
+* The scene's lines are relayed with the sample in front: every line of a
+  job with ``echo_all`` (a study's single seeds), else each running job's
+  newest line every PROGRESS_SECONDS, when it changed.
+* ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
+  SIGTERM (it checkpoints and exits 75) as soon as its scene has started
+  (its SIGTERM handler installed), no job starts any more.
 
 Every attempt (job, start, end, threads, exit) goes to ``record`` (JSON),
 and :func:`idle_core_seconds` gives the idle core-time of the schedule:
@@ -39,49 +48,79 @@ from __future__ import annotations
 
 import json
 import os
-import re
+import platform
 import shutil
 import signal
 import subprocess
 import time
 from dataclasses import dataclass, field
 
-from .batch import (EXIT_FAILED, EXIT_TERM, MAX_RESUMES, PROGRESS_SECONDS, clear_attempt, complete, has_checkpoint,
-                    newest_progress, yade_env)
 from .parameters import ConfigError
+from .runstate import (MAX_RESUMES, RunFiles, checkpoint_position, clear_attempt, complete,
+                       has_checkpoint, judge, now_utc, read_attempts, record_attempt)
 
 #: a running job is widened only after this many seconds (its SIGTERM
 #: handler is installed well before: YADE starts in a few seconds)
 WIDEN_AFTER_SECONDS = 30.0
-#: ... and only when its log does not give it less than this left (a stop
-#: and resume costs a checkpoint and a YADE start, a few seconds)
+#: ... and only when its progress record does not give it less than this
+#: left (a stop and resume costs a checkpoint and a YADE start, a few seconds)
 WIDEN_MIN_SECONDS = 120.0
 #: seconds between two looks at the running jobs
 POLL_SECONDS = 1.0
-#: progress lines of the scene that give the time left
-_TIME_LEFT = re.compile(r"(\d+(?:\.\d+)?) (s|min|h) left")
+#: seconds between two relayed progress lines of a job (echo_all aside)
+PROGRESS_SECONDS = 20.0
+#: the prefix of the scene's own lines in its log
+SCENE = "triaxial.py: "
+#: a stop asked for while a run is still starting (YADE loading, before the
+#: scene's SIGTERM handler) waits until the scene's progress record says it
+#: has started, this long at most
+STARTING_SECONDS = 60.0
+
+
+def yade_env():
+    """The environment for a YADE process: OpenMP threads sleep when idle
+    (OMP_WAIT_POLICY=PASSIVE). With the default spinning, two YADE jobs on two
+    cores made the polyhedra kernel's 2-thread steps 60 times slower
+    (benchmarks/bench_kernel.py next to a running job: 24 ms against 0.35 ms).
+    libgomp reads the variable when it loads, so it must be set here."""
+    env = dict(os.environ)
+    env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+    return env
 
 
 @dataclass
 class Job:
-    """One table line to run: ``folder`` (a generated run folder), ``line``
-    (its line number in table.txt), ``description``, ``dump`` (path of the
-    dump it writes), ``cost`` (estimated core-seconds: the order), ``widen``
-    (True when more threads speed it up), ``tag`` (the sample, for the
-    messages), ``threads`` (threads it starts on)."""
+    """One run: ``folder`` (a generated run folder), ``line`` (its line in
+    table.txt, or None: the scene's own parameters), ``description``,
+    ``dump`` (path of the dump it writes), ``cost`` (estimated core-seconds:
+    the order), ``widen`` (True when more threads speed it up), ``tag`` (the
+    sample, for the messages), ``threads`` (threads it starts on), ``log``
+    (default ``triaxial.py.<description>.log`` in the folder, as yade-batch
+    names it), ``echo_all`` (relay every line of the scene), ``table`` (the
+    table ``line`` is in, default the folder's ``table.txt``). After the
+    pool: ``exits`` the exit codes of its attempts (stops asked for left
+    out), ``verdict`` the rule's last :class:`~yade_scripts.runstate.Verdict`."""
     folder: str
-    line: int
+    line: int | None
     description: str
     dump: str
-    cost: float
+    cost: float = 0.0
     widen: bool = False
     tag: str = ""
     threads: int = 1
+    log: str = ""
+    echo_all: bool = False
+    table: str = "table.txt"
     exits: list = field(default_factory=list)
+    verdict: object = None
+
+    def __post_init__(self):
+        self.log = self.log or os.path.join(self.folder, f"triaxial.py.{self.description}.log")
 
     @property
-    def log(self):
-        return os.path.join(self.folder, f"triaxial.py.{self.description}.log")
+    def name(self):
+        """``[tag] description`` (``[tag]`` when they are the same)."""
+        return f"[{self.tag}]" if self.description == self.tag else f"[{self.tag}] {self.description}"
 
 
 def order(jobs):
@@ -94,7 +133,7 @@ def widen_choice(free, waiting, running, now, time_left):
 
     free (int) idle cores; waiting (int) jobs not started; running
     [(job, threads, started)] with ``started`` in s; now (s); time_left
-    {description: s or None} from the jobs' logs. Cores go to a job only
+    {description: s or None} from the jobs' progress records. Cores go to a job only
     when no job waits (a waiting job takes them on one thread), and only to
     a widenable job that has run WIDEN_AFTER_SECONDS and is not known to
     end within WIDEN_MIN_SECONDS; among those, the one with the most time
@@ -113,12 +152,16 @@ def widen_choice(free, waiting, running, now, time_left):
     return None if best is None else (best[1], best[2] + free)
 
 
-def time_left(log_path):
-    """Seconds left that the newest progress line of a scene log gives
-    (``... 12.3 min left``), or None (no such line yet, e.g. compaction)."""
-    line = newest_progress(log_path, start="step")
-    m = _TIME_LEFT.search(line) if line else None
-    return float(m.group(1)) * {"s": 1, "min": 60, "h": 3600}[m.group(2)] if m else None
+def time_left(dump):
+    """Seconds left that the newest progress record of the run writing
+    ``dump`` gives (``seconds_left`` of STEM.progress.json), or None (no
+    record yet, none in compaction, or a scene that writes none)."""
+    try:
+        with open(RunFiles(dump).progress) as fh:
+            left = json.load(fh).get("seconds_left")
+    except (OSError, ValueError, AttributeError):
+        return None
+    return float(left) if isinstance(left, (int, float)) else None
 
 
 def idle_core_seconds(attempts, cores):
@@ -143,44 +186,104 @@ def summary(attempts, cores):
             "idle_share": idle / (cores * span) if span > 0 else 0.0}
 
 
-def _start(job, threads, yade):
+class _Running:
+    """A job's current attempt: its process, threads, start, whether a stop
+    was asked for (and whether to widen it), and where its log was read to."""
+
+    def __init__(self, job, threads, proc, number, offset):
+        self.job, self.threads, self.proc, self.number = job, threads, proc, number
+        self.started, self.start_utc = time.time(), now_utc()
+        self.requested = False       # a stop asked for by us (SIGTERM sent, or due once it has started)
+        self.term_sent = False
+        self.widening = False        # ... to resume it on more threads
+        self.offset = offset         # bytes of the log relayed so far
+        self.newest = None           # the newest scene line not relayed yet (echo_all off)
+
+    def started_scene(self):
+        """True once the scene has started this attempt (its progress record
+        is newer than the process): it then handles SIGTERM."""
+        try:
+            return os.path.getmtime(RunFiles(self.job.dump).progress) >= self.started - 1.0
+        except OSError:
+            return False
+
+    def stop(self, now, at_once=False):
+        """Send SIGTERM ``at_once``, or once the scene has started, or
+        STARTING_SECONDS after the stop was asked for (a scene that writes
+        no progress record)."""
+        if self.term_sent or not (at_once or self.started_scene() or now - self.requested >= STARTING_SECONDS):
+            return
+        self.term_sent = True
+        self.proc.send_signal(signal.SIGTERM)
+
+    def new_lines(self):
+        """The scene's lines (prefix removed) appended to the log since the
+        last call."""
+        try:
+            with open(self.job.log, "rb") as fh:
+                fh.seek(self.offset)
+                data = fh.read()
+        except OSError:
+            return []
+        end = data.rfind(b"\n") + 1
+        self.offset += end
+        return [x[len(SCENE):].strip() for x in data[:end].decode("utf-8", "replace").splitlines()
+                if x.startswith(SCENE)]
+
+
+def _launch(job, threads, yade, number, note):
+    """Start an attempt: the header line in the job's log, then YADE."""
     env = yade_env()
-    env["YADE_BATCH"] = f"table.txt:{job.line}"
+    if job.line is not None:
+        env["YADE_BATCH"] = f"{job.table}:{job.line}"
     env["DISPLAY"] = ""
-    log = open(job.log, "a")
-    proc = subprocess.Popen([yade, "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=job.folder, env=env,
-                            stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
-    log.close()
-    return proc
+    where = checkpoint_position(job.dump)
+    how = f"resumes from its checkpoint at step {where[0]} ({where[1]})" if where else "starts"
+    cmd = [yade, "-j", str(threads), "-n", "-x", "triaxial.py"]
+    offset = os.path.getsize(job.log) if os.path.exists(job.log) else 0
+    with open(job.log, "a") as log:
+        log.write(f"==== attempt {number} of {job.description}: {how}; {now_utc()} on {platform.node()}, "
+                  f"{' '.join(os.path.basename(c) if k == 0 else c for k, c in enumerate(cmd))}"
+                  f"{''.join(f', {k} {v}' for k, v in (note or {}).items())} ====\n")
+        log.flush()
+        proc = subprocess.Popen(cmd, cwd=job.folder, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                stdin=subprocess.DEVNULL)
+    return proc, offset
 
 
-def run_pool(jobs, cores, record=None, echo=print, yade=None):
-    """Run ``jobs`` (:class:`Job`) on ``cores`` cores (module docstring);
-    returns {description: exit status} (0 done or complete already; an int
-    exit code; "no complete dump" when a job exited 0 without one). Each
-    job's ``exits`` lists the exit codes of its attempts (stops for
-    widening left out). ``record``: JSON file of every attempt and the
-    schedule's :func:`summary`, rewritten as the schedule goes."""
+def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
+             max_resumes=MAX_RESUMES):
+    """Run ``jobs`` (:class:`Job`) on ``cores`` cores (module docstring).
+
+    Returns {description: status}: 0 done or complete already; the exit
+    code of a failed run; "no complete dump" when it exited 0 without one;
+    "stopped" when ``stopping()`` stopped it (resumable) or it never
+    started. Each job's ``exits`` lists the exit codes of its attempts
+    (stops asked for left out) and ``verdict`` the rule's last word.
+    ``record``: JSON file of every attempt and the schedule's
+    :func:`summary`, rewritten as the schedule goes. ``note``: {key:
+    value} added to each attempt's header and record (a SLURM job id).
+    ``yade``: the executable (default: yade on the PATH)."""
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
-    status = {}
-    waiting = []
+    stopping = stopping or (lambda: False)
+    status, waiting = {}, []
     for job in order(jobs):
         if complete(job.dump):
-            echo(f"[{job.tag}] {job.description} already complete, not run again")
+            echo(f"{job.name} already complete, not run again")
             status[job.description] = 0
             continue
         if has_checkpoint(job.dump):
-            echo(f"[{job.tag}] {job.description}: an unfinished run with a checkpoint, resuming it")
+            echo(f"{job.name}: an unfinished run with a checkpoint, resuming it")
         else:
             clear_attempt(job.dump)
         waiting.append(job)
-    attempts, running = [], {}      # description -> (job, threads, started, proc, widening)
+    attempts, running = [], {}      # description -> _Running
     t0 = time.time()
-    relayed, next_relay = {}, t0 + PROGRESS_SECONDS
+    next_relay, stop_sent = t0 + PROGRESS_SECONDS, False
 
     def write_record():
         if record:
@@ -190,67 +293,91 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None):
             os.replace(tmp, record)
 
     def launch(job, threads, why="started"):
-        running[job.description] = (job, threads, time.time(), _start(job, threads, yade), False)
-        echo(f"[{job.tag}] {job.description} {why} on {threads} thread(s)")
+        number = len(read_attempts(job.dump)) + 1
+        proc, offset = _launch(job, threads, yade, number, note)
+        running[job.description] = _Running(job, threads, proc, number, offset)
+        echo(f"{job.name} {why} on {threads} thread(s)")
 
     while waiting or running:
-        busy = sum(r[1] for r in running.values())
+        if stopping() and not stop_sent:
+            stop_sent = True
+            for r in running.values():
+                r.requested = r.requested or time.time()
+            for job in waiting:
+                status[job.description] = "stopped"
+                echo(f"{job.name}: not started (stopping)")
+            waiting = []
+            if running:
+                echo(f"[pool] stopping: SIGTERM to {len(running)} run(s), each writes a checkpoint")
+        busy = sum(r.threads for r in running.values())
         while waiting and (busy + waiting[0].threads <= cores or not running):
             job = waiting.pop(0)
             launch(job, job.threads)
             busy += job.threads
-        now = time.time()
-        choice = widen_choice(cores - busy, len(waiting),
-                              [(j, n, s) for j, n, s, _, w in running.values() if not w], now,
-                              {d: time_left(r[0].log) for d, r in running.items()})
+        choice = None if stop_sent else widen_choice(
+            cores - busy, len(waiting), [(r.job, r.threads, r.started) for r in running.values() if not r.requested],
+            time.time(), {d: time_left(r.job.dump) for d, r in running.items()})
         if choice is not None:
             job, threads = choice
-            j, n, s, proc, _ = running[job.description]
-            running[job.description] = (j, threads, s, proc, True)      # the cores are promised to it
-            proc.send_signal(signal.SIGTERM)
-            echo(f"[{job.tag}] {job.description}: a core is free, stopping it to resume on {threads} threads")
+            r = running[job.description]
+            r.requested, r.widening = time.time(), threads        # the cores are promised to it
+            r.stop(time.time(), at_once=True)                     # it has run WIDEN_AFTER_SECONDS: started
+            echo(f"{job.name}: a core is free, stopping it to resume on {threads} threads")
+        for r in running.values():
+            if r.requested:
+                r.stop(time.time())
         time.sleep(POLL_SECONDS)
-        if time.time() >= next_relay:            # each running job's newest progress line, when it changed
+        relay = time.time() >= next_relay
+        if relay:
             next_relay = time.time() + PROGRESS_SECONDS
-            for d, r in running.items():
-                line = newest_progress(r[0].log)
-                if line and line != relayed.get(d):
-                    relayed[d] = line
-                    echo(f"[{r[0].tag}] {d}: {line}")
+        for r in running.values():           # the scene's lines
+            for line in r.new_lines():
+                if r.job.echo_all:
+                    echo(f"[{r.job.tag}] {line}")
+                else:
+                    r.newest = line
+            if relay and r.newest:
+                echo(f"{r.job.name}: {r.newest}")
+                r.newest = None
         for d in list(running):
-            job, threads, started, proc, widening = running[d]
-            code = proc.poll()
+            r = running[d]
+            code = r.proc.poll()
             if code is None:
                 continue
             del running[d]
-            end = time.time()
-            ran_on = threads if not widening else _threads_of(proc)
-            attempts.append({"job": d, "tag": job.tag, "start": started - t0, "end": end - t0,
-                             "threads": ran_on, "exit": code, "widening": widening})
+            job, end = r.job, time.time()
+            for line in r.new_lines():
+                if job.echo_all:
+                    echo(f"[{job.tag}] {line}")
+            attempts.append({"job": d, "tag": job.tag, "start": r.started - t0, "end": end - t0,
+                             "threads": r.threads, "exit": code, "widening": bool(r.widening)})
             write_record()
-            if widening and code == EXIT_TERM and has_checkpoint(job.dump):
-                launch(job, threads, why="resumed")
+            v = judge(code, job.dump, resumes=sum(1 for c in job.exits if c != 0), requested=bool(r.requested),
+                      max_resumes=max_resumes)
+            job.verdict = v
+            record_attempt(job.dump, attempt=r.number, start=r.start_utc, seconds=round(end - r.started, 3),
+                           threads=r.threads, exit=code, requested=bool(r.requested), action=v.action, reason=v.reason,
+                           log=os.path.basename(job.log), host=platform.node(), **(note or {}))
+            if r.widening and v.action == "resume" and not stop_sent:
+                launch(job, r.widening, why="resumed")
                 continue
-            job.exits.append(code)
-            if code == 0:
-                status[d] = 0 if complete(job.dump) else "no complete dump"
-                echo(f"[{job.tag}] {d} done in {end - started:.0f} s")
-            elif code != EXIT_FAILED and has_checkpoint(job.dump) and len(job.exits) <= MAX_RESUMES:
-                echo(f"[{job.tag}] {d}: exit {code}, resuming from its checkpoint "
-                     f"(resume {len(job.exits)} of at most {MAX_RESUMES})")
-                launch(job, threads, why="resumed")
+            if not r.requested:
+                job.exits.append(code)
+            if v.action == "done":
+                status[d] = 0
+                echo(f"{job.name} done in {end - r.started:.0f} s")
+            elif v.action == "resume" and not stop_sent:
+                echo(f"{job.name}: {v.reason}")
+                launch(job, r.threads, why="resumed")
+            elif v.action == "resume":
+                status[d] = "stopped"
+                echo(f"{job.name}: {v.reason}")
             else:
-                status[d] = code
-                echo(f"[{job.tag}] {d} FAILED (exit {code}, see {job.log})")
+                status[d] = "no complete dump" if code == 0 else code
+                echo(f"{job.name} FAILED ({v.reason}; see {job.log})")
     write_record()
     s = summary(attempts, cores)
-    if attempts:
+    if attempts and record:
         echo(f"[pool] {len(attempts)} attempt(s) in {s['makespan_s']:.0f} s on {cores} cores: "
              f"idle core-time {s['idle_core_s']:.0f} s ({100 * s['idle_share']:.1f} %)")
     return status
-
-
-def _threads_of(proc):
-    """The thread count a process was started with (its ``-j`` argument)."""
-    args = proc.args
-    return int(args[args.index("-j") + 1])

@@ -49,7 +49,7 @@ defaults, which are the default preset's polyhedra sample.
 """
 from __future__ import annotations
 
-from .parameters import ConfigError, check
+from .parameters import SAMPLES, ConfigError, check
 
 # What a sample changes from the parameter table's defaults (those of the
 # default preset's polyhedra) before any preset: the spheres step at 0.3 of
@@ -120,7 +120,7 @@ def resolve(preset, sample, overrides=None):
     value or string). Raises :class:`ConfigError`."""
     if preset not in PRESETS:
         raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")
-    if sample not in ("polyhedra", "spheres"):
-        raise ConfigError(f"sample must be 'polyhedra' or 'spheres', got {sample!r}")
+    if sample not in SAMPLES:
+        raise ConfigError(f"sample must be one of {SAMPLES}, got {sample!r}")
     return check({**SAMPLE_DEFAULTS[sample], **PRESETS[preset]["common"], **PRESETS[preset][sample], "sample": sample,
                   **(overrides or {})})

@@ -1,17 +1,24 @@
-"""SLURM job arrays for the lines of a yade-batch table.
+"""SLURM job arrays for the lines of a run folder's table.
 
     python -m yade_scripts.generate --preset paper --sample polyhedra \
         --out runs/paper-s1 --seeds 1 2 3 4 --slurm [--slurm-cpus 8 --slurm-time 7-00:00:00]
+    sbatch runs/paper-s1/slurm.sh                 # from any folder; or sbatch -D DIR ...
+    python -m yade_scripts.study --collect runs/paper-s1
 
-writes ``slurm.sh`` next to ``table.txt``: one array task per table line.
-Task k makes the folder ``<description of line k>/`` (links to the scene,
-``lib/`` and the shape library), runs ``yade -x triaxial.py`` there with
-that line's parameters (``YADE_BATCH=table.txt:LINE``, as yade-batch does),
-and keeps its log (``triaxial.log``) and dump in that folder. A task whose
-dump is already complete exits at once, so the array can be resubmitted
-after failures or time-outs (an unfinished line starts afresh, or resumes
-once the scene writes checkpoints). ``python -m yade_scripts.study --collect FOLDER``
-then analyses whatever has finished.
+writes ``slurm.sh`` next to ``table.txt``: one array task per run line.
+The script knows its run folder by absolute path (``RUN_DIR`` overrides it;
+``python -m yade_scripts.slurm FOLDER`` writes it again for a moved
+folder), says in one line when the folder, its table or its scene is
+missing, and ``exec``s :mod:`yade_scripts.task` on YADE's own Python: task
+K runs table line K in ``FOLDER/<description>/`` (its dump, its log
+``triaxial.log``, every attempt appended), checks the line first, skips a
+complete dump, and on SIGTERM, which SLURM sends ``--slurm-signal`` seconds
+before the time limit (``--signal=B:TERM@S``), lets YADE write its
+checkpoint and requeues itself (``--slurm-requeues`` times at most), so
+one ``sbatch`` runs every line to the end. SLURM's own output goes to
+``FOLDER/slurm-<job>_<task>.out``, appended across requeues
+(``--open-mode=append``). The task's final state and reason are its last
+output line, its exit code and its job's ``Comment`` (``sacct``).
 
 Run a task by hand (no SLURM): ``SLURM_ARRAY_TASK_ID=2 bash slurm.sh``.
 
@@ -20,9 +27,13 @@ core) / 3.6e9, see :func:`estimate`.
 """
 from __future__ import annotations
 
+import argparse
+import json
+import re
+import sys
+
 import math
 import os
-import shlex
 
 #: Cost model (docs/scenes.md "Paper scale"): steps measured at a reference
 #: point per sample, scaled to other parameters, times contacts, times the
@@ -98,73 +109,154 @@ def estimate(params):
             "contact_steps": cs, "core_hours": cs * US_PER_CONTACT_STEP[s] / 3.6e9}
 
 
-def write_slurm(folder, params, rows, cpus=2, time="24:00:00", partition=None, name=None):
-    """Write ``folder/slurm.sh`` for the table rows ``rows`` = [(file line,
-    {column: raw value})] (:func:`yade_scripts.batch.read_table`). Returns
-    its path."""
-    from .batch import dump_of
+#: seconds before the time limit that SLURM sends SIGTERM (``--signal``): YADE
+#: stops at the end of its step and writes a checkpoint (0.1 MB in 0.02 s for
+#: 20 grains; SLURM's own resolution is up to a minute)
+DEFAULT_SIGNAL_SECONDS = 300
+_TIME = re.compile(r"(?:(\d+)-)?(\d+)(?::(\d+))?(?::(\d+))?")
 
+
+def time_seconds(text):
+    """Seconds of a SLURM time limit (``MM``, ``MM:SS``, ``HH:MM:SS``,
+    ``D-HH``, ``D-HH:MM``, ``D-HH:MM:SS``); ValueError when it is none."""
+    m = _TIME.fullmatch(text.strip())
+    if not m:
+        raise ValueError(f"{text!r} is not a SLURM time (like 24:00:00 or 7-00:00:00)")
+    d, a, b, c = m.groups()
+    if d is None:
+        parts = [int(x) for x in (a, b, c) if x is not None]
+        h, mi, sec = ([0] * (3 - len(parts)) + parts) if len(parts) == 3 else \
+            ((0, parts[0], 0) if len(parts) == 1 else (0, parts[0], parts[1]))
+        return 3600 * h + 60 * mi + sec
+    rest = [int(x) for x in (b, c) if x is not None]
+    return 86400 * int(d) + 3600 * int(a) + 60 * (rest[0] if rest else 0) + (rest[1] if len(rest) > 1 else 0)
+
+
+def check_options(cpus=2, time="24:00:00", partition=None, requeues=None, signal_seconds=DEFAULT_SIGNAL_SECONDS):
+    """Raise ConfigError (one line) unless the options of :func:`write_slurm`
+    make a valid array script."""
+    from .parameters import ConfigError
+
+    try:
+        limit = time_seconds(time)
+    except ValueError as exc:
+        raise ConfigError(f"--slurm-time: {exc}") from None
+    if int(cpus) < 1 or (requeues is not None and requeues < 0):
+        raise ConfigError(f"--slurm-cpus must be >= 1 and --slurm-requeues >= 0, got {cpus} and {requeues}")
+    if not 0 < signal_seconds < limit:
+        raise ConfigError(f"--slurm-signal {signal_seconds} s must be more than 0 and less than the time limit "
+                          f"{time} ({limit} s)")
+    if partition is not None and not re.fullmatch(r"[\w.,-]+", partition):
+        raise ConfigError(f"--slurm-partition {partition!r} is not a partition name")
+
+
+def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requeues=None,
+                signal_seconds=DEFAULT_SIGNAL_SECONDS):
+    """Write ``folder/slurm.sh`` for the run lines of its table (checked
+    first: a bad line raises ConfigError naming it). Returns its path.
+
+    cpus : cores per task (YADE's ``-j``: the polyhedra kernel's threads);
+    time : the time limit of one job; requeues : requeues of a task at most
+    (default :data:`yade_scripts.task.DEFAULT_REQUEUES`); signal_seconds :
+    SIGTERM this long before the time limit."""
+    from .batch import read_table
+    from .parameters import ConfigError
+    from .task import DEFAULT_REQUEUES
+
+    folder = os.path.abspath(folder)
+    requeues = DEFAULT_REQUEUES if requeues is None else requeues
+    check_options(cpus, time, partition, requeues, signal_seconds)
+    if re.search(r"\s", folder):
+        raise ConfigError(f"{folder}: a run folder for SLURM needs a path without spaces (#SBATCH --output)")
+    rows = read_table(folder)
     if not rows:
-        raise ValueError("the table has no lines")
-    descs = [r["description"] for _, r in rows]
-    lines = [str(k) for k, _ in rows]
-    outs = [os.path.basename(dump_of(folder, r)) for _, r in rows]
+        raise ConfigError(f"{folder}/table.txt has no run line")
+    with open(os.path.join(folder, "params.json")) as fh:
+        params = json.load(fh)
     est = estimate(params)
-    links = ["triaxial.py", "lib"] + ([params["library"]] if params["sample"] == "polyhedra" else [])
     part = f"#SBATCH --partition={partition}\n" if partition else ""
     text = f"""#!/bin/bash
-#SBATCH --job-name={name or os.path.basename(os.path.abspath(folder))}
+#SBATCH --job-name={name or os.path.basename(folder)}
 #SBATCH --array=1-{len(rows)}
 #SBATCH --cpus-per-task={int(cpus)}
 #SBATCH --time={time}
-#SBATCH --output=slurm-%A_%a.out
-{part}# Generated by python -m yade_scripts.generate --slurm: one array task per line of
-# table.txt ({len(rows)} lines). Submit from this folder: sbatch slurm.sh
+#SBATCH --signal=B:TERM@{int(signal_seconds)}
+#SBATCH --requeue
+#SBATCH --open-mode=append
+#SBATCH --output={folder}/slurm-%A_%a.out
+{part}# Generated by python -m yade_scripts.slurm (or generate --slurm): one array task per run
+# line of table.txt ({len(rows)} lines) in the run folder below. Submit from anywhere:
+#   sbatch {folder}/slurm.sh          (some lines only: sbatch --array=2,5 ...)
 # By hand, one task: SLURM_ARRAY_TASK_ID=1 bash slurm.sh
+# Task K runs table line K in the folder <description>/, resuming from its checkpoint;
+# SIGTERM {int(signal_seconds)} s before the time limit: YADE writes a checkpoint and the
+# task requeues itself (at most {requeues} times), so one sbatch runs every line to the end.
 #
 # Cost model (yade_scripts/slurm.py, docs/scenes.md): steps x contacts x us per contact-step
 #   {params['sample']}, {params['n_particles']} grains, kappa={params['kappa']:g}, I={params['inertial_number']:g}:
 #   ~{est['steps']:.3g} steps x ~{est['contacts']:.3g} contacts x {US_PER_CONTACT_STEP[params['sample']]} us
 #   (one core) = ~{est['core_hours']:.3g} core-hours per line
-set -euo pipefail
-HERE="${{RUN_DIR:-${{SLURM_SUBMIT_DIR:-$(cd "$(dirname "$0")" && pwd)}}}}"
-LINES=({' '.join(lines)})
-DESCS=({' '.join(shlex.quote(d) for d in descs)})
-OUTS=({' '.join(shlex.quote(o) for o in outs)})
-task="${{SLURM_ARRAY_TASK_ID:?SLURM_ARRAY_TASK_ID is not set (sbatch sets it)}}"
-if ! [[ "$task" =~ ^[0-9]+$ ]] || (( task < 1 || task > ${{#LINES[@]}} )); then
-    echo "slurm.sh: task $task: no such line (1..${{#LINES[@]}})" >&2; exit 2
-fi
-i=$((task - 1))
-dir="$HERE/${{DESCS[$i]}}"
-mkdir -p "$dir"
-for f in {' '.join(shlex.quote(x) for x in links)}; do ln -sfn "../$f" "$dir/$f"; done
-dump="$dir/${{OUTS[$i]}}"
-complete() {{  # the dump's attribute complete=1, read by a Python that has h5py
-    local py
-    for py in /usr/bin/python3 python3; do
-        if "$py" -c 'import h5py' 2>/dev/null; then
-            "$py" -c 'import h5py, sys; sys.exit(0 if h5py.File(sys.argv[1], "r").attrs.get("complete", 0) else 1)' "$1" 2>/dev/null
-            return $?
-        fi
-    done
-    return 1
-}}
-if [[ -f "$dump" ]] && complete "$dump"; then
-    echo "slurm.sh: ${{DESCS[$i]}}: $dump is complete, nothing to do"; exit 0
-fi
-cd "$dir"
-export YADE_BATCH="$HERE/table.txt:${{LINES[$i]}}"
-export OMP_WAIT_POLICY=PASSIVE
-echo "slurm.sh: task $task = table line ${{LINES[$i]}} (${{DESCS[$i]}}) in $dir on ${{SLURM_CPUS_PER_TASK:-1}} core(s)"
-set +e
-yade -j "${{SLURM_CPUS_PER_TASK:-1}}" -n -x triaxial.py > "$dir/triaxial.log" 2>&1
-status=$?
-echo "slurm.sh: ${{DESCS[$i]}}: yade exit status $status (log $dir/triaxial.log)"
-exit $status
+HERE="${{RUN_DIR:-{folder}}}"
+for f in table.txt triaxial.py params.json pkg; do
+    if [[ ! -e "$HERE/$f" ]]; then
+        echo "slurm.sh: $HERE/$f is missing: not the generated run folder (moved? write slurm.sh again there: python -m yade_scripts.slurm FOLDER)" >&2
+        exit 2
+    fi
+done
+YADE=$(command -v yade) || {{ echo "slurm.sh: yade is not on the PATH of $(hostname)" >&2; exit 2; }}
+# the Python YADE runs on (it has numpy and h5py), else python3
+for PY in "$(head -n 1 "$YADE" | sed -n 's|^#![[:space:]]*\\([^[:space:]]*\\).*|\\1|p')" python3; do
+    [[ -n "$PY" ]] && "$PY" -c 'import numpy, h5py' 2>/dev/null && break
+    PY=
+done
+[[ -n "$PY" ]] || {{ echo "slurm.sh: no Python with numpy and h5py for yade_scripts.task" >&2; exit 2; }}
+export PYTHONPATH="$HERE/pkg" OMP_WAIT_POLICY=PASSIVE
+exec "$PY" -m yade_scripts.task "$HERE" --requeues {int(requeues)}
 """
     path = os.path.join(folder, "slurm.sh")
     with open(path, "w") as fh:
         fh.write(text)
     os.chmod(path, 0o755)
     return path
+
+
+def add_options(ap, prefix="--slurm-"):
+    """The options of a SLURM array on ``ap`` (argparse), named ``prefix`` + cpus, time, ..."""
+    ap.add_argument(prefix + "cpus", type=int, default=2, help="cores per array task (default 2)")
+    ap.add_argument(prefix + "time", default="24:00:00", help="time limit of one job (default 24:00:00)")
+    ap.add_argument(prefix + "partition", help="SLURM partition (default: the cluster's)")
+    ap.add_argument(prefix + "requeues", type=int, default=None,
+                    help="requeues of a task at most, each after a time limit (default 10)")
+    ap.add_argument(prefix + "signal", type=int, default=DEFAULT_SIGNAL_SECONDS,
+                    help=f"SIGTERM this many seconds before the time limit (default {DEFAULT_SIGNAL_SECONDS})")
+
+
+def options_of(args, prefix="slurm_"):
+    """The keyword arguments of :func:`write_slurm` from parsed :func:`add_options`."""
+    g = vars(args)
+    return {"cpus": g[prefix + "cpus"], "time": g[prefix + "time"], "partition": g[prefix + "partition"],
+            "requeues": g[prefix + "requeues"], "signal_seconds": g[prefix + "signal"]}
+
+
+def main(argv=None):
+    from .parameters import ConfigError
+
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.slurm",
+                                 description="Write slurm.sh, a SLURM job array over a run folder's table.")
+    ap.add_argument("folder", help="a generated run folder (table.txt, triaxial.py, pkg/)")
+    add_options(ap, "--")
+    args = ap.parse_args(argv)
+    try:
+        if not os.path.exists(os.path.join(args.folder, "pkg")):
+            raise ConfigError(f"{args.folder}: no pkg/ (not a run folder of this code; an older folder keeps "
+                              f"its own slurm.sh)")
+        path = write_slurm(args.folder, **options_of(args, ""))
+    except ConfigError as exc:
+        print(f"slurm: error: {exc}", file=sys.stderr)
+        return 2
+    print(f"slurm: {path}; submit with: sbatch {path}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

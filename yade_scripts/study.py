@@ -3,74 +3,65 @@
     python -m yade_scripts.study --preset default --out runs/study [--ensemble N]
 
 One seed (default): each sample gets its run folder (``OUT/polyhedra``,
-``OUT/spheres``) and both run side by side, YADE's progress lines relayed
-with the sample name in front. S1 with the compiled contact kernel runs as
-``yade -j2`` (the kernel takes YADE's thread count; S2 is over in seconds,
-then S1 has both cores); S2, and S1 on YADE's stock contacts (which crashed
-with several threads), run on one thread. ``--ensemble N`` (N >= 2):
-each sample gets ``OUT/<sample>-ensemble`` with a yade-batch table of seeds
-1..N, and the seeds of both samples run in one schedule on ``--jobs`` cores
-(:mod:`yade_scripts.pool`: longest first, no core idle at the end;
-``OUT/schedule.json`` holds its attempts and idle core-time). Complete dumps are never run again, so a rerun only does what is
-missing. Every dump is analysed (:func:`postproc.pipeline.analyze_path`, what
-``postproc analyze`` runs) into an analysis
-folder, and every usable S1 dump once more per other contact count
-(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window); ``OUT/manifest.json`` lists the runs and their status, and
-the report (:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A failed run is reported and
-everything else still builds; the exit code is non-zero when a run failed.
+``OUT/spheres``) and both run side by side, YADE's lines relayed with the
+sample name in front. S1 with the compiled contact kernel runs as ``yade
+-j2`` (the kernel takes YADE's thread count; S2 is over in seconds, then S1
+has both cores); S2, and S1 on YADE's stock contacts (which crashed with
+several threads), run on one thread. ``--ensemble N`` (N >= 2): each sample
+gets ``OUT/<sample>-ensemble`` with a table of seeds 1..N, and the seeds of
+both samples run in one schedule on ``--jobs`` cores (longest first, no
+core idle at the end; ``OUT/schedule.json`` holds its attempts and idle
+core-time). Both go through :mod:`yade_scripts.pool`, the one loop that
+runs, resumes and records every run (:mod:`yade_scripts.runstate`). Complete
+dumps are never run again, so a rerun only does what is missing; a folder
+made with other parameters is set aside. Every dump is analysed
+(:func:`analyse_dump`: :func:`postproc.pipeline.analyze_path`, what
+``postproc analyze`` runs) into an analysis folder, and every usable S1
+dump once more per other contact count
+(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window);
+``OUT/manifest.json`` lists the runs and their status, and the report
+(:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A
+failed run is reported and everything else still builds; the exit code is
+non-zero when a run failed.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import shutil
-import subprocess
 import sys
-import threading
 
-from .batch import MAX_RESUMES, clear_attempt, has_checkpoint, resumable, yade_env
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
+from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
 from .resources import check_memory, memory_mb
-
-SAMPLES = ("polyhedra", "spheres")
+from .runstate import complete, read_attempts
 
 
 def finished(folder):
     """True when the folder holds a complete dump and its run.info.json."""
-    from .batch import complete
-
-    return os.path.exists(os.path.join(folder, "run.info.json")) and \
-        complete(os.path.join(folder, "run.h5"))
+    return os.path.exists(os.path.join(folder, "run.info.json")) and complete(os.path.join(folder, "run.h5"))
 
 
 def _set_aside_if_changed(folder, preset, sample, overrides):
-    """A run folder made with other parameters is renamed FOLDER.old-K, so
-    that the run is generated afresh (and never silently reused)."""
+    """A run folder made with other parameters (its params.json against the
+    preset's, :func:`yade_scripts.parameters.changed`) is renamed
+    FOLDER.old-K, so that the run is generated afresh (and never silently
+    reused)."""
     path = os.path.join(folder, "params.json")
     if not os.path.exists(path):
         return
-    import json
-
     with open(path) as fh:
         old = json.load(fh)
-    new = {"preset": preset, **resolve(preset, sample, overrides)}
-    if old == json.loads(json.dumps(new)):
+    names = changed(old, {"preset": preset, **resolve(preset, sample, overrides)})
+    if not names:
         return
     k = 1
     while os.path.exists(f"{folder}.old-{k}"):
         k += 1
     os.rename(folder, f"{folder}.old-{k}")
-    print(f"[{sample}] parameters changed: previous run kept as {folder}.old-{k}", flush=True)
-
-
-def _relay(name, proc, logpath):
-    with open(logpath, "a") as log:
-        for line in proc.stdout:
-            log.write(line)
-            log.flush()
-            if line.startswith("triaxial.py:"):
-                print(f"[{name}] {line[len('triaxial.py: '):].rstrip()}", flush=True)
+    print(f"[{sample}] parameters changed ({', '.join(names)}): previous run kept as {folder}.old-{k}", flush=True)
 
 
 def _threads(sample, preset, overrides):
@@ -82,62 +73,34 @@ def _threads(sample, preset, overrides):
     return 1
 
 
-def _run_with_resumes(name, cmd, folder, result):
-    """Run ``cmd`` in ``folder``; a run that crashed or was stopped by SIGTERM
-    and left a checkpoint is started again (it resumes from the checkpoint),
-    up to MAX_RESUMES times. result[name] = (last exit code, [exit codes])."""
-    codes = []
-    while True:
-        proc = subprocess.Popen(cmd, cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL, text=True, bufsize=1, env=yade_env())
-        _relay(name, proc, os.path.join(folder, "yade.log"))
-        codes.append(proc.wait())
-        if codes[-1] == 0 or not resumable(codes[-1], os.path.join(folder, "run.h5")) \
-                or len(codes) > MAX_RESUMES:
-            break
-        print(f"[{name}] exit {codes[-1]}: resuming from its checkpoint "
-              f"(resume {len(codes)} of at most {MAX_RESUMES})", flush=True)
-    result[name] = (codes[-1], codes)
-
-
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, attempts=None):
-    """Generate (if needed) and run the samples in parallel; returns
-    {sample: return code (0 = done or already done)}. A crashed run is
-    resumed from its checkpoint up to MAX_RESUMES times; ``attempts`` (a
-    dict), when given, receives {sample: [exit code of each attempt]}."""
-    yade = shutil.which("yade")
-    if yade is None:
+def _need_yade():
+    if shutil.which("yade") is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
-    procs = {}
-    results = {}
+
+
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
+    """Generate (if needed) and run one seed of each sample, side by side
+    (:func:`yade_scripts.pool.run_pool`, every job started at once on its
+    own threads, each scene line relayed; the log is the folder's
+    ``yade.log``); returns {sample: status} (0 = done or already done, else
+    the exit code or the reason). A crashed run is resumed from its
+    checkpoint as the pool's rule says."""
+    from .pool import Job, run_pool
+
+    _need_yade()
+    jobs = []
     for s in samples:
         folder = os.path.join(out, s)
         _set_aside_if_changed(folder, preset, s, overrides)
         if finished(folder):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
-        if os.path.exists(os.path.join(folder, "triaxial.py")):
-            if has_checkpoint(os.path.join(folder, "run.h5")):
-                print(f"[{s}] an unfinished run with a checkpoint: resuming it", flush=True)
-            else:
-                clear_attempt(os.path.join(folder, "run.h5"))   # an unfinished attempt; its log is kept
-        else:
+        if not os.path.exists(os.path.join(folder, "triaxial.py")):
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
-        threads = _threads(s, preset, overrides)
-        t = threading.Thread(target=_run_with_resumes, daemon=True,
-                             args=(s, [yade, "-j", str(threads), "-n", "-x", "triaxial.py"], folder, results))
-        t.start()
-        procs[s] = t
-    codes = {s: 0 for s in samples}
-    for s, t in procs.items():
-        t.join()
-        codes[s], tries = results[s]
-        if attempts is not None:
-            attempts[s] = tries
-        status = "done" if codes[s] == 0 else f"FAILED (exit {codes[s]}, see {os.path.join(out, s, 'yade.log')})"
-        print(f"[{s}] {status}" + (f" after {len(tries) - 1} resume(s) (exits {tries})" if len(tries) > 1 else ""),
-              flush=True)
-    return codes
+        jobs.append(Job(folder, None, s, os.path.join(folder, "run.h5"), tag=s, threads=_threads(s, preset, overrides),
+                        log=os.path.join(folder, "yade.log"), echo_all=True))
+    status = run_pool(jobs, max(1, sum(j.threads for j in jobs)), echo=lambda m: print(m, flush=True)) if jobs else {}
+    return {s: status.get(s, 0) for s in samples}
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None):
@@ -152,6 +115,7 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     from .pool import Job, run_pool
     from .slurm import estimate
 
+    _need_yade()
     pool, rows = [], {}
     for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
@@ -169,15 +133,32 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s]]
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True))
-    for job in pool:
-        if job.exits:
-            ATTEMPTS[(job.tag, f"seed {job.description.rsplit('seed', 1)[1]}")] = list(job.exits)
     return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
                 for _, r in rows[s]] for s in samples}
 
 
-#: exit codes of every attempt of the runs of this study, {(sample, label): [codes]}
-ATTEMPTS = {}
+def run_exits(dump):
+    """The exit codes of the recorded attempts of the run writing ``dump``
+    (:func:`yade_scripts.runstate.read_attempts`), stops asked for left
+    out; [] when none is recorded."""
+    return [a.get("exit") for a in read_attempts(dump) if not a.get("requested")]
+
+
+def analyse_dump(dump, analysis, errors=True):
+    """The dump's analysis (:func:`postproc.pipeline.analyze_path`, what
+    ``postproc analyze`` runs; ``errors=False``: no standard errors) into
+    ``analysis``; None when it worked (some bad snapshots allowed: they are
+    in analysis/errors.txt and printed), else the one-line reason."""
+    from postproc.pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+
+    try:
+        _, problems = analyze_path(dump, analysis, AnalysisOptions(errors=errors), progress=False)
+    except BAD_INPUT as exc:
+        print(f"[study] analysis of {dump} failed: {exc}", flush=True)
+        return str(exc)
+    for line in problems:
+        print(f"[study] {dump}: {line}", flush=True)
+    return None if os.path.exists(os.path.join(analysis, "summary.csv")) else "no summary.csv written"
 
 
 def partial_progress(dump):
@@ -187,8 +168,6 @@ def partial_progress(dump):
     dump is unreadable or has no isotropic snapshot. The steady state starts
     at STEADY_START x final_strain in eps_1 (the report's steady window,
     eps_q >= STEADY_START x its final value, in the axial strain)."""
-    import json
-
     import numpy as np
     from postproc.schema import DumpFormatError, DumpReader
     from postproc.statistics import STEADY_START
@@ -208,36 +187,23 @@ def partial_progress(dump):
             "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
 
 
-def analyse_and_report(out, runs, attempts=None):
+def analyse_and_report(out, runs, attempts=None, unfinished=None):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
+    ``unfinished`` {sample: [manifest entry]}: runs that are not to be
+    analysed (:func:`collect`'s unfinished and invalid lines), listed after
+    the analysed ones with their status.
 
     A failed run whose dump got past the start of the steady state (two
     shear snapshots or more with eps_1 >= STEADY_START x final_strain, see
     :func:`partial_progress`) is analysed and marked ``partial``: the report
     uses its steady snapshots and says how far it got. ``attempts``
-    {(sample, label): [exit code of each attempt]} (default: this study's)
-    goes into the manifest when a run was resumed."""
-    import json
-
-    from postproc.pipeline import BAD_INPUT, analyze_path
+    {(sample, label): [exit code of each attempt]}
+    (default: each run's record, :func:`run_exits`) goes into the manifest
+    when a run was resumed."""
     from postproc.study.counts import analyse_counts
     from postproc.study.report import build_report
 
-    def analyse(dump, analysis):
-        """The dump's analysis into ``analysis``; None when it worked (some
-        bad snapshots allowed: they are in analysis/errors.txt), else the
-        one-line reason."""
-        try:
-            _, problems = analyze_path(dump, analysis, progress=False)
-        except BAD_INPUT as exc:
-            print(f"[study] analysis of {dump} failed: {exc}", flush=True)
-            return str(exc)
-        for line in problems:
-            print(f"[study] {dump}: {line}", flush=True)
-        return None if os.path.exists(os.path.join(analysis, "summary.csv")) else "no summary.csv written"
-
-    attempts = ATTEMPTS if attempts is None else attempts
     manifest, failed = {}, []
     for s, items in runs.items():
         manifest[s] = []
@@ -248,7 +214,7 @@ def analyse_and_report(out, runs, attempts=None):
                                     else "analysis-" + os.path.basename(stem))
             info = stem + ".info.json"
             extra = {}
-            tries = attempts.get((s, label), [])
+            tries = attempts.get((s, label), []) if attempts is not None else run_exits(dump)
             if len(tries) > 1:
                 extra["attempts"] = tries
                 extra["note"] = f"resumed {len(tries) - 1} time(s) from its checkpoint (exits {tries})"
@@ -256,7 +222,7 @@ def analyse_and_report(out, runs, attempts=None):
             if status != 0 and progress and progress["steady_snapshots"] >= 2:
                 print(f"[{s}] analysing {label} (partial, reached eps_1 = {progress['eps_1_reached']:.3f}): {dump}",
                       flush=True)
-                bad = analyse(dump, analysis)
+                bad = analyse_dump(dump, analysis)
                 if bad is None:
                     why = "partial"
                     extra["partial"] = progress
@@ -277,7 +243,7 @@ def analyse_and_report(out, runs, attempts=None):
                 failed.append(f"{s} {label}")
             else:
                 print(f"[{s}] analysing {label}: {dump}", flush=True)
-                bad = analyse(dump, analysis)
+                bad = analyse_dump(dump, analysis)
                 why = "ok" if bad is None else f"analysis failed ({bad})"
                 if why != "ok":
                     failed.append(f"{s} {label}")
@@ -289,6 +255,8 @@ def analyse_and_report(out, runs, attempts=None):
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
                                 "analysis": os.path.relpath(analysis, out),
                                 "info": os.path.relpath(info, out), "status": why, **extra})
+    for s, entries in (unfinished or {}).items():
+        manifest.setdefault(s, []).extend(entries)
     with open(os.path.join(out, "manifest.json"), "w") as fh:
         json.dump(manifest, fh, indent=1)
     path = build_report(out)
@@ -298,8 +266,6 @@ def analyse_and_report(out, runs, attempts=None):
 
 def unusable_samples(out):
     """Samples of OUT/manifest.json with no run that is ok or partial."""
-    import json
-
     with open(os.path.join(out, "manifest.json")) as fh:
         manifest = json.load(fh)
     return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
@@ -307,14 +273,20 @@ def unusable_samples(out):
 
 def collect(folder):
     """Analyse and report whatever has finished in the generated run folders
-    at or below ``folder`` (each with a yade-batch ``table.txt``; dumps in
-    the line's own folder, as the SLURM array of ``generate --slurm``
-    writes them, or next to the table, as yade-batch does). Writes
-    FOLDER/manifest.json and FOLDER/report/. Returns (runs analysed as
-    {sample: [(label, dump, 0)]}, lines not finished, failures)."""
-    import json
+    at or below ``folder`` (each with a ``table.txt``; a line's dump in the
+    line's own folder ``<description>/``, as a SLURM array task writes it,
+    or next to the table, as the study and sweeps do), and say what every
+    other line is: resumable at step N, failed (why), unfinished, not
+    started, or an invalid line (:func:`yade_scripts.batch.table_lines`:
+    named, never blocking the other lines or arrays). Writes
+    FOLDER/manifest.json (every line of every table) and FOLDER/report/.
 
-    from .batch import complete, dump_of, read_table
+    Returns (runs analysed as {sample: [(label, dump, 0)]}, lines not
+    finished as ["<folder>/<description> (<state>)"], failures of the
+    analysis, {table folder: command that resubmits its unfinished lines}).
+    Raises ConfigError when no line has finished."""
+    from .batch import dump_of, table_lines
+    from .runstate import state_of
 
     if not os.path.isdir(folder):
         raise ConfigError(f"{folder}: no such folder")
@@ -323,31 +295,67 @@ def collect(folder):
         if os.path.exists(os.path.join(folder, d, "table.txt")))
     if not tables:
         raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
-    runs, pending = {}, []
+    runs, others, pending, resubmit = {}, {}, [], {}
     for t in tables:
+        prefix = f"{os.path.basename(t)} " if len(tables) > 1 else ""
         try:
             with open(os.path.join(t, "params.json")) as fh:
                 sample = json.load(fh)["sample"]
-        except (OSError, ValueError, KeyError):
-            raise ConfigError(f"{t}: params.json missing or without 'sample'") from None
-        for _, r in read_table(t):
-            d = r["description"]
-            own = os.path.join(t, d, os.path.basename(dump_of(t, r)))
-            dump = own if os.path.exists(own) or not os.path.exists(dump_of(t, r)) else dump_of(t, r)
-            label = f"seed {r['seed']}" if "seed" in r else d
-            if len(tables) > 1:
-                label = f"{os.path.basename(t)} {label}"
-            if complete(dump):
-                runs.setdefault(sample, []).append((label, dump, 0))
+            lines = table_lines(t)
+        except (OSError, ValueError, KeyError, ConfigError) as exc:
+            why = str(exc) if isinstance(exc, ConfigError) else f"{t}: params.json missing or without 'sample'"
+            pending.append(f"{os.path.relpath(t, folder)} (invalid run folder: {why})")
+            others.setdefault("unknown", []).append({"label": prefix.strip() or os.path.basename(t), "dump": None,
+                                                     "status": f"invalid run folder: {why}"})
+            continue
+        todo = []
+        for line in lines:
+            label = prefix + (f"seed {line.row['seed']}" if "seed" in line.row and not line.error
+                              else line.description)
+            where = {"table": os.path.relpath(os.path.join(t, "table.txt"), folder), "line": line.number,
+                     "task": line.task}
+            if line.error:
+                st_detail, dump = f"invalid line: {line.error}", None
             else:
-                pending.append(f"{os.path.relpath(os.path.join(t, d), folder)} "
-                               f"({'unfinished' if os.path.exists(dump) else 'not started'})")
+                own = os.path.join(t, line.description)
+                dump = (os.path.join(own, os.path.basename(dump_of(t, line.row))) if os.path.isdir(own)
+                        else dump_of(t, line.row))
+                st = state_of(dump)
+                if st.finished:
+                    runs.setdefault(sample, []).append((label, dump, 0))
+                    continue
+                st_detail = st.detail
+                todo.append(line)
+            pending.append(f"{os.path.relpath(os.path.join(t, line.description), folder)} ({st_detail})")
+            others.setdefault(sample, []).append({"label": label, "dump": dump and os.path.relpath(dump, folder),
+                                                  "status": st_detail, **where})
+        name = os.path.basename(os.path.abspath(t))
+        slurm_sh = os.path.join(os.path.abspath(t), "slurm.sh")
+
+        def command(ls):
+            if os.path.exists(slurm_sh):
+                return f"sbatch --array={','.join(str(x.task) for x in ls)} {slurm_sh}"
+            return f"python -m yade_scripts.batch {os.path.abspath(t)} --only {' '.join(x.description for x in ls)}"
+
+        if todo:
+            resubmit[t] = command(todo)
+        mine = [e for e in others.get(sample, []) if e.get("table") == os.path.relpath(os.path.join(t, "table.txt"),
+                                                                                      folder)]
+        for e, line in zip(mine, [x for x in lines if x.error or x in todo]):
+            if line.error:
+                e["note"] = f"fix line {line.number} of {name}/table.txt, then: {command([line])}"
+            else:
+                e["resubmit"] = resubmit[t]
+                e["note"] = f"resubmit the unfinished lines of {name}: {resubmit[t]}"
     for p in pending:
         print(f"study: not finished: {p}", file=sys.stderr)
+    for t, cmd in resubmit.items():
+        print(f"study: resubmit the unfinished lines of {os.path.basename(os.path.abspath(t))}: {cmd}",
+              file=sys.stderr)
     if not runs:
         raise ConfigError(f"{folder}: no run has finished yet ({len(pending)} pending)")
-    failed = analyse_and_report(folder, runs)
-    return runs, pending, failed
+    failed = analyse_and_report(folder, runs, unfinished=others)
+    return runs, pending, failed, resubmit
 
 
 def main(argv=None):
@@ -367,7 +375,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if args.collect:
         try:
-            runs, pending, failed = collect(args.collect)
+            runs, pending, failed, _ = collect(args.collect)
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
@@ -387,9 +395,7 @@ def main(argv=None):
                      [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
         os.makedirs(args.out, exist_ok=True)
         if args.ensemble == 1:
-            tries = {}
-            codes = run_samples(args.out, args.preset, overrides, args.library, attempts=tries)
-            ATTEMPTS.update({(s, "seed 1"): t for s, t in tries.items()})
+            codes = run_samples(args.out, args.preset, overrides, args.library)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             if args.jobs < 1 or args.job_threads < 1:

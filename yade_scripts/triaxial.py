@@ -6,30 +6,31 @@ gravity, friction 0.5 between particles and 0 at the walls, is compressed
 isotropically to sigma0, then sheared: the top wall moves down at constant
 speed, the bottom wall is fixed and the four lateral walls hold sigma0 on
 their current area. Snapshots of every contact go to an HDF5 dump
-(postproc/schema.py, copied as lib/dumpschema.py), wall stresses to
-OUT.log.csv and a summary (solid fraction, time step, costs, the host) to
-OUT.info.json, where OUT is the dump name without .h5 (run.h5 by default).
+(postproc/schema.py), wall stresses to OUT.log.csv and a summary (solid
+fraction, time step, costs, the host) to OUT.info.json, where OUT is the dump
+name without .h5 (run.h5 by default).
 
 This file is a template: ``python -m yade_scripts.generate`` copies it into a
-run folder with the parameters below set from a preset, next to lib/ (the
-helper modules) and, for polyhedra, shapes.h5. Run it there with
+run folder with the parameters below set from a preset, next to ``pkg/`` (a
+copy of this repository's packages ``yade_scripts``, ``shapes`` and
+``postproc``, imported under their own names) and, for polyhedra,
+shapes.h5. Run it there with
 
     yade -x triaxial.py            (or OMP_WAIT_POLICY=PASSIVE yade -j2 -x triaxial.py:
                                     the polyhedra kernel then uses 2 threads)
-    yade-batch table.txt triaxial.py     (sweeps and seed ensembles)
+    python -m yade_scripts.batch FOLDER --jobs 2    (every line of table.txt; or yade-batch)
 
-A yade-batch table overrides any parameter by its name.
-
-The loading program (servo, shear, when to take snapshots and stop) is
-lib/loading.py; how an attempt begins, runs and stops is lib/attempt.py.
-Checkpoints and resume: every ``checkpoint_seconds`` of wall time, and when
-the process receives SIGTERM (what SLURM and most schedulers send before a
-kill), the run writes OUT.ckpt (lib/checkpoint.py: the YADE scene by O.save,
-the controller's state, the kernel's state or the tangential histories, the
-dump position), atomically, keeping the previous one as OUT.ckpt.prev. Run
-the same command again in the folder and it resumes from the newest usable
-checkpoint, appending to the same dump (``resume=False`` starts afresh).
-Exit codes: 0 done (or already complete), 3 stopped on a blow-up or
+A table line (``YADE_BATCH=table.txt:LINE``, as yade-batch sets it)
+overrides any parameter by its name; the parameters are checked first
+(yade_scripts/parameters.py). The loading program (servo, shear, when to
+take snapshots and stop) is yade_scripts/loading.py. Checkpoints and resume
+(yade_scripts/attempt.py): every ``checkpoint_seconds`` of wall time, and
+when the process receives SIGTERM (what SLURM and most schedulers send
+before a kill), the run writes OUT.ckpt atomically, keeping the previous one
+as OUT.ckpt.prev. Run the same command again in the folder and it resumes
+from the newest usable checkpoint, appending to the same dump
+(``resume=False`` starts afresh). Exit codes (yade_scripts/runstate.py): 0
+done (or already complete), 2 invalid parameters, 3 stopped on a blow-up or
 max_steps (message printed, snapshots kept), 75 checkpoint written after
 SIGTERM (run again to resume), anything else a crash (run again to resume
 from the last periodic checkpoint).
@@ -38,7 +39,6 @@ import json
 import math
 import os
 import sys
-import time
 
 import numpy as np
 from yade import log, polyhedra_utils, utils
@@ -98,48 +98,47 @@ from yade.params.table import (  # noqa: E402
 # --- end of parameters ---
 
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
-sys.path.insert(0, os.path.join(HERE, "lib"))
-import attempt  # noqa: E402
-import checkpoint  # noqa: E402
-import dumpschema  # noqa: E402
-import host  # noqa: E402
-import loading  # noqa: E402
-import sample as sampling  # noqa: E402
-import servo  # noqa: E402
-import sizes  # noqa: E402
-import timestep  # noqa: E402
-import yadedump  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, "pkg"))      # this run's copy of the repository's packages
+from postproc.schema import DumpWriter  # noqa: E402
+from shapes import sizes  # noqa: E402
+from shapes.library import ShapeLibrary  # noqa: E402
+from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
+from yade_scripts import sample as sampling  # noqa: E402
+from yade_scripts.attempt import Attempt, Progress  # noqa: E402
+from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
+from yade_scripts.runstate import EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
 
+
+def say(message):
+    print(f"triaxial.py: {message}", flush=True)
+
+
+PARAMS = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
+try:
+    check({k: v for k, v in PARAMS.items() if k in DEFAULTS})
+except ConfigError as exc:
+    say(f"invalid parameter: {exc}")
+    sys.exit(EXIT_CONFIG)
 POLY = sample == "polyhedra"
-if sample not in ("polyhedra", "spheres"):
-    raise SystemExit(f"triaxial.py: sample must be 'polyhedra' or 'spheres', got {sample!r}")
-if contact_engine not in ("kernel", "yade"):
-    raise SystemExit(f"triaxial.py: contact_engine must be 'kernel' or 'yade', got {contact_engine!r}")
 KERNEL = POLY and contact_engine == "kernel"
 # Polyhedra_support.cpp can print gigabytes of "Unhandled switch case"
 # warnings; keep its errors, drop its warnings.
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 os.chdir(HERE)
 
-# ------------------------------------------------------------ resume from a checkpoint, or start afresh
-params = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
-stem = out[:-3] if out.endswith(".h5") else out                # run.h5 -> run.log.csv, run.info.json, run.ckpt
-DUMP, CKPT = os.path.join(HERE, out), os.path.join(HERE, stem + ".ckpt")
-begin, resumed = attempt.resume_or_start(DUMP, CKPT, os.path.join(HERE, stem), checkpoint.fingerprint(params),
-                                         resume, dumpschema, say=lambda m: print(f"triaxial.py: {m}", flush=True))
-if begin == "complete":
-    print(f"triaxial.py: {out} is complete already; nothing to do (delete it to run again)", flush=True)
-    sys.exit(attempt.EXIT_DONE)
-runner = attempt.Runner(O, checkpoint_seconds)     # from here on SIGTERM stops the run at the end of a step
+# ------------------------------------------------------------ this attempt: resume, or start afresh
+run = Attempt(O, os.path.join(HERE, out), PARAMS, checkpoint_seconds, resume, timing, say)
+if run.complete:
+    say(f"{out} is complete already; nothing to do (delete it to run again)")
+    sys.exit(EXIT_DONE)
+# from here on SIGTERM stops the run at the end of a step, with a checkpoint
 
 # ------------------------------------------------------------ sample
 rng = np.random.default_rng(seed)
 d = sizes.sample_diameters(n_particles, rng)               # m, exact class counts
 d_mean = float(d.mean())
 if POLY:
-    import shapelib  # noqa: E402
-
-    lib = shapelib.ShapeLibrary(os.path.join(HERE, library))
+    lib = ShapeLibrary(os.path.join(HERE, library))
     shape_of = rng.integers(len(lib), size=n_particles)
     quats = sampling.random_quaternions(n_particles, rng)
     face_area = []                                          # per library shape, d = 1
@@ -151,9 +150,9 @@ if POLY:
     rot_mass = np.array([timestep.rotational_mass(lib.volume[s], np.diag(lib.inertia[s]), lib[s][0])
                          for s in range(len(lib))])       # d = 1, unit density
 if POLY and placement == "grains":        # the grains themselves never overlap (exact test, shapes/overlap.py)
-    import overlap  # noqa: E402
+    from shapes.overlap import OrientedGrains  # noqa: E402
 
-    grains = overlap.OrientedGrains([(lib[s][0] * d[k], lib[s][1]) for k, s in enumerate(shape_of)], quats)
+    grains = OrientedGrains([(lib[s][0] * d[k], lib[s][1]) for k, s in enumerate(shape_of)], quats)
     box0, centres = sampling.place_exact_in_box(d ** 3 * lib.volume[shape_of], d / 2, initial_fraction, aspect, rng,
                                                 grains.overlaps)
 else:                                     # bounding spheres never overlap
@@ -238,7 +237,7 @@ d_of[particles] = d
 if KERNEL:
     # Every polyhedra-polyhedra and polyhedra-wall contact comes from the
     # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
-    from kernel_contacts import KernelContacts, KernelError  # noqa: E402
+    from yade_scripts.kernel_contacts import KernelContacts, KernelError  # noqa: E402
 
     # the library's grains (d = 1) scaled to each particle, in the library's order
     shape_v = [lib[int(s_k)][0] * d_k for s_k, d_k in zip(shape_of, d)]
@@ -246,8 +245,8 @@ if KERNEL:
     kernel = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, tangential_ratio * k_v * a_face,
                             compaction_friction, wall_friction, verlet_skin * d_mean, kernel_threads or O.numThreads)
     if kernel.threads > 1 and os.environ.get("OMP_WAIT_POLICY", "").lower() != "passive":
-        print("triaxial.py: note: OMP_WAIT_POLICY=PASSIVE is not set; with other jobs on the same cores, "
-              "OpenMP's spinning threads can slow the kernel down many times", flush=True)
+        say("note: OMP_WAIT_POLICY=PASSIVE is not set; with other jobs on the same cores, "
+            "OpenMP's spinning threads can slow the kernel down many times")
     O.engines = [
         ForceResetter(),
         PyRunner(command="kernel_step()", iterPeriod=1, initRun=True, label="kernel_contacts"),
@@ -255,7 +254,7 @@ if KERNEL:
         NewtonIntegrator(damping=compaction_damping, label="newton"),
     ]
 elif POLY:
-    from tangential import TangentialLaw  # noqa: E402
+    from yade_scripts.tangential import TangentialLaw  # noqa: E402
 
     tangential_law = TangentialLaw(O, Vector3, kt_of)
     O.engines = [
@@ -289,29 +288,31 @@ derived = {
     "d_mean": d_mean, "kn_volumetric": k_v if POLY else None, "young": 2 * k_v if POLY else young,
     "a_face": a_face if POLY else None, "contact_engine": contact_engine if POLY else "yade",
 }
+if run.resumed:                                           # as the first attempt computed them
+    derived = {k: run.resumed.dump_parameters.get(k, v) for k, v in derived.items()}
 shape_index = np.arange(n_particles) if POLY else np.full(n_particles, -1)
-if resumed:         # the dump reopened after the checkpoint's snapshots, the log cut at its row
-    for k in derived:                                     # as the first attempt computed them
-        derived[k] = json.loads(resumed[1]["dump_parameters"]).get(k, derived[k])
-    writer = resumed[4]
-    writer.attrs["parameters"] = resumed[1]["dump_parameters"]
-    log_file = open(os.path.join(HERE, stem + ".log.csv"), "a+")
-    log_file.truncate(min(resumed[1]["log_bytes"], log_file.seek(0, os.SEEK_END)))
-    log_file.seek(0, os.SEEK_END)
-    particle_volumes = resumed[2]["particle_volumes"]
-else:
-    writer = dumpschema.DumpWriter(DUMP, sample, {**params, **derived}, overlap_kind="volume" if POLY else "depth")
+
+
+def new_dump():
+    """The dump of a run that starts afresh, with the grains' shapes."""
+    writer = DumpWriter(os.path.join(HERE, out), sample, {**PARAMS, **derived},
+                        overlap_kind="volume" if POLY else "depth")
     if KERNEL:      # the kernel's grains: the library's, scaled
         writer.write_shapes(shape_v, shape_t, [lib[int(s_k)][2] for s_k in shape_of])
     elif POLY:
         writer.write_shapes(*yadedump.polyhedra_shapes(O, particles))
-    log_file = open(os.path.join(HERE, stem + ".log.csv"), "w")
-    log_file.write(loading.LOG_HEADER)
-    if KERNEL:
-        particle_volumes = d ** 3 * lib.volume[shape_of]
-    else:
-        particle_volumes = np.array([O.bodies[int(i)].shape.GetVolume() if POLY else
-                                     4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3 for i in particles])
+    return writer
+
+
+writer = run.open_dump(new_dump)
+log_file = run.open_log(loading.LOG_HEADER)
+if run.resumed:                                           # as the first attempt measured them
+    particle_volumes = run.resumed.arrays["particle_volumes"]
+elif KERNEL:
+    particle_volumes = d ** 3 * lib.volume[shape_of]
+else:
+    particle_volumes = np.array([O.bodies[int(i)].shape.GetVolume() if POLY else
+                                 4 / 3 * math.pi * O.bodies[int(i)].shape.radius ** 3 for i in particles])
 volume_particles = float(sum(particle_volumes))
 
 
@@ -377,10 +378,9 @@ def snapshot(stage):
 
 def fail(reason):
     """Stop on a blow-up: say why, keep every snapshot written so far."""
-    print(f"triaxial.py: STOPPED at step {O.iter} ({program.stage}, eps_1 = {program.eps_1:.4f}): {reason}. "
-          f"The {writer.n_snapshots} snapshot(s) written before are kept in {out}.", flush=True)
-    runner.failed = reason
-    O.pause()
+    say(f"STOPPED at step {O.iter} ({program.stage}, eps_1 = {program.eps_1:.4f}): {reason}. "
+        f"The {writer.n_snapshots} snapshot(s) written before are kept in {out}.")
+    run.fail(reason)
 
 
 def check_blowup(lo, hi, F):
@@ -408,26 +408,29 @@ def report(sig, L):
     sps = progress.tick(O.iter)
     if sps is None:
         return
+    left = None
     if program.stage == "shear":
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
         qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 > 0 else float("nan")
         where = f"eps_1 {program.eps_1:.4f}, q/p (walls) {qp:.3f}"
-        eta = f"about {program.seconds_left(L, sps) / 60:.1f} min left"
+        left = program.seconds_left(L, sps)
+        eta = f"about {left / 60:.1f} min left"
     else:
         where = f"sigma/sigma0 {np.round(sig / sigma0, 3)}"
         eta = "time left known once shear starts"
-    print(f"triaxial.py: step {O.iter} {program.stage}: {where}, {counts()[0]} interactions, "
-          f"{sps:.0f} steps/s, {eta}", flush=True)
+    say(f"step {O.iter} {program.stage}: {where}, {counts()[0]} interactions, {sps:.0f} steps/s, {eta}")
+    run.progress(step=O.iter, stage=program.stage, eps_1=float(program.eps_1), steps_per_second=sps,
+                 seconds_left=None if left is None else float(left))
 
 
 # ------------------------------------------------------------ the controller (every step)
 program = loading.TriaxialLoading(sigma0, rate_compact, rate_shear, wall_speed, servo_gain, servo_time, kappa, O.dt,
                                   iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor)
-progress = attempt.Progress(report_seconds)
+progress = Progress(report_seconds)
 
 
 def control():
-    runner.end_of_step()
+    run.end_of_step()
     lo, hi = box()
     L = hi - lo
     F = wall_forces()
@@ -436,16 +439,16 @@ def control():
         set_wall_velocities(program.compaction_velocities(sig, L))
         if program.isotropic(O.iter, sig, unbalanced):
             phi = volume_particles / np.prod(L)
-            print(f"triaxial.py: isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
-                  f"solid fraction {phi:.4f}, unbalanced force {unbalanced():.2e}", flush=True)
+            say(f"isotropic state at step {O.iter}: sigma/sigma0 = {np.round(sig / sigma0, 4)}, "
+                f"solid fraction {phi:.4f}, unbalanced force {unbalanced():.2e}")
             snapshot("isotropic")
-            v_top = program.start_shear(L, phi, O.iter, runner.wall_seconds())
+            v_top = program.start_shear(L, phi, O.iter, run.wall_seconds())
             newton.damping = damping
             if compaction_friction != friction:
                 set_friction(friction)
-                print(f"triaxial.py: friction {compaction_friction:g} -> {friction:g} for shear", flush=True)
+                say(f"friction {compaction_friction:g} -> {friction:g} for shear")
             writer.update_parameters(top_wall_speed=v_top, solid_fraction_isotropic=phi, box_isotropic=L.tolist())
-            print(f"triaxial.py: shear: top wall at {v_top:.4g} m/s", flush=True)
+            say(f"shear: top wall at {v_top:.4g} m/s")
     else:
         set_wall_velocities(program.shear_velocities(sig, L))
         if program.snapshot_due():
@@ -471,99 +474,78 @@ def control():
 
 
 # ------------------------------------------------------------ checkpoints
-# Taken between two steps (the runner stops YADE at the end of a step first),
-# so that every part of the state belongs to the same instant. The YADE
+# Taken between two steps (the attempt stops YADE at the end of a step
+# first), so that every part of the state belongs to the same instant. YADE's
 # scene goes through O.save (bodies with their masses, inertias, poses and
 # velocities, the interactions with their histories, materials, engines,
-# iteration and time). YADE re-initialises Polyhedra shapes on O.load
-# (vertex order and round-off change); the kernel's grains come from the
-# library, the same on every attempt, and the dump's /shapes stay those of
-# the first attempt.
-def engine_times():
-    return {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in O.engines} if timing else {}
-
-
-def save_checkpoint(why):
-    t_save = time.time()
-    scene = attempt.scene_bytes(O, CKPT + ".scene.yade")
-    log_file.flush()
-    meta = {"fingerprint": checkpoint.fingerprint(params), "step": O.iter, "time": O.time, "stage": program.stage,
-            "eps_1": float(program.eps_1), "state": program.saved(), "n_snapshots": writer.n_snapshots,
-            "dump_parameters": writer.attrs["parameters"], "log_bytes": log_file.tell(),
-            "friction": math.tan(O.materials[0].frictionAngle), "why": why, **runner.history(engine_times())}
+# iteration and time); the rest is below. YADE re-initialises Polyhedra
+# shapes on O.load (vertex order and round-off change); the kernel's grains
+# come from the library, the same on every attempt, and the dump's /shapes
+# stay those of the first attempt.
+def scene_state():
+    """What a checkpoint keeps beside YADE's scene: (JSON-able dict, arrays)."""
+    state = {"state": program.saved(), "friction": math.tan(O.materials[0].frictionAngle)}
     arrays = {"particle_volumes": particle_volumes}
     if KERNEL:
-        arrays.update(checkpoint.pack_arrays("kernel", kernel.engine.state()))
-        meta["kernel_counters"] = kernel.counters()
+        arrays.update({f"kernel/{k}": v for k, v in kernel.engine.state().items()})
+        state["kernel_counters"] = kernel.counters()
     elif POLY:
         keys = list(tangential_law.history)
         arrays["tangential_ids"] = np.array(keys, np.int64).reshape(-1, 2)
         arrays["tangential_force"] = np.array([tangential_law.history[k] for k in keys], float).reshape(-1, 3)
-    size = checkpoint.save(CKPT, meta, arrays, {"scene": scene})
-    print(f"triaxial.py: checkpoint ({why}) at step {O.iter} ({program.stage}, eps_1 = {program.eps_1:.4f}): "
-          f"{os.path.basename(CKPT)}, {size / 1e6:.1f} MB in {time.time() - t_save:.2f} s", flush=True)
+    return state, arrays
 
 
-def restore_checkpoint(path, meta, arrays, blobs):
-    """Put the run back in the state of the checkpoint: the YADE scene, then
-    everything this script keeps beside it."""
-    attempt.load_scene_bytes(O, blobs["scene"], CKPT + ".scene.yade")
-    program.restore(meta["state"])
+def set_scene_state(state, arrays):
+    """Put back what :func:`scene_state` kept (YADE's scene is loaded already)."""
+    program.restore(state["state"])
     progress.restart(O.iter)
     if KERNEL:
         kernel.rebind()
-        kernel.engine.set_state(checkpoint.unpack_arrays("kernel", arrays))
-        kernel.set_counters(meta["kernel_counters"])
+        kernel.engine.set_state({k[len("kernel/"):]: v for k, v in arrays.items() if k.startswith("kernel/")})
+        kernel.set_counters(state["kernel_counters"])
     elif POLY:
         tangential_law.history = {(int(a), int(b)): tuple(f) for (a, b), f in
                                   zip(arrays["tangential_ids"].tolist(), arrays["tangential_force"].tolist())}
-    runner.resumed_from(meta, {"step": O.iter, "stage": program.stage, "eps_1": program.eps_1,
-                               "checkpoint": os.path.basename(path), "written_because": meta["why"],
-                               "at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())})
-    print(f"triaxial.py: resumed from {os.path.basename(path)} at step {O.iter} ({program.stage}, "
-          f"eps_1 = {program.eps_1:.4f}, {writer.n_snapshots} snapshots kept, friction {meta['friction']:g})",
-          flush=True)
+
+
+def stage_and_strain():
+    """(stage, eps_1) now, for the checkpoint lines."""
+    return program.stage, program.eps_1
 
 
 # ------------------------------------------------------------ run
-print(f"triaxial.py: {n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
-      f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m", flush=True)
-runner.start()
-if resumed:
-    restore_checkpoint(*resumed[:4])
+say(f"{n_particles} {sample}, dt = {O.dt:.3g} s ({safety} x {dt_crit:.3g}), "
+    f"shear rate {rate_shear:.3g} 1/s, box {np.round(box0, 4)} m")
+run.start()
+if run.resumed:
+    run.restore(set_scene_state, stage_and_strain)
     newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)][0]     # the loaded scene's own engine
 O.timingEnabled = bool(timing)
-while True:
-    due = runner.run_until_stop()
-    if runner.failed or program.stage == "done":
-        break
-    if not due:
-        fail("the simulation stopped without a reason (an exception in a PyRunner?)")
-        break
-    save_checkpoint("SIGTERM" if runner.terminated else "periodic")
-    runner.checkpointed()
-    if runner.terminated:
-        log_file.close()
-        print(f"triaxial.py: stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} "
-              f"snapshot(s) are kept: run again in this folder to resume (exit {attempt.EXIT_TERM})", flush=True)
-        sys.exit(attempt.EXIT_TERM)
+outcome = run.loop(done=lambda: program.stage == "done", get_state=scene_state, where=stage_and_strain)
+if outcome == "stalled":
+    fail("the simulation stopped without a reason (an exception in a PyRunner?)")
 log_file.close()
-if runner.failed:
+if outcome == "terminated":
+    say(f"stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} snapshot(s) are kept: "
+        f"run again in this folder to resume (exit {EXIT_TERM})")
+    sys.exit(EXIT_TERM)
+if run.failed:
     writer.close(pack=True, complete=False)
-    checkpoint.remove(CKPT)      # a blow-up replays identically from a checkpoint: nothing to resume
-    sys.exit(attempt.EXIT_FAILED)
+    run.finish()                  # a blow-up replays identically from a checkpoint: nothing to resume
+    sys.exit(EXIT_FAILED)
 writer.close(pack=True)
-checkpoint.remove(CKPT)
-info = {"steps": O.iter, "time": O.time, "wall_seconds": runner.wall_seconds(),
+run.finish()
+history = run.history()
+info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"],
         "solid_fraction_isotropic": program.phi_iso, "snapshots": writer.n_snapshots,
         "contact_steps": program.contact_steps, "interaction_steps": program.interaction_steps,
         "shear_start_step": program.shear_start_step, "shear_start_wall_seconds": program.shear_start_wall,
-        "engine_seconds": runner.history(engine_times())["engine_seconds"], "resumes": runner.resumes, **derived,
+        "engine_seconds": history["engine_seconds"], "resumes": history["resumes"], **derived,
         "host": host.host_info()}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
                       "memory_bytes": kernel.memory_bytes()}
-with open(os.path.join(HERE, stem + ".info.json"), "w") as fh:
+with open(run.files.info, "w") as fh:
     json.dump(info, fh, indent=1)
-print(f"triaxial.py: done in {runner.wall_seconds() - runner.earlier_wall_seconds:.0f} s, {O.iter} steps; "
-      f"dump {out}", flush=True)
+say(f"done in {run.wall_seconds() - run.earlier_wall_seconds:.0f} s, {O.iter} steps; dump {out}")

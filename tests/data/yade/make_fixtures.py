@@ -21,7 +21,6 @@ diagonal, so the stress has off-diagonal terms and the cell is tilted. At three 
   ``utils.fabricTensor()`` beside the cell, its volume and the number of
   contacts carrying a force.
 """
-import importlib.util
 import json
 import os
 import sys
@@ -31,13 +30,9 @@ from yade import pack, utils
 
 HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith(".py") else __file__))
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
-sys.path.insert(0, os.path.join(ROOT, "yade_scripts"))
-import yadedump  # noqa: E402
-
-spec = importlib.util.spec_from_file_location("dumpschema", os.path.join(ROOT, "postproc", "schema.py"))
-dumpschema = importlib.util.module_from_spec(spec)
-sys.modules["dumpschema"] = dumpschema
-spec.loader.exec_module(dumpschema)
+sys.path.insert(0, ROOT)
+from postproc.schema import DumpWriter  # noqa: E402
+from yade_scripts import yadedump  # noqa: E402
 
 SIGMA0, N, R = 1e4, 150, 0.004
 O.periodic = True
@@ -67,7 +62,7 @@ out = os.path.join(HERE, "yade.h5")
 for f in [out] + [os.path.join(HERE, f) for f in os.listdir(HERE) if f.startswith("table-")]:
     if os.path.exists(f):
         os.remove(f)
-writer = dumpschema.DumpWriter(out, "spheres", {"sigma0": SIGMA0, "friction": 0.5, "source": "make_fixtures.py"},
+writer = DumpWriter(out, "spheres", {"sigma0": SIGMA0, "friction": 0.5, "source": "make_fixtures.py"},
                                overlap_kind="depth")
 reference = []
 

@@ -1,0 +1,190 @@
+"""A real single-node SLURM cluster (.ci/slurm-node: Debian's slurm-wlm 22.05
+and munge, accounting by slurmdbd and MariaDB) runs arrays of tiny scenes:
+
+* array A, three tiny S1 lines whose runs outlast the one-minute time limit,
+  submitted once from another folder: SIGTERM before the limit, each task
+  checkpoints and requeues itself until its run is complete, without a
+  human; SLURM's accounting shows the requeues and the final COMPLETED with
+  the task's reason; every attempt's log and SLURM's own output are kept;
+  the dumps equal, bit for bit, those of the same lines run uninterrupted;
+* array C, tiny S2 lines with a hand-edited invalid fourth line, of which
+  only line 1 and the invalid one are submitted (``sbatch -D`` elsewhere):
+  the invalid task fails at once, named in the accounting; ``--collect``
+  on the partly finished array (and on the folder of both arrays) lists
+  every line with its state and the command that resubmits the rest.
+
+Needs root, yade and the Debian packages (``make test-slurm`` installs
+them); skipped otherwise, with the reason. About 6-9 minutes on the
+shared 2-core host (docs/scenes.md).
+"""
+import json
+import os
+import shutil
+import subprocess
+import time
+
+import h5py
+import numpy as np
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NODE = os.path.join(ROOT, ".ci", "slurm-node")
+YADE = shutil.which("yade")
+pytestmark = [pytest.mark.yade, pytest.mark.slurm, pytest.mark.timeout(1800)]
+
+
+@pytest.fixture(scope="module")
+def cluster(tmp_path_factory):
+    """SLURM_CONF of a single-node cluster brought up for these tests (and
+    taken down after)."""
+    if YADE is None:
+        pytest.skip("Debian yade is not installed")
+    check = subprocess.run([NODE, "check"], capture_output=True, text=True)
+    if check.returncode != 0:
+        pytest.skip(f"no single-node SLURM on this host: {check.stderr.strip()}")
+    d = tmp_path_factory.mktemp("slurm-node")
+    up = subprocess.run([NODE, "up", str(d)], capture_output=True, text=True, timeout=300)
+    assert up.returncode == 0, up.stderr
+    env = dict(os.environ, SLURM_CONF=str(d / "slurm.conf"))
+    version = subprocess.run(["sinfo", "--version"], capture_output=True, text=True, env=env).stdout.strip()
+    print(f"cluster: {up.stderr.strip()} ({version})")
+    yield env
+    subprocess.run([NODE, "down", str(d)], capture_output=True, text=True, timeout=300)
+
+
+def run(env, *cmd, cwd=None):
+    r = subprocess.run(list(cmd), env=env, cwd=cwd, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, f"{' '.join(cmd)}: {r.stderr}"
+    return r.stdout
+
+
+def sbatch(env, *args, cwd):
+    return run(env, "sbatch", "--parsable", *args, cwd=cwd).strip().split(";")[0]
+
+
+def wait_for(env, job, timeout):
+    """Seconds until no task of ``job`` is pending or running."""
+    t0 = time.time()
+    while True:
+        r = subprocess.run(["squeue", "-h", "-j", job, "-o", "%i %T %r"], env=env, capture_output=True, text=True)
+        if r.returncode != 0 or not r.stdout.strip():
+            return time.time() - t0
+        assert time.time() - t0 < timeout, f"job {job} not done after {timeout} s:\n{r.stdout}"
+        time.sleep(3)
+
+
+def records(env, job, tasks, timeout=120):
+    """{task: [(state, exit code, comment)]} of the job's array tasks from
+    sacct (requeued instances included, oldest first), once every task has
+    a final record (slurmdbd writes them a little after the end)."""
+    t0 = time.time()
+    while True:
+        out = run(env, "sacct", "-j", job, "--duplicates", "--parsable2", "--noheader",
+                  "--format=JobID,State,ExitCode,Comment")
+        recs = {}
+        for line in out.splitlines():
+            jid, state, code, comment = line.split("|", 3)
+            if "." in jid or "_" not in jid:
+                continue
+            recs.setdefault(int(jid.split("_")[1]), []).append((state, code, comment))
+        final = {k: v for k, v in recs.items() if v and v[-1][0] not in ("PENDING", "RUNNING", "REQUEUED")}
+        if set(final) >= set(tasks):
+            return recs
+        assert time.time() - t0 < timeout, f"sacct has no final record of every task of {job}:\n{out}"
+        time.sleep(2)
+
+
+def datasets(path):
+    with h5py.File(path, "r") as f:
+        out = {}
+        f.visititems(lambda n, o: out.__setitem__(n, np.asarray(o[()])) if isinstance(o, h5py.Dataset) else None)
+        return out, json.loads(f.attrs["parameters"]), bool(f.attrs["complete"])
+
+
+def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys):
+    from yade_scripts.batch import run_batch
+    from yade_scripts.generate import main as generate
+    from yade_scripts.study import main as study
+
+    t_start = time.time()
+    env = cluster
+    arrays, elsewhere, other = tmp_path / "arrays", tmp_path / "elsewhere", tmp_path / "other"
+    for d in (arrays, elsewhere, other):
+        d.mkdir()
+    # C: S2 lines, the fourth invalid (a hand edit); only lines 1 and 4 submitted, with -D elsewhere
+    c = arrays / "C"
+    assert generate(["--preset", "tiny", "--sample", "spheres", "--out", str(c), "--seeds", "1", "2", "3",
+                     "--slurm", "--slurm-cpus", "1", "--slurm-time", "10:00", "--slurm-signal", "60"]) == 0
+    (c / "table.txt").write_text("description seed kappa out\n" + "".join(
+        f"spheres-seed{k} {k} {kappa} 'spheres-seed{k}.h5'\n" for k, kappa in ((1, "150.0"), (2, "150.0"),
+                                                                              (3, "150.0"), (4, "-150"))))
+    job_c = sbatch(env, "-D", str(other), "--array=1,4", str(c / "slurm.sh"), cwd=elsewhere)
+    # A: three S1 lines; first the same lines run uninterrupted, here: how long a line takes on this
+    # host sets A's time limit, so that every line outlasts it whatever the host's speed
+    a_set = ["--set", "final_strain=0.05", "--set", "kernel_threads=1"]
+    ref, a = tmp_path / "ref", arrays / "A"
+    for out in (ref, a):
+        assert generate(["--preset", "tiny", "--sample", "polyhedra", "--out", str(out), "--seeds", "1", "2", "3",
+                         "--library", shape_library, *a_set]) == 0
+    assert run_batch(str(ref), jobs=2, echo=lambda m: None) == {f"polyhedra-seed{k}": 0 for k in (1, 2, 3)}
+    line_seconds = min(json.loads((ref / f"polyhedra-seed{k}.attempts.json").read_text())[-1]["seconds"]
+                       for k in (1, 2, 3))
+    # SLURM checks time limits every 30 s, so SIGTERM comes between gap - 30 and gap seconds into a job:
+    # a third of the shortest line (the host would have to get 3 times faster meanwhile for one to escape)
+    gap, lead = max(20, int(line_seconds / 3)), 30
+    limit = gap + lead
+    from yade_scripts.slurm import main as write_slurm
+    assert write_slurm([str(a), "--cpus", "1", "--time", f"{limit // 60}:{limit % 60:02d}", "--signal", str(lead),
+                        "--requeues", "12"]) == 0
+    job_a = sbatch(env, str(a / "slurm.sh"), cwd=elsewhere)            # from another folder
+
+    # ------------------------------------------------------------ C: one line done, one invalid
+    wait_for(env, job_c, 600)
+    rc = records(env, job_c, (1, 4))
+    assert rc[1][-1][:2] == ("COMPLETED", "0:0") and rc[1][-1][2] == "done: spheres-seed1.h5 complete"
+    assert rc[4] == [("FAILED", "2:0", f"invalid line: {c}/table.txt line 5: kappa = -150.0 is outside "
+                                       f"[1, 1e+09]")]
+    assert not (c / "spheres-seed4").exists()                            # YADE never started
+    assert "task: FINAL invalid line:" in (c / f"slurm-{job_c}_4.out").read_text()
+    assert study(["--collect", str(c)]) == 0                             # a partly finished array
+    err = capsys.readouterr().err
+    assert f"resubmit the unfinished lines of C: sbatch --array=2,3 {c}/slurm.sh" in err
+    m = json.loads((c / "manifest.json").read_text())["spheres"]
+    assert [(e["label"], e["status"].split(":")[0]) for e in m] == [
+        ("seed 1", "ok"), ("seed 2", "not started"), ("seed 3", "not started"), ("spheres-seed4", "invalid line")]
+    # both arrays from their parent, A perhaps still running: every line listed
+    assert study(["--collect", str(arrays)]) == 0
+    capsys.readouterr()
+    m = json.loads((arrays / "manifest.json").read_text())
+    assert len(m["polyhedra"]) == 3 and len(m["spheres"]) == 4 and m["spheres"][0]["status"] == "ok"
+    assert all(e["status"] == "ok" or e["status"].startswith(("resumable at step", "unfinished", "not started"))
+               for e in m["polyhedra"]), m["polyhedra"]
+
+    # ------------------------------------------------------------ A: requeued to the end, without a human
+    seconds_a = wait_for(env, job_a, 1500)
+    ra = records(env, job_a, (1, 2, 3))
+    for k in (1, 2, 3):
+        recs = ra[k]
+        requeued = [r for r in recs[:-1] if r[0] == "REQUEUED"]
+        assert len(requeued) == len(recs) - 1 >= 1, recs                 # the time limit forced requeues
+        assert all(r[2].startswith("requeued to resume (") for r in requeued), recs
+        assert recs[-1] == ("COMPLETED", "0:0", f"done: polyhedra-seed{k}.h5 complete"), recs
+        d = a / f"polyhedra-seed{k}"
+        log = (d / "triaxial.log").read_text()
+        assert log.count("==== attempt ") == len(recs), log[-3000:]       # every attempt's log kept
+        assert "resumed from polyhedra-seed%d.ckpt" % k in log and "done in" in log
+        out = (a / f"slurm-{job_a}_{k}.out").read_text()                  # SLURM's output, every job of the task
+        assert out.count(f"task: task {k} of {a}") == len(recs)
+        assert out.count("task: FINAL requeued to resume") == len(requeued)
+        assert out.rstrip().endswith(f"task: FINAL done: polyhedra-seed{k}.h5 complete")
+        tries = json.loads((d / f"polyhedra-seed{k}.attempts.json").read_text())
+        assert tries[-1]["action"] == "done" and all(t["slurm_job"] == f"{job_a}_{k}" for t in tries)
+        got, par, complete = datasets(d / f"polyhedra-seed{k}.h5")
+        want, par_ref, _ = datasets(ref / f"polyhedra-seed{k}.h5")
+        assert complete and par == par_ref and sorted(got) == sorted(want)
+        for name in want:                                                 # bit for bit
+            assert got[name].dtype == want[name].dtype and got[name].tobytes() == want[name].tobytes(), name
+    assert list(elsewhere.iterdir()) == [] and list(other.iterdir()) == []   # nothing outside the run folders
+    print(f"cluster test: the shortest line takes {line_seconds:.0f} s uninterrupted; time limit {limit} s, SIGTERM {lead} s "
+          f"before; array A done {seconds_a:.0f} s after C; requeues per task {[len(ra[k]) - 1 for k in (1, 2, 3)]}; "
+          f"whole test {time.time() - t_start:.0f} s")

@@ -1,0 +1,238 @@
+"""A run and its attempts: the contract between the scene and whatever
+starts it (a study, a sweep, a SLURM task, a user at the shell).
+
+A *run* is one table line of a generated run folder (or the folder's own
+scene); it writes the dump ``STEM.h5`` and its companions (:class:`RunFiles`).
+An *attempt* is one YADE process on it. The scene (``triaxial.py``,
+:mod:`yade_scripts.attempt`) ends an attempt with one of the exit codes
+below; whatever started it applies :func:`judge`, the one rule for what
+comes next, and appends the attempt to the run's record
+(``STEM.attempts.json``, :func:`record_attempt`). :func:`state_of` reads
+what a run folder says about a run: complete, resumable at step N, failed
+(and why), unfinished, or not started.
+
+Exit codes of the scene:
+
+* :data:`EXIT_DONE` (0): the dump is complete (now, or already);
+* :data:`EXIT_CONFIG` (2): a parameter is invalid; nothing was run;
+* :data:`EXIT_FAILED` (3): stopped on a blow-up or ``max_steps``; the
+  snapshots are kept, the checkpoints removed (a blow-up replays
+  identically from a checkpoint, so it is never retried);
+* :data:`EXIT_TERM` (75, EX_TEMPFAIL): stopped by SIGTERM after writing a
+  checkpoint; run it again to resume;
+* anything else is a crash: run it again to resume from the newest
+  periodic checkpoint, if there is one.
+
+Standard library only (h5py is imported to read a dump's ``complete``
+flag), so YADE's Python, the venv and a SLURM task all use it.
+"""
+from __future__ import annotations
+
+import datetime
+import json
+import os
+import shutil
+from dataclasses import dataclass
+
+EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_TERM = 0, 2, 3, 75
+#: a run that crashed and left a checkpoint is started again this many times
+#: at most; stops asked for (SIGTERM by a scheduler, or to give a run more
+#: cores) do not count
+MAX_RESUMES = 2
+
+
+@dataclass(frozen=True)
+class RunFiles:
+    """The files of the run that writes ``dump`` (``STEM.h5``)."""
+    dump: str
+
+    @property
+    def stem(self):
+        return os.path.splitext(self.dump)[0]
+
+    @property
+    def parts(self):
+        """The dump's parts folder while the run writes it."""
+        return self.dump + ".parts"
+
+    @property
+    def checkpoint(self):
+        """The newest checkpoint (the previous one is ``checkpoint + '.prev'``)."""
+        return self.stem + ".ckpt"
+
+    @property
+    def log_csv(self):
+        return self.stem + ".log.csv"
+
+    @property
+    def info(self):
+        return self.stem + ".info.json"
+
+    @property
+    def progress(self):
+        """The scene's newest progress record (JSON, rewritten as it runs)."""
+        return self.stem + ".progress.json"
+
+    @property
+    def attempts(self):
+        """The record of every attempt (JSON list, kept across attempts)."""
+        return self.stem + ".attempts.json"
+
+    def written_by_an_attempt(self):
+        """Every file an attempt writes, removed when a run starts afresh
+        (logs and the attempts record are kept)."""
+        ck = self.checkpoint
+        return [self.dump, self.parts, ck, ck + ".prev", ck + ".tmp", self.log_csv, self.info, self.progress]
+
+
+def complete(dump):
+    """True when ``dump`` is a finished, packed dump (attribute complete=1)."""
+    if not os.path.exists(dump):
+        return False
+    import h5py
+
+    try:
+        with h5py.File(dump, "r") as f:
+            return bool(f.attrs.get("complete", 0))
+    except OSError:
+        return False
+
+
+def has_checkpoint(dump):
+    """True when the run writing ``dump`` left a checkpoint (STEM.ckpt or
+    STEM.ckpt.prev) to resume from."""
+    ck = RunFiles(dump).checkpoint
+    return os.path.exists(ck) or os.path.exists(ck + ".prev")
+
+
+def checkpoint_position(dump):
+    """(step, stage) of the newest checkpoint of the run writing ``dump``
+    whose header reads (:func:`yade_scripts.checkpoint.header`; the payload
+    is checked only when the run resumes), or None."""
+    from . import checkpoint
+
+    for path in checkpoint.candidates(RunFiles(dump).checkpoint):
+        try:
+            h = checkpoint.header(path)
+            return int(h["step"]), str(h["stage"])
+        except (checkpoint.CheckpointError, KeyError, TypeError, ValueError):
+            continue
+    return None
+
+
+def clear_attempt(dump):
+    """Remove what an unfinished attempt at ``dump`` left (its dump, parts,
+    checkpoints, STEM.log.csv, STEM.info.json, progress record); its logs
+    and its attempts record are kept."""
+    for p in RunFiles(dump).written_by_an_attempt():
+        if os.path.isdir(p):
+            shutil.rmtree(p, ignore_errors=True)
+        elif os.path.exists(p):
+            os.remove(p)
+
+
+# ------------------------------------------------------------ the rule
+@dataclass(frozen=True)
+class Verdict:
+    """What comes after an attempt: ``action`` is "done" (the dump is
+    complete), "resume" (start it again: it resumes from its checkpoint, or
+    starts afresh when there is none) or "failed"; ``reason`` is one line."""
+    action: str
+    reason: str
+
+
+def judge(code, dump, resumes=0, requested=False, max_resumes=MAX_RESUMES):
+    """The rule for the attempt at ``dump`` that ended with exit ``code``.
+
+    resumes : how many times the run was already resumed after a crash;
+    requested : True when whatever started the attempt asked it to stop
+    (SIGTERM at a scheduler's time limit, or to resume it on more cores).
+
+    0 with a complete dump is done (without one it failed); 3 (a blow-up,
+    ``max_steps``) and 2 (invalid parameters) failed; a stop that was asked
+    for resumes (from its checkpoint, or afresh when it was stopped before
+    its first one); any other end is a crash, resumed from its checkpoint
+    while ``resumes < max_resumes``, else failed."""
+    if code == EXIT_DONE:
+        if complete(dump):
+            return Verdict("done", "complete")
+        return Verdict("failed", "exit 0 without a complete dump")
+    if code == EXIT_FAILED:
+        return Verdict("failed", "stopped on a blow-up or max_steps (exit 3; the scene's log says why)")
+    if code == EXIT_CONFIG:
+        return Verdict("failed", "invalid parameters (exit 2; the scene's log names it)")
+    if not has_checkpoint(dump):
+        if requested:
+            return Verdict("resume", f"stopped on request (exit {code}) before its first checkpoint: it starts afresh")
+        return Verdict("failed", f"crashed (exit {code}) before its first checkpoint")
+    where = checkpoint_position(dump)
+    at = f" at step {where[0]} ({where[1]})" if where else ""
+    if requested:
+        return Verdict("resume", f"stopped on request (exit {code}); it resumes from its checkpoint{at}")
+    if resumes >= max_resumes:
+        return Verdict("failed", f"crashed (exit {code}) after {resumes} resume(s) from its checkpoint")
+    return Verdict("resume", f"exit {code}: resuming from its checkpoint{at} (resume {resumes + 1} of at most "
+                   f"{max_resumes})")
+
+
+# ------------------------------------------------------------ the record
+def read_attempts(dump):
+    """The attempts recorded for the run writing ``dump`` (list of dicts,
+    oldest first; [] when none is recorded or the record is unreadable)."""
+    try:
+        with open(RunFiles(dump).attempts) as fh:
+            data = json.load(fh)
+    except (OSError, ValueError):
+        return []
+    return data if isinstance(data, list) else []
+
+
+def record_attempt(dump, **entry):
+    """Append one attempt (``entry``: exit, action, reason, threads, ...,
+    with ``end`` set to now, UTC) to the run's record, atomically."""
+    path = RunFiles(dump).attempts
+    rows = read_attempts(dump) + [{**entry, "end": now_utc()}]
+    tmp = path + ".tmp"
+    with open(tmp, "w") as fh:
+        json.dump(rows, fh, indent=1)
+    os.replace(tmp, path)
+    return rows
+
+
+def now_utc():
+    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+
+
+# ------------------------------------------------------------ the state
+@dataclass(frozen=True)
+class RunState:
+    """What a run folder says about one run. ``state`` is one of
+    "complete", "resumable", "failed", "unfinished", "not started";
+    ``detail`` is one line; ``step`` the checkpoint's step (resumable)."""
+    state: str
+    detail: str
+    step: int | None = None
+
+    @property
+    def finished(self):
+        return self.state == "complete"
+
+
+def state_of(dump):
+    """The :class:`RunState` of the run writing ``dump``, from its files:
+    a complete dump; a checkpoint (resumable at its step); the last recorded
+    attempt failed (its reason); files of an attempt without either
+    (unfinished: it is running, or was killed before its first checkpoint,
+    and starts afresh); nothing (not started)."""
+    if complete(dump):
+        return RunState("complete", "complete")
+    where = checkpoint_position(dump)
+    if where is not None:
+        return RunState("resumable", f"resumable at step {where[0]} ({where[1]})", where[0])
+    tries = read_attempts(dump)
+    if tries and tries[-1].get("action") == "failed":
+        return RunState("failed", f"failed: {tries[-1].get('reason', 'no reason recorded')}")
+    if any(os.path.exists(p) for p in RunFiles(dump).written_by_an_attempt()) or tries:
+        return RunState("unfinished", "unfinished, no checkpoint (running, or killed before its first "
+                        "checkpoint: it starts afresh)")
+    return RunState("not started", "not started")
