@@ -1,9 +1,9 @@
 """Contact classes of a snapshot under one chosen criterion.
 
-Four criteria, one interface (:class:`Classifier`):
+Six criteria, one interface (:class:`Classifier`):
 
-* ``"points"`` (the default): LMGC90's count of contact points
-  (:mod:`postproc.contactpoints`): the vertices of each side within the
+* ``"points"`` (the default): our count of contact points from the
+  overlap (:mod:`postproc.contactpoints`): the vertices of each side within the
   overlap slab (along the normal, or the partner's face plane closest to
   it), plus a tolerance alpha times the overlap's mean thickness V/area
   (``--tolerance``, default 0.1), give the touching
@@ -23,8 +23,8 @@ Four criteria, one interface (:class:`Classifier`):
   corner), else VV, VE or EE from the two sides.
 * ``"angular"`` (``--types angular``): the angular criterion alone, with
   tolerance theta (:mod:`postproc.contacttypes`).
-* ``"commonplane"`` (``--types commonplane``): LMGC90's own detection
-  (:mod:`postproc.commonplane`): Cundall's common plane from the contact
+* ``"commonplane"`` (``--types commonplane``): our earlier band count
+  on LMGC90's kind of detection (:mod:`postproc.commonplane`): Cundall's common plane from the contact
   normal, the vertices within tau * ref of it (``--tolerance`` tau, default
   0.1; ref the centre-to-extreme-vertex distance), the vertices of the
   intersection of their projected hulls as the contact points; no overlap

@@ -46,6 +46,8 @@ def test_what_make_study_runs_is_what_docs_study_quotes():
     assert (v["PRESET"], v["STUDY"], v["ENSEMBLE"], v["JOBS"], v["JOB_THREADS"]) == \
         ("default", "runs/study", "3", "2", "1")
     recipe = makefile_recipe("study")
+    assert "SHAPES ?=\n" in text("Makefile")     # no library of one's own by default: the $(if ...) adds nothing
+    recipe = recipe.replace("$(if $(SHAPES),--library $(SHAPES))", "")
     for name, value in v.items():
         recipe = recipe.replace(f"$({name})", value)
     cmd = re.search(r"\$\(PY\) -m (yade_scripts\.study .*)", recipe).group(1)
@@ -171,7 +173,7 @@ def test_the_cli_defaults_are_the_usage_lines(capsys):
 
 def test_the_claims_thresholds_the_docs_quote():
     from postproc.study import claims
-    from yade_scripts.batch import MAX_RESUMES
+    from yade_scripts.runstate import MAX_RESUMES
 
     study = " ".join(text("docs/study.md").split())
     assert f"|a_l| < {claims.NEGLIGIBLE:g}" in study
