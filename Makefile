@@ -62,7 +62,7 @@ test-slurm: system venv kernel
 	$(SUDO) .ci/slurm-node install
 	$(PY) -m pytest -q -m slurm -s
 
-# The fast subset (no YADE, nothing slow): about 400 tests in 1 to 2 minutes on 2
+# The fast subset (no YADE, nothing slow): about 560 tests in 1 to 2 minutes on 2
 # quiet cores, for the edit-test loop.
 test-fast: venv kernel
 	$(PY) -m pytest -q -m "not yade and not slow"
