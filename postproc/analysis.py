@@ -72,7 +72,7 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     (seed figs. 10-12 and claim 6), and the class of each contact.
 
     ``classifier`` a :class:`postproc.classify.Classifier` under any of its
-    four criteria (:func:`postproc.classify.classifier_for` makes the point
+    six criteria (:func:`postproc.classify.classifier_for` makes the point
     count by default). ``sel`` (C,) bool marks the
     force-bearing particle-particle contacts, over which proportions, force
     ratios, force shares and the signed branch fabric of each class are
@@ -170,7 +170,7 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     compression axis (it equals q once sigma_1 lies along the axis).
 
     ``tables``: the contact-type criterion of polyhedra snapshots, a
-    :class:`postproc.classify.Classifier` under any of its four criteria
+    :class:`postproc.classify.Classifier` under any of its six criteria
     (:func:`postproc.classify.classifier_for` makes the point count by
     default), or the angular :class:`postproc.contacttypes.ShapeTables`
     (angular criterion at ``theta_deg``); None (the default) for no contact

@@ -379,7 +379,7 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal,
     measured); alert: LMGC90's alert distance (m), pairs whose gap exceeds
     it get 0 points (None: no test).
 
-    Returns a dict of (C,) arrays: ``points`` int (0..4, LMGC90's count),
+    Returns a dict of (C,) arrays: ``points`` int (0..4, the band count),
     ``group`` int8 (SIMPLE, DOUBLE, TRIPLE = 0, 1, 2; 0 or 1 point is
     simple), ``pair`` int8 index into contacttypes.PAIR_TYPES, agreeing
     with the group, ``feature1``, ``feature2`` int8 (VERTEX, EDGE, FACE),

@@ -245,7 +245,7 @@ def features_of(count):
 
 def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
                    alpha=DEFAULT_ALPHA):
-    """Contact points of each polyhedra pair, LMGC90's count (module docstring).
+    """Contact points of each polyhedra pair, counted from the overlap (module docstring).
 
     Arguments as :func:`touching_counts`. Returns a dict of (C,) arrays:
     ``points`` int (1; 2; 3 or more: the smaller touching count of a

@@ -41,7 +41,8 @@
              kappa = 1e4, I = 1e-3, I_c = 1e-2, prepared like the default
              (polyhedra compacted at 0.5, spheres frictionless), the
              polyhedra's time step at 0.45 of the critical one as in the
-             default, for a cluster through yade-batch; not run here.
+             default, for a cluster (a SLURM array: generate --slurm); not
+             run here.
 
 Every key is a parameter of :mod:`yade_scripts.parameters` (names, types,
 ranges, units, defaults); a preset lists only what it changes from the

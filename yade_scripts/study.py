@@ -5,9 +5,9 @@
 One seed (default): each sample gets its run folder (``OUT/polyhedra``,
 ``OUT/spheres``) and both run side by side, YADE's lines relayed with the
 sample name in front. S1 with the compiled contact kernel runs as ``yade
--j2`` (the kernel takes YADE's thread count; S2 is over in seconds, then S1
-has both cores); S2, and S1 on YADE's stock contacts (which crashed with
-several threads), run on one thread. ``--ensemble N`` (N >= 2): each sample
+-jN`` with N every core of the machine (the kernel takes YADE's thread
+count; S2 is over in minutes, then S1 has every core); S2, and S1 on YADE's
+stock contacts (which crashed with several threads), run on one thread. ``--ensemble N`` (N >= 2): each sample
 gets ``OUT/<sample>-ensemble`` with a table of seeds 1..N, and the seeds of
 both samples run in one schedule on ``--jobs`` cores (longest first, no
 core idle at the end; ``OUT/schedule.json`` holds its attempts and idle
