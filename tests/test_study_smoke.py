@@ -143,3 +143,40 @@ def test_single_seed_study_runs_s1_on_the_kernel_with_every_core(tmp_path, shape
     with DumpReader(str(tmp_path / "polyhedra" / "run.h5")) as r:
         assert r.complete and r.parameters["contact_engine"] == "kernel"
     assert (tmp_path / "report" / "report.md").exists()
+
+
+def test_study_runs_s1_on_an_imported_library(tmp_path):
+    """``make study SHAPES=LIB.h5`` with a library imported from meshes (as a
+    user's scans would be): the tiny S1 runs on the imported grains (the
+    dump's shapes are the library's), and the report names the library and
+    shows its descriptors."""
+    import h5py
+    import numpy as np
+    import trimesh
+
+    from shapes.__main__ import main as shapes_main
+    from shapes.library import ShapeLibrary
+    from yade_scripts.study import main
+
+    rng = np.random.default_rng(7)
+    scans = tmp_path / "scans"
+    scans.mkdir()
+    for k in range(24):                             # stones: hulls of points on stretched spheres, 3 formats
+        p = rng.normal(size=(60, 3))
+        p = p / np.linalg.norm(p, axis=1)[:, None] * [1.0, rng.uniform(0.6, 0.9), rng.uniform(0.4, 0.7)]
+        hull = trimesh.convex.convex_hull(p * rng.uniform(0.8, 1.2))
+        hull.apply_transform(trimesh.transformations.random_rotation_matrix(rng.random(3)))
+        hull.export(str(scans / f"stone{k:02d}.{('stl', 'obj', 'ply')[k % 3]}"))
+    lib = tmp_path / "stones.h5"
+    assert shapes_main(["import", str(scans), "--out", str(lib), "--name", "test stones"]) == 0
+    library = ShapeLibrary(str(lib))
+    assert len(library) == 24
+    out = tmp_path / "study"
+    assert main(["--preset", "tiny", "--out", str(out), "--library", str(lib)]) == 0
+    with h5py.File(out / "polyhedra" / "run.h5", "r") as h:
+        counts = np.diff(np.asarray(h["shapes"]["vertex_offsets"]))
+    imported = {len(library[i][0]) for i in range(len(library))}
+    assert len(counts) == 20 and set(counts.tolist()) <= imported   # every grain of the run is an imported one
+    md = (out / "report" / "report.md").read_text()
+    assert "## The grains of S1" in md and "**test stones**" in md and "imported from 24 meshes" in md
+    assert "convexity deficit" in md
