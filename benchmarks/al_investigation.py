@@ -40,7 +40,7 @@ from scipy.spatial.transform import Rotation
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 from postproc.axes import axis_vector, quaternion_matrices, rotation_z_to   # noqa: E402
-from postproc.study.branchlength import (_solid_moments, length_profile,  # noqa: E402
+from postproc.study.branchlength import (solid_moments, length_profile,  # noqa: E402
                                    principal_extents, radial_distance, subset_anisotropy)
 from postproc.classify import Classifier                   # noqa: E402
 from postproc.contactset import resolve                    # noqa: E402
@@ -105,7 +105,7 @@ def analyse(path, axis, n_pairs, rng):
         geo, dims, long_local = [], [], []
         for v, t in zip(verts, tris):
             d, axes = principal_extents(v, t)
-            geo.append((v, t, _solid_moments(v, t)[1]))
+            geo.append((v, t, solid_moments(v, t)[1]))
             dims.append(d)
             long_local.append(axes[:, 0])
         dims, long_local = np.array(dims), np.array(long_local)

@@ -47,7 +47,7 @@ from postproc.pipeline import AnalysisOptions, analyze_path
 from postproc.plots import plot_leanings_by_tolerance
 from postproc.statistics import plateau_estimate, seed_scatter, seeds_needed, steady_indices
 from postproc.study.claims import evaluate
-from postproc.study.report import _summaries, _usable, discover
+from postproc.study.report import run_summaries, usable_runs, discover
 
 NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each criterion's own tolerance
 STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
@@ -69,10 +69,10 @@ def main():
     except InputError as exc:
         raise SystemExit(f"claim6: {exc}")
     runs = discover(args.study)
-    s1, s2 = _usable(runs, "polyhedra"), _usable(runs, "spheres")
+    s1, s2 = usable_runs(runs, "polyhedra"), usable_runs(runs, "spheres")
     if not s1:
         raise SystemExit(f"claim6: no usable S1 run in {args.study}")
-    s2_frames = _summaries({"spheres": s2}).get("spheres", [])
+    s2_frames = run_summaries({"spheres": s2}).get("spheres", [])
     out = os.path.join(args.study, "claim6")
     os.makedirs(out, exist_ok=True)
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]

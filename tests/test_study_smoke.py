@@ -47,9 +47,9 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     assert comp["ours"].map(math.isfinite).all() and (comp["interval"] == "seeds").all()
     # the verdicts are the rules applied to the analyses the manifest lists
     from postproc.study.claims import NEGLIGIBLE, evaluate
-    from postproc.study.report import _summaries, discover
+    from postproc.study.report import run_summaries, discover
 
-    again = pd.DataFrame(evaluate(_summaries(discover(str(out)))))
+    again = pd.DataFrame(evaluate(run_summaries(discover(str(out)))))
     assert claims["verdict"].tolist() == again["verdict"].tolist()
     assert claims["numbers"].tolist() == again["numbers"].tolist()
     # claim 3 decided again here from the a_l intervals of comparison.csv

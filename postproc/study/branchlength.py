@@ -129,7 +129,7 @@ def length_profile(branch, length=None, axis=2, edges_deg=(0, 15, 30, 45, 60, 75
     return out
 
 
-def _solid_moments(vertices, triangles):
+def solid_moments(vertices, triangles):
     """Volume, centroid (3,) and second moment about the centroid (3, 3) of
     a closed, outward-oriented triangle mesh (tetrahedra from the origin:
     int x x^T over a tetrahedron (0, a, b, c) = det/120 [a a^T + b b^T +
@@ -160,7 +160,7 @@ def principal_extents(vertices, triangles):
     the long axis: smallest moment of inertia, largest second moment).
     """
     v = np.asarray(vertices, float)
-    vol, cen, M = _solid_moments(v, triangles)
+    vol, cen, M = solid_moments(v, triangles)
     if not (np.isfinite(vol) and vol > 0):
         raise ValueError("mesh with zero or negative volume (not closed or inward oriented)")
     w, R = np.linalg.eigh(M)
@@ -185,7 +185,7 @@ def radial_distance(vertices, triangles, directions, centre=None):
     v = np.asarray(vertices, float)
     t = np.asarray(triangles, np.int64)
     if centre is None:
-        _, centre, _ = _solid_moments(v, t)
+        _, centre, _ = solid_moments(v, t)
     p = v - np.asarray(centre, float)
     n = np.cross(p[t[:, 1]] - p[t[:, 0]], p[t[:, 2]] - p[t[:, 0]])
     n /= np.linalg.norm(n, axis=1)[:, None]

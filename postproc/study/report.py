@@ -76,14 +76,14 @@ def discover(study):
     return runs
 
 
-def _usable(runs, sample):
+def usable_runs(runs, sample):
     """The runs of ``sample`` whose numbers are used: complete ("ok") first,
     then partial ones (failed after the start of the steady state)."""
     rs = [r for r in runs.get(sample, []) if r.get("status") in ("ok", "partial")]
     return sorted(rs, key=lambda r: r.get("status") != "ok")
 
 
-def _summaries(runs):
+def run_summaries(runs):
     """{sample: [summary DataFrame per usable run]}. The shear snapshots of a
     partial run before the start of the steady state of a complete run
     (eps_1 < partial["steady_from_eps_1"]) are relabelled stage "transient",
@@ -93,7 +93,7 @@ def _summaries(runs):
     out = {}
     for s in runs:
         frames = []
-        for r in _usable(runs, s):
+        for r in usable_runs(runs, s):
             p = os.path.join(r["analysis"], "summary.csv") if r.get("analysis") else None
             if p and os.path.exists(p):
                 df = pd.read_csv(p, dtype={"snapshot": str}).copy()
@@ -111,17 +111,17 @@ def count_summaries(runs, summaries):
     analysis under its own count (its ``ct_method``), then each other count
     the study analysed (:mod:`postproc.study.counts`), for the runs that
     have it. Partial runs' early shear rows are relabelled as in
-    :func:`_summaries`."""
+    :func:`run_summaries`."""
     s1 = summaries.get("polyhedra", [])
     out = {}
     if s1 and "ct_method" in s1[0]:
         out[str(s1[0]["ct_method"].iloc[0])] = s1
-    for r in _usable(runs, "polyhedra"):
+    for r in usable_runs(runs, "polyhedra"):
         for count, folder in (r.get("counts") or {}).items():
             p = os.path.join(folder, "summary.csv")
             if count in out and out[count] is s1 or not os.path.exists(p):
                 continue
-            other = _summaries({"polyhedra": [{**r, "analysis": folder, "counts": {}}]})["polyhedra"]
+            other = run_summaries({"polyhedra": [{**r, "analysis": folder, "counts": {}}]})["polyhedra"]
             out.setdefault(count, []).extend(other)
     return out
 
@@ -320,7 +320,7 @@ def _slab_snapshots(runs):
 
     chosen, eq = {}, {}
     for s in SAMPLES:
-        ok = _usable(runs, s)
+        ok = usable_runs(runs, s)
         if not ok:
             continue
         p = os.path.join(ok[0]["analysis"], "summary.csv") if ok[0].get("analysis") else None
@@ -375,7 +375,7 @@ def build_report(study, out=None, reference=REFERENCE):
     with open(reference) as fh:
         ref = json.load(fh)
     runs = discover(study)
-    summaries = _summaries(runs)
+    summaries = run_summaries(runs)
     problems = []
     for s in SAMPLES:
         for r in runs.get(s, []):
@@ -404,7 +404,7 @@ def build_report(study, out=None, reference=REFERENCE):
            caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
     polar = {}
     for s in SAMPLES:
-        ok = _usable(runs, s)
+        ok = usable_runs(runs, s)
         if ok:
             try:
                 polar[s] = _polar_data(ok[0])
@@ -414,7 +414,7 @@ def build_report(study, out=None, reference=REFERENCE):
         figure("fig_polar.png", plots.plot_report_polar, polar,
                caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
                        "snapshot), first seed, seed figs. 5 and 7")
-    s1 = _usable(runs, "polyhedra")
+    s1 = usable_runs(runs, "polyhedra")
     if s1:
         try:
             gp = group_branch_polar(s1[0])

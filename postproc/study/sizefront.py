@@ -39,7 +39,7 @@ import pandas as pd
 from scipy.stats import f as f_dist
 
 from .claims import claim6, evaluate
-from .report import REFERENCE, _summaries, _usable, count_summaries, discover
+from .report import REFERENCE, run_summaries, usable_runs, count_summaries, discover
 from ..errors import InputError
 from ..statistics import Estimate, difference, plateau_estimate, steady_indices
 
@@ -102,8 +102,8 @@ def study_values(study):
     runs = discover(study)
     rows = []
     for sample in SAMPLES:
-        for run in _usable(runs, sample):
-            frames = _summaries({sample: [run]})[sample]
+        for run in usable_runs(runs, sample):
+            frames = run_summaries({sample: [run]})[sample]
             if not frames:
                 continue
             df = frames[0]
@@ -137,7 +137,7 @@ def _count_frames(run, primary):
     for count, folder in (run.get("counts") or {}).items():
         if count in out or not os.path.exists(os.path.join(folder, "summary.csv")):
             continue
-        sub = _summaries({"polyhedra": [{**run, "analysis": folder}]})["polyhedra"]
+        sub = run_summaries({"polyhedra": [{**run, "analysis": folder}]})["polyhedra"]
         if sub:
             out[count] = sub[0]
     return out
@@ -242,8 +242,8 @@ def verdict_table(studies):
     rows = []
     for study in studies:
         runs = discover(study)
-        summaries = _summaries(runs)
-        n = _n_particles(_usable(runs, "polyhedra")[0]) if _usable(runs, "polyhedra") else np.nan
+        summaries = run_summaries(runs)
+        n = _n_particles(usable_runs(runs, "polyhedra")[0]) if usable_runs(runs, "polyhedra") else np.nan
         for c in evaluate(summaries):
             rows.append({"n_particles": n, "claim": c["id"], "count": "primary", "verdict": c["verdict"]})
         for count, frames in count_summaries(runs, summaries).items():
