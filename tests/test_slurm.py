@@ -141,11 +141,19 @@ def test_cost_model_scaling():
     p = resolve("paper", "polyhedra")
     e = estimate(p)
     root = math.sqrt(1e4 / 3000) * 0.3 / 0.45                # and its time step at 0.45, not 0.3
-    assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 10 ** 0.55, rel=1e-12)
+    grown = 36.933 ** 0.25                                 # the compaction's growth with N, above 1000 grains
+    assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 10 ** 0.55 * grown,
+                                                  rel=1e-12)
     assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 5, rel=1e-12)
     assert e["contacts"] == pytest.approx(36933 * CONTACTS_PER_GRAIN["polyhedra"])
-    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"]
-                                            / 3.6e9, rel=1e-12)
+    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"] * 1.11
+                                            / 3.6e9, rel=1e-12)                # the 5000-grain cost per contact
+    # the cost per contact-step from 1000 to 5000 grains, linear in log N; the compaction above 1000 only
+    from yade_scripts.slurm import _grains_factor
+    assert [_grains_factor(n, 5000, 1.11) for n in (200, 1000, 5000, 36933)] == [1.0, 1.0, 1.11, 1.11]
+    assert _grains_factor(math.sqrt(5) * 1000, 5000, 1.11) == pytest.approx(1.055, rel=1e-12)
+    small = resolve("small", "polyhedra")
+    assert estimate(small)["steps"] == pytest.approx(estimate(resolve("default", "polyhedra"))["steps"], rel=1e-12)
     q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2 x sqrt(kappa), 1/2 I: the same shear
     assert estimate(q)["shear_steps"] == pytest.approx(e["shear_steps"], rel=1e-12)
     q = dict(p, safety=2 * p["safety"])                   # a time step twice as long: half the steps
@@ -243,8 +251,9 @@ def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, ca
 
 
 def test_intermediate_preset_fills_a_16_core_node(tmp_path):
-    """The 5000-grain preset: its parameters, a 16-line yade-batch table, and
-    its cost from the model (the default S1's steps with 5000 grains' contacts)."""
+    """The 5000-grain preset: its parameters, a 16-line table, and its cost
+    from the model (the default S1's shear steps, its compaction 5^0.25 as
+    long, 5000 grains' contacts at the 5000-grain cost per contact-step)."""
     p = resolve("intermediate", "polyhedra")
     assert (p["n_particles"], p["kappa"], p["inertial_number"]) == (5000, 3000.0, 5e-3)
     assert p["compaction_friction"] == 0.5 and p["friction"] == 0.5
@@ -253,9 +262,9 @@ def test_intermediate_preset_fills_a_16_core_node(tmp_path):
         assert resolve(name, "spheres") == {**resolve("default", "spheres"), "n_particles": n}
         assert resolve(name, "polyhedra") == {**resolve("default", "polyhedra"), "n_particles": n}
     e = estimate(p)
-    steps = (COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45     # the default's time step
+    steps = (COMPACTION_STEPS["polyhedra"] * 5 ** 0.25 + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45   # the default's dt
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
-                                            * US_PER_CONTACT_STEP["polyhedra"] / 3.6e9, rel=1e-12)
+                                            * US_PER_CONTACT_STEP["polyhedra"] * 1.11 / 3.6e9, rel=1e-12)
     out = tmp_path / "node"
     assert generate_main(["--preset", "intermediate", "--sample", "spheres", "--out", str(out),
                           "--seeds", *map(str, range(1, 17))]) == 0
