@@ -68,7 +68,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     # claim 6 by count: both counts at half, nominal and double their parameter;
     # the point count's nominal row is claim 6 of claims.csv
     c6 = pd.read_csv(rep / "claim6.csv")
-    assert sorted(zip(c6["count"], c6["factor"])) == sorted((c, f) for c in ("points", "commonplane")
+    assert sorted(zip(c6["count"], c6["factor"])) == sorted((c, f) for c in ("points", "lmgc90")
                                                             for f in (0.5, 1.0, 2.0))
     assert c6.loc[(c6["count"] == "points") & (c6["factor"] == 1.0), "verdict"].iloc[0] == claims.loc[5, "verdict"]
     assert (c6["seeds"] == 2).all() and "## Claim 6 by contact count" in md

@@ -374,7 +374,14 @@ def test_killed_run_keeps_earlier_snapshots(tmp_path):
 def test_blow_up_stops_with_a_message_and_keeps_dumps(tmp_path):
     out = tmp_path / "boom"
     generate(str(out), "tiny", "spheres", overrides={"dump_strain": 0.002})
-    _set_params(out, safety=40.0)     # dt 40 x the critical step: explodes
+    _set_params(out, safety=40.0)     # outside the parameter's range: refused before the run, in one line
+    res = run_yade(["triaxial.py"], cwd=out, timeout=300)
+    assert res.returncode == 2 and "invalid parameter: safety = 40.0 is outside [0.001, 1]" in res.stdout
+    assert not (out / "run.h5").exists()
+    _set_params(out, safety=1.0)      # a scene edited by hand to step at 40 x the critical step: explodes
+    scene = (out / "triaxial.py").read_text()
+    assert scene.count("O.dt = safety * dt_crit") == 1
+    (out / "triaxial.py").write_text(scene.replace("O.dt = safety * dt_crit", "O.dt = 40 * safety * dt_crit"))
     res = run_yade(["triaxial.py"], cwd=out, timeout=300)
     assert res.returncode == 3, res.stdout[-2000:]
     assert "STOPPED" in res.stdout
