@@ -505,6 +505,8 @@ def plot_size_front(table, path, published=None):
     ``published`` {(sample, quantity): value or None}. Returns what was
     drawn: [(panel title, series label, N (K,), means (K,))]."""
     plt = _plt()
+    from matplotlib.ticker import NullFormatter
+
     published = published or {}
     drawn = []
     panels = [(q, lab) for q, lab in SIZE_PANELS
@@ -537,6 +539,12 @@ def plot_size_front(table, path, published=None):
             if pub is not None and np.isfinite(pub):
                 ax.axhline(pub, color=colour, ls="--", lw=0.8)
         ax.set_xscale("log")
+        ns = sorted({int(x) for x in table["n_particles"]})
+        if ns:                                                # the sizes run, in plain numbers
+            ax.set_xticks(ns)
+            ax.set_xticklabels([str(x) for x in ns])
+            ax.xaxis.set_minor_formatter(NullFormatter())
+            ax.set_xlim(ns[0] / 1.6, ns[-1] * 1.6)
         ax.set_title(title, fontsize=8)
         ax.tick_params(labelsize=7)
         ax.set_xlabel("N (grains per sample)", fontsize=7)
