@@ -146,12 +146,12 @@ def test_cost_model_scaling():
                                                   rel=1e-12)
     assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 5, rel=1e-12)
     assert e["contacts"] == pytest.approx(36933 * CONTACTS_PER_GRAIN["polyhedra"])
-    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"] * 1.11
+    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"] * 1.08
                                             / 3.6e9, rel=1e-12)                # the 5000-grain cost per contact
     # the cost per contact-step from 1000 to 5000 grains, linear in log N; the compaction above 1000 only
     from yade_scripts.slurm import _grains_factor
-    assert [_grains_factor(n, 5000, 1.11) for n in (200, 1000, 5000, 36933)] == [1.0, 1.0, 1.11, 1.11]
-    assert _grains_factor(math.sqrt(5) * 1000, 5000, 1.11) == pytest.approx(1.055, rel=1e-12)
+    assert [_grains_factor(n, 5000, 1.08) for n in (200, 1000, 5000, 36933)] == [1.0, 1.0, 1.08, 1.08]
+    assert _grains_factor(math.sqrt(5) * 1000, 5000, 1.08) == pytest.approx(1.04, rel=1e-12)
     small = resolve("small", "polyhedra")
     assert estimate(small)["steps"] == pytest.approx(estimate(resolve("default", "polyhedra"))["steps"], rel=1e-12)
     q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2 x sqrt(kappa), 1/2 I: the same shear
@@ -265,7 +265,7 @@ def test_intermediate_preset_fills_a_16_core_node(tmp_path):
     e = estimate(p)
     steps = (COMPACTION_STEPS["polyhedra"] * 5 ** 0.25 + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45   # the default's dt
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
-                                            * US_PER_CONTACT_STEP["polyhedra"] * 1.11 / 3.6e9, rel=1e-12)
+                                            * US_PER_CONTACT_STEP["polyhedra"] * 1.08 / 3.6e9, rel=1e-12)
     out = tmp_path / "node"
     assert generate_main(["--preset", "intermediate", "--sample", "spheres", "--out", str(out),
                           "--seeds", *map(str, range(1, 17))]) == 0
