@@ -72,7 +72,14 @@ import numpy as np
 
 from shapes.overlap import rotation_matrices
 
-from .contactpoints import DOUBLE, SIMPLE, TRIPLE, point_tables, positive_tolerance
+from .contactpoints import (
+    DOUBLE,
+    SIMPLE,
+    TRIPLE,
+    check_pose_arrays,
+    point_tables,
+    positive_tolerance,
+)
 from .contacttypes import EDGE, FACE, PAIR_TYPES, VERTEX, pair_types
 from .errors import InputError
 
@@ -130,42 +137,16 @@ def plane_tables(vertices, triangles):
 
 def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, neighbor, reference, iterations, alert):
     C = len(np.asarray(shape1))
-    S = tables.vertices.shape[0]
-    out = []
-    for name, a, shp in (("shape1", shape1, (C,)), ("shape2", shape2, (C,)), ("pos1", pos1, (C, 3)),
-                         ("pos2", pos2, (C, 3)), ("quat1", quat1, (C, 4)), ("quat2", quat2, (C, 4)),
-                         ("normal", normal, (C, 3))):
-        a = np.asarray(a)
-        if a.shape != shp:
-            raise InputError(f"common plane: {name} must have shape {shp}, got {a.shape}")
-        out.append(a)
-    s1, s2 = out[:2]
-    for name, s in (("shape1", s1), ("shape2", s2)):
-        if not np.issubdtype(s.dtype, np.integer):
-            raise InputError(f"common plane: {name} must be integer shape rows")
-        bad = (s < 0) | (s >= S)
-        if bad.any():
-            k = int(np.flatnonzero(bad)[0])
-            raise InputError(f"common plane: contact {k}: {name} {int(s[k])} out of range 0..{S - 1}")
-    arrs = [np.asarray(a, float) for a in out[2:]]
-    for name, a in zip(("pos1", "pos2", "quat1", "quat2", "normal"), arrs):
-        bad = ~np.isfinite(a).all(axis=1)
-        if bad.any():
-            raise InputError(f"common plane: contact {int(np.flatnonzero(bad)[0])}: {name} is not finite")
-    for name, q in (("quat1", arrs[2]), ("quat2", arrs[3])):
-        bad = np.linalg.norm(q, axis=1) == 0
-        if bad.any():
-            raise InputError(f"common plane: contact {int(np.flatnonzero(bad)[0])}: {name} has zero norm")
-    bad = ~(np.abs(np.linalg.norm(arrs[4], axis=1) - 1) < 1e-6)
-    if bad.any():
-        raise InputError(f"common plane: contact {int(np.flatnonzero(bad)[0])}: normal is not a unit vector")
+    checked = check_pose_arrays("common plane", tables.vertices.shape[0], (
+        ("shape1", shape1, (C,)), ("shape2", shape2, (C,)), ("pos1", pos1, (C, 3)), ("pos2", pos2, (C, 3)),
+        ("quat1", quat1, (C, 4)), ("quat2", quat2, (C, 4)), ("normal", normal, (C, 3))))
     check_neighbor(neighbor)
     check_reference(reference)
     if not (isinstance(iterations, (int, np.integer)) and iterations >= 0):
         raise InputError(f"common plane: iterations must be an integer >= 0, got {iterations!r}")
     if alert is not None and not np.isfinite(float(alert)):
         raise InputError(f"common plane: the alert distance must be finite, got {alert!r}")
-    return (s1.astype(np.int64), s2.astype(np.int64), *arrs)
+    return tuple(checked)
 
 
 def check_neighbor(tau, what="common plane: the band tolerance tau"):
@@ -1272,29 +1253,9 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     adist = check_alert(alert)
     check_neighbor(neighbor)
     C = len(np.asarray(shape_cd))
-    S = len(tables)
-    arrs = []
-    for name, a, shp in (("shape_cd", shape_cd, (C,)), ("shape_an", shape_an, (C,)), ("pos_cd", pos_cd, (C, 3)),
-                         ("pos_an", pos_an, (C, 3)), ("quat_cd", quat_cd, (C, 4)), ("quat_an", quat_an, (C, 4))):
-        a = np.asarray(a)
-        if a.shape != shp:
-            raise InputError(f"LMGC90 count: {name} must have shape {shp}, got {a.shape}")
-        if name.startswith("shape"):
-            if not np.issubdtype(a.dtype, np.integer):
-                raise InputError(f"LMGC90 count: {name} must be integer shape rows")
-            bad = (a < 0) | (a >= S)
-            if bad.any():
-                k = int(np.flatnonzero(bad)[0])
-                raise InputError(f"LMGC90 count: contact {k}: {name} {int(a[k])} out of range 0..{S - 1}")
-        elif not np.isfinite(a.astype(float)).all():
-            k = int(np.flatnonzero(~np.isfinite(a.astype(float)).all(axis=1))[0])
-            raise InputError(f"LMGC90 count: contact {k}: {name} is not finite")
-        arrs.append(a)
-    s_cd, s_an, p_cd, p_an, q_cd, q_an = arrs
-    for name, q in (("quat_cd", q_cd), ("quat_an", q_an)):
-        bad = np.linalg.norm(q.astype(float), axis=1) == 0
-        if bad.any():
-            raise InputError(f"LMGC90 count: contact {int(np.flatnonzero(bad)[0])}: {name} has zero norm")
+    s_cd, s_an, p_cd, p_an, q_cd, q_an = check_pose_arrays("LMGC90 count", len(tables), (
+        ("shape_cd", shape_cd, (C,)), ("shape_an", shape_an, (C,)), ("pos_cd", pos_cd, (C, 3)),
+        ("pos_an", pos_an, (C, 3)), ("quat_cd", quat_cd, (C, 4)), ("quat_an", quat_an, (C, 4))))
     same = np.all(p_cd == p_an, axis=1)
     if same.any():
         raise InputError(f"LMGC90 count: contact {int(np.flatnonzero(same)[0])}: the two centres coincide")

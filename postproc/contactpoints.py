@@ -139,45 +139,65 @@ def _posed(tables, shape, pos, quat):
     return X, N, O
 
 
-def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h, alpha):
-    C = len(np.asarray(shape1))
-    S = tables.vertices.shape[0]
-    out = []
-    for name, a, shp in (("shape1", shape1, (C,)), ("shape2", shape2, (C,)), ("pos1", pos1, (C, 3)),
-                         ("pos2", pos2, (C, 3)), ("quat1", quat1, (C, 4)), ("quat2", quat2, (C, 4)),
-                         ("normal", normal, (C, 3)), ("h", h, (C,))):
+def check_pose_arrays(where, n_shapes, arrays):
+    """The per-contact arrays of a batch of polyhedra pairs, checked alike
+    for every count (this module's, and both of :mod:`postproc.commonplane`).
+
+    where : the message prefix ("contact points", "common plane", ...).
+    n_shapes : the number of shape rows. arrays : [(name, value, shape)],
+    each value's required shape. Names starting "shape" must be integer
+    shape rows in 0..n_shapes-1; every other array finite per contact;
+    those starting "quat" of non-zero norm; "normal" unit vectors.
+    Returns the arrays in order, shape rows as int64 and the others as
+    float. Raises InputError (one line naming the array and the first bad
+    contact).
+    """
+    given = []
+    for name, a, shp in arrays:
         a = np.asarray(a)
         if a.shape != shp:
-            raise InputError(f"contact points: {name} must have shape {shp}, got {a.shape}")
-        out.append(a)
-    s1, s2, p1, p2, q1, q2, n, h = out
-    for name, s in (("shape1", s1), ("shape2", s2)):
-        if not np.issubdtype(s.dtype, np.integer):
-            raise InputError(f"contact points: {name} must be integer shape rows")
-        bad = (s < 0) | (s >= S)
+            raise InputError(f"{where}: {name} must have shape {shp}, got {a.shape}")
+        given.append((name, a))
+    out = {}
+    for name, a in given:
+        if name.startswith("shape"):
+            if not np.issubdtype(a.dtype, np.integer):
+                raise InputError(f"{where}: {name} must be integer shape rows")
+            bad = (a < 0) | (a >= n_shapes)
+            if bad.any():
+                k = int(np.flatnonzero(bad)[0])
+                raise InputError(f"{where}: contact {k}: {name} {int(a[k])} out of range 0..{n_shapes - 1}")
+            out[name] = a.astype(np.int64)
+    for name, a in given:
+        if not name.startswith("shape"):
+            a = out[name] = a.astype(float)
+            finite = np.isfinite(a) if a.ndim == 1 else np.isfinite(a).all(axis=tuple(range(1, a.ndim)))
+            if not finite.all():
+                raise InputError(f"{where}: contact {int(np.flatnonzero(~finite)[0])}: {name} is not finite")
+    for name, a in out.items():
+        if name.startswith("quat"):
+            bad = np.linalg.norm(a, axis=1) == 0
+            if bad.any():
+                raise InputError(f"{where}: contact {int(np.flatnonzero(bad)[0])}: {name} has zero norm")
+    if "normal" in out:
+        bad = ~(np.abs(np.linalg.norm(out["normal"], axis=1) - 1) < 1e-6)
         if bad.any():
-            k = int(np.flatnonzero(bad)[0])
-            raise InputError(f"contact points: contact {k}: {name} {int(s[k])} out of range 0..{S - 1}")
-    for name, a in (("pos1", p1), ("pos2", p2), ("quat1", q1), ("quat2", q2), ("normal", n), ("h", h)):
-        a = np.asarray(a, float)
-        bad = ~np.isfinite(a).reshape(C, -1).all(axis=1)
-        if bad.any():
-            raise InputError(f"contact points: contact {int(np.flatnonzero(bad)[0])}: {name} is not finite")
-    for name, q in (("quat1", q1), ("quat2", q2)):
-        bad = np.linalg.norm(np.asarray(q, float), axis=1) == 0
-        if bad.any():
-            raise InputError(f"contact points: contact {int(np.flatnonzero(bad)[0])}: {name} has zero norm")
-    nn = np.linalg.norm(np.asarray(n, float), axis=1)
-    bad = ~(np.abs(nn - 1) < 1e-6)
-    if bad.any():
-        raise InputError(f"contact points: contact {int(np.flatnonzero(bad)[0])}: normal is not a unit vector")
-    bad = np.asarray(h, float) < 0
+            raise InputError(f"{where}: contact {int(np.flatnonzero(bad)[0])}: normal is not a unit vector")
+    return [out[name] for name, _ in given]
+
+
+def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h, alpha):
+    C = len(np.asarray(shape1))
+    s1, s2, p1, p2, q1, q2, n, h = check_pose_arrays("contact points", tables.vertices.shape[0], (
+        ("shape1", shape1, (C,)), ("shape2", shape2, (C,)), ("pos1", pos1, (C, 3)), ("pos2", pos2, (C, 3)),
+        ("quat1", quat1, (C, 4)), ("quat2", quat2, (C, 4)), ("normal", normal, (C, 3)), ("h", h, (C,))))
+    bad = h < 0
     if bad.any():
         raise InputError(f"contact points: contact {int(np.flatnonzero(bad)[0])}: overlap thickness h < 0")
     a = float(alpha)
     if not (np.isfinite(a) and a >= 0):
         raise InputError(f"contact points: the tolerance alpha must be finite and >= 0, got {alpha!r}")
-    return s1.astype(np.int64), s2.astype(np.int64), *(np.asarray(x, float) for x in (p1, p2, q1, q2, n, h))
+    return s1, s2, p1, p2, q1, q2, n, h
 
 
 def touching_counts(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
