@@ -47,7 +47,7 @@ kernel: system venv
 	$(PY) -c "from shapes import ckernel; ckernel.build(quiet=False)"
 
 test: system venv kernel
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q --durations=25
 
 # The documentation: docs/*.md and the API reference from the docstrings
 # (Sphinx, MyST), warnings as errors, into runs/docs/html.

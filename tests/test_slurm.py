@@ -223,8 +223,9 @@ def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, ca
     step, exits 75 (no SLURM here to requeue it); run again, it resumes to
     the end, and the line's log keeps both attempts. --collect in between
     says the line is resumable at that step."""
-    # a line long enough to meet the signal (the tiny line alone, 5 s, once finished before it)
-    out = make(tmp_path, (1,), "--set", "final_strain=0.1", "--set", "inertial_number=5e-3")
+    # a line that outlasts the signal's way (the pool polls once a second) tenfold: its shear alone,
+    # 80 000 steps, takes about 10 s on a quiet core (I = 5e-3 took 1 s and once finished first)
+    out = make(tmp_path, (1,), "--set", "final_strain=0.1", "--set", "inertial_number=2e-4")
     d = out / "spheres-seed1"
     p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
