@@ -5,6 +5,7 @@ import os
 
 import numpy as np
 import pandas as pd
+import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 spec = importlib.util.spec_from_file_location("size_at_strain", os.path.join(ROOT, "benchmarks", "size_at_strain.py"))
@@ -22,13 +23,21 @@ def write(folder, n, values, eps=(0.0, 0.05, 0.06, 0.09, 0.2)):
     d.to_csv(os.path.join(folder, "summary.csv"), index=False)
 
 
-def test_bins_seeds_and_tables(tmp_path, capsys):
+@pytest.fixture
+def sizes(tmp_path):
+    """Three study-like folders: a (1000 grains, 2 seeds and an LMGC90-count
+    twin), b (5000, 1 seed), c (8000, 2 seeds)."""
     write(tmp_path / "a" / "analysis-polyhedra-seed1", 1000, [9.0, 0.30, 0.40, 0.50, 9.0])
     write(tmp_path / "a" / "analysis-polyhedra-seed2", 1000, [9.0, 0.32, 0.42, 0.70, 9.0])
     write(tmp_path / "a" / "analysis-polyhedra-seed1-lmgc90", 1000, [9.0] * 5)      # another count: left out
     write(tmp_path / "b" / "polyhedra-seed1", 5000, [9.0, 0.20, 0.20, 0.60, 9.0])
     write(tmp_path / "c" / "polyhedra-seed1", 8000, [9.0, 0.10, 0.10, 0.60, 9.0])
     write(tmp_path / "c" / "polyhedra-seed2", 8000, [9.0, 0.14, 0.14, 0.64, 9.0])
+    return tmp_path
+
+
+def test_bins_seeds_and_tables(sizes):
+    tmp_path = sizes
     out = tmp_path / "out"
     assert sas.main([str(tmp_path / "a"), str(tmp_path / "b"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
@@ -53,15 +62,12 @@ def test_bad_input_is_one_line(tmp_path, capsys):
     assert sas.main([str(tmp_path / "x"), "--bins", "0.1", "0.05"]) == 2
 
 
-def test_difference_is_welch_over_the_seeds(tmp_path):
+def test_difference_is_welch_over_the_seeds(sizes):
     """1000 (seeds 0.35, 0.37) against 8000 (0.10, 0.14) in the first bin:
     the difference and its 95 % interval, Welch's, computed here with scipy."""
     from scipy import stats
 
-    write(tmp_path / "a" / "analysis-polyhedra-seed1", 1000, [9.0, 0.30, 0.40, 0.50, 9.0])
-    write(tmp_path / "a" / "analysis-polyhedra-seed2", 1000, [9.0, 0.32, 0.42, 0.70, 9.0])
-    write(tmp_path / "c" / "polyhedra-seed1", 8000, [9.0, 0.10, 0.10, 0.60, 9.0])
-    write(tmp_path / "c" / "polyhedra-seed2", 8000, [9.0, 0.14, 0.14, 0.64, 9.0])
+    tmp_path = sizes
     out = tmp_path / "out"
     assert sas.main([str(tmp_path / "a"), str(tmp_path / "c"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
