@@ -8,6 +8,7 @@ through argv strings to reach it.
 """
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import sys
@@ -24,6 +25,7 @@ from .classify import check_options, classifier_for
 from .errors import InputError
 from .lammpsdump import read_text_dump, sniff
 from .networks import force_pdf
+from .provenance import SOURCE_FILE, stamp
 from .schema import DumpFormatError, DumpReader
 from .statistics import steady_indices
 from .tables import read_contact_table
@@ -174,12 +176,18 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     and write ``out/summary.csv`` (one row per snapshot) and the figures.
     For a dump of polyhedra also the contact types
     (:class:`postproc.classify.Classifier`), ``force_pdf.csv`` and their
-    figures. Outputs go to a temporary folder first and are moved into
-    ``out`` at the end. Returns (n_good, list of error lines); raises
-    InputError when nothing could be analysed."""
+    figures, and ``source.json``: the input's files, the options and the
+    code it was made from (:mod:`postproc.provenance`). Outputs go to a
+    temporary folder first and are moved into ``out`` at the end. Returns
+    (n_good, list of error lines); raises InputError when nothing could be
+    analysed."""
 
     o = options
     o.check()
+    try:
+        source = stamp(path, o)             # before reading: what the analysis is made from
+    except OSError:
+        source = None
     try:
         e = axis_vector(o.axis)
     except ValueError as exc:
@@ -253,10 +261,14 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
         if problems:
             with open(os.path.join(tmp, "errors.txt"), "w") as fh:
                 fh.write("\n".join(problems) + "\n")
+        if source is not None:
+            with open(os.path.join(tmp, SOURCE_FILE), "w") as fh:
+                json.dump(source, fh, indent=1)
         os.makedirs(out, exist_ok=True)
-        stale = os.path.join(out, "errors.txt")
-        if not problems and os.path.exists(stale):
-            os.remove(stale)
+        for name, keep in (("errors.txt", problems), (SOURCE_FILE, source is not None)):
+            stale = os.path.join(out, name)
+            if not keep and os.path.exists(stale):
+                os.remove(stale)
         for name in os.listdir(tmp):
             os.replace(os.path.join(tmp, name), os.path.join(out, name))
     finally:

@@ -10,6 +10,7 @@ import os
 import stat
 import sys
 import textwrap
+import time
 
 import pytest
 
@@ -167,3 +168,65 @@ def test_progress_lines_are_relayed(tmp_path, fake, monkeypatch):
     msgs = []
     assert run_pool(js, 1, echo=msgs.append, yade=fake) == {"a": 0}
     assert any(m.startswith("[t] a: step 1 shear:") and m.endswith("s left") for m in msgs), msgs
+
+
+def _after(tmp_path, seconds=0.3, code=0):
+    """A command after each job: sleeps, then writes AFTER-<job> with the
+    time it started and exits ``code``."""
+    def cmd(job):
+        return [sys.executable, "-c", f"import time, sys; t = time.time(); time.sleep({seconds}); "
+                f"open({str(tmp_path / ('after-' + job.description))!r}, 'w').write(str(t)); sys.exit({code})"]
+    return cmd
+
+
+def test_work_after_a_run_fills_a_free_core_and_not_one_a_run_waits_for(tmp_path, fake):
+    """Two cores, three 0.6 s jobs and one 1.5 s kernel job: the work after
+    the first short job waits for the third (a run waiting takes the core
+    first), then runs while the long one goes, before widening it; the pool
+    ends after every job's work, each recorded once as an "after" attempt;
+    a job complete at the start gets its work too."""
+    js = jobs_in(tmp_path / "f", [("long", 1.5), ("a", 0.6), ("b", 0.6), ("c", 0.6), ("old", 0.1)],
+                 widen=("long",))
+    (tmp_path / "f" / "old.h5").write_text("complete")
+    rec = str(tmp_path / "schedule.json")
+    msgs = []
+    st = run_pool(js, 2, record=rec, echo=msgs.append, yade=fake, after=_after(tmp_path))
+    assert st == {"long": 0, "a": 0, "b": 0, "c": 0, "old": 0}
+    data = json.load(open(rec))
+    runs = {a["job"]: a for a in data["attempts"] if a.get("kind") != "after"}
+    after = {a["job"]: a for a in data["attempts"] if a.get("kind") == "after"}
+    assert sorted(after) == ["after a", "after b", "after c", "after long", "after old"]
+    assert all(a["exit"] == 0 and a["threads"] == 1 for a in after.values())
+    for d in ("a", "b", "c", "long", "old"):
+        assert (tmp_path / f"after-{d}").exists(), d
+    # no work after a run started before the last run had started
+    last_start = max(a["start"] for a in data["attempts"] if a.get("kind") != "after")
+    assert min(a["start"] for a in after.values()) >= last_start - 1e-9
+    assert runs["c"]["start"] >= runs["a"]["end"] - 1e-9
+    assert any("the work after it started on a free core" in m for m in msgs)
+    assert (tmp_path / "f" / "a.after.log").read_text().startswith("==== after a: ")
+    assert data["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(data["attempts"], 2))
+
+
+def test_failed_work_after_a_run_is_reported_and_the_run_stays_done(tmp_path, fake):
+    js = jobs_in(tmp_path / "f", [("a", 0.1)])
+    msgs = []
+    assert run_pool(js, 1, echo=msgs.append, yade=fake, after=_after(tmp_path, 0.0, code=3)) == {"a": 0}
+    assert any("the work after it failed (exit 3" in m and "a.after.log" in m for m in msgs), msgs
+
+
+def test_stopping_stops_the_work_after_runs(tmp_path, fake):
+    """A stop while the work after a run goes: it gets SIGTERM, the pool
+    returns at once, and no other work starts."""
+    js = jobs_in(tmp_path / "f", [("a", 0.1), ("b", 0.1)])
+    stop = []
+    t = []
+
+    def echo(m):
+        if "the work after it started" in m:
+            stop.append(1)
+            t.append(time.time())
+    st = run_pool(js, 1, echo=echo, yade=fake, stopping=lambda: bool(stop), after=_after(tmp_path, 30.0))
+    assert st["a"] == 0 and st["b"] in (0, "stopped")
+    assert time.time() - t[0] < 10.0
+    assert not (tmp_path / "after-a").exists() and not (tmp_path / "after-b").exists()

@@ -76,8 +76,13 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     manifest = json.loads((out / "manifest.json").read_text())
     assert [r["status"] for s in manifest.values() for r in s] == ["ok"] * 4
     sched = json.loads((out / "schedule.json").read_text())
-    assert {a["job"] for a in sched["attempts"]} == {"polyhedra-seed1", "polyhedra-seed2", "spheres-seed1",
-                                                     "spheres-seed2"}
+    runs = {"polyhedra-seed1", "polyhedra-seed2", "spheres-seed1", "spheres-seed2"}
+    assert {a["job"] for a in sched["attempts"] if a.get("kind") != "after"} == runs
+    # each run analysed once on a free core as soon as it was complete; the pass at the end kept them
+    assert sorted(a["job"] for a in sched["attempts"] if a.get("kind") == "after") == sorted(
+        f"after {r}" for r in runs)
+    assert all(a["exit"] == 0 for a in sched["attempts"] if a.get("kind") == "after")
+    assert "4 analyses of finished runs on free cores" in md
     from yade_scripts.pool import idle_core_seconds
     assert sched["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(sched["attempts"], 2))
     assert sched["summary"]["busy_core_s"] > 0
@@ -93,9 +98,15 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
 
     out, _ = study
     mtime = os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5")
+    summary = out / "polyhedra-ensemble" / "analysis-polyhedra-seed1" / "summary.csv"
+    analysed = os.path.getmtime(summary)
     assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "2"]) == 0
-    assert "polyhedra-seed1 already complete, not run again" in capsys.readouterr().out
+    said = capsys.readouterr().out
+    assert "polyhedra-seed1 already complete, not run again" in said
     assert os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5") == mtime
+    # nor analysed again: same dump, options and code (postproc.provenance)
+    assert said.count("is up to date (same dump, options and code), kept") == 4
+    assert os.path.getmtime(summary) == analysed
     # a failed run: listed, the rest still builds (the other seed gives the numbers)
     manifest = json.loads((out / "manifest.json").read_text())
     manifest["polyhedra"][1]["status"] = "run failed (3); see polyhedra-ensemble"

@@ -36,11 +36,21 @@ running runs goes through here: the study's single seeds
 * The scene's lines are relayed with the sample in front: every line of a
   job with ``echo_all`` (a study's single seeds), else each running job's
   newest line every PROGRESS_SECONDS, when it changed.
+* **Work after a run** (``after``, e.g. the study's analysis of a dump):
+  for each job that is complete, already at the start or once done,
+  ``after(job)`` gives a command; it runs on one core of its own, only
+  when no run waits, and before a freed core goes to widening, so the
+  analyses of the finished runs fill the cores that the last runs leave
+  idle, and the pool ends when they have. Its output goes to
+  ``STEM.after.log``; a failure is reported and loses nothing (the caller
+  can do the work again).
 * ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
   SIGTERM (it checkpoints and exits 75) as soon as its scene has started
-  (its SIGTERM handler installed), no job starts any more.
+  (its SIGTERM handler installed), no job starts any more, and the work
+  after runs is stopped (SIGTERM) and not started any more.
 
-Every attempt (job, start, end, threads, exit) goes to ``record`` (JSON),
+Every attempt (job, start, end, threads, exit; ``"kind": "after"`` for the
+work after a run) goes to ``record`` (JSON),
 and :func:`idle_core_seconds` gives the idle core-time of the schedule:
 cores x makespan minus the busy core-seconds.
 """
@@ -251,8 +261,21 @@ def _launch(job, threads, yade, number, note):
     return proc, offset
 
 
+class _After:
+    """The work after a run (``after(job)``'s command) while it runs."""
+
+    def __init__(self, job, cmd):
+        self.job, self.cmd = job, cmd
+        self.log = RunFiles(job.dump).stem + ".after.log"
+        with open(self.log, "a") as fh:
+            fh.write(f"==== after {job.description}: {now_utc()} on {platform.node()}, {' '.join(cmd)} ====\n")
+            fh.flush()
+            self.proc = subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+        self.started = time.time()
+
+
 def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
-             max_resumes=MAX_RESUMES):
+             max_resumes=MAX_RESUMES, after=None):
     """Run ``jobs`` (:class:`Job`) on ``cores`` cores (module docstring).
 
     Returns {description: status}: 0 done or complete already; the exit
@@ -263,18 +286,27 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     ``record``: JSON file of every attempt and the schedule's
     :func:`summary`, rewritten as the schedule goes. ``note``: {key:
     value} added to each attempt's header and record (a SLURM job id).
-    ``yade``: the executable (default: yade on the PATH)."""
+    ``yade``: the executable (default: yade on the PATH). ``after``:
+    job -> command (argv list) or None, the work after each complete job
+    (module docstring)."""
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
     stopping = stopping or (lambda: False)
-    status, waiting = {}, []
+    status, waiting, todo, doing = {}, [], [], []      # todo, doing: the work after runs
+
+    def queue_after(job):
+        cmd = after(job) if after is not None else None
+        if cmd:
+            todo.append((job, cmd))
+
     for job in order(jobs):
         if complete(job.dump):
             echo(f"{job.name} already complete, not run again")
             status[job.description] = 0
+            queue_after(job)
             continue
         if has_checkpoint(job.dump):
             echo(f"{job.name}: an unfinished run with a checkpoint, resuming it")
@@ -298,7 +330,16 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
         running[job.description] = _Running(job, threads, proc, number, offset)
         echo(f"{job.name} {why} on {threads} thread(s)")
 
-    while waiting or running:
+    def finish_after(a, code):
+        attempts.append({"job": f"after {a.job.description}", "kind": "after", "tag": a.job.tag,
+                         "start": a.started - t0, "end": time.time() - t0, "threads": 1, "exit": code})
+        write_record()
+        if code == 0:
+            echo(f"{a.job.name}: the work after it done in {time.time() - a.started:.0f} s")
+        elif not stop_sent:
+            echo(f"{a.job.name}: the work after it failed (exit {code}; see {a.log})")
+
+    while waiting or running or todo or doing:
         if stopping() and not stop_sent:
             stop_sent = True
             for r in running.values():
@@ -306,16 +347,24 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
             for job in waiting:
                 status[job.description] = "stopped"
                 echo(f"{job.name}: not started (stopping)")
-            waiting = []
+            waiting, todo = [], []
+            for a in doing:
+                a.proc.send_signal(signal.SIGTERM)
             if running:
                 echo(f"[pool] stopping: SIGTERM to {len(running)} run(s), each writes a checkpoint")
-        busy = sum(r.threads for r in running.values())
-        while waiting and (busy + waiting[0].threads <= cores or not running):
+        busy = sum(r.threads for r in running.values()) + len(doing)
+        while waiting and (busy + waiting[0].threads <= cores or not (running or doing)):
             job = waiting.pop(0)
             launch(job, job.threads)
             busy += job.threads
+        while todo and not waiting and busy < cores:
+            job, cmd = todo.pop(0)
+            doing.append(_After(job, cmd))
+            echo(f"{job.name}: the work after it started on a free core (log {doing[-1].log})")
+            busy += 1
         choice = None if stop_sent else widen_choice(
-            cores - busy, len(waiting), [(r.job, r.threads, r.started) for r in running.values() if not r.requested],
+            cores - busy, len(waiting) + len(todo),
+            [(r.job, r.threads, r.started) for r in running.values() if not r.requested],
             time.time(), {d: time_left(r.job.dump) for d, r in running.items()})
         if choice is not None:
             job, threads = choice
@@ -339,6 +388,11 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
             if relay and r.newest:
                 echo(f"{r.job.name}: {r.newest}")
                 r.newest = None
+        for a in list(doing):
+            code = a.proc.poll()
+            if code is not None:
+                doing.remove(a)
+                finish_after(a, code)
         for d in list(running):
             r = running[d]
             code = r.proc.poll()
@@ -366,6 +420,8 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
             if v.action == "done":
                 status[d] = 0
                 echo(f"{job.name} done in {end - r.started:.0f} s")
+                if not stop_sent:
+                    queue_after(job)
             elif v.action == "resume" and not stop_sent:
                 echo(f"{job.name}: {v.reason}")
                 launch(job, r.threads, why="resumed")

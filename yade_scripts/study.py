@@ -18,7 +18,12 @@ made with other parameters is set aside. Every dump is analysed
 (:func:`analyse_dump`: :func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis folder, and every usable S1
 dump once more per other contact count
-(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window);
+(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window):
+as soon as its run is complete, on a core that no waiting run needs (the
+pool's work after a run, ``--analyse DUMP``), so that the analyses fill
+the cores the last runs leave idle; the pass over all dumps at the end
+keeps every analysis made from the same dump, options and code
+(:mod:`postproc.provenance`), so a rerun analyses only what changed;
 ``OUT/manifest.json`` lists the runs and their status, and the report
 (:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A
 failed run is reported and everything else still builds; the exit code is
@@ -99,7 +104,8 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
             generate(folder, preset, s, overrides, library=library or DEFAULT_LIBRARY)
         jobs.append(Job(folder, None, s, os.path.join(folder, "run.h5"), tag=s, threads=_threads(s, preset, overrides),
                         log=os.path.join(folder, "yade.log"), echo_all=True))
-    status = run_pool(jobs, max(1, sum(j.threads for j in jobs)), echo=lambda m: print(m, flush=True)) if jobs else {}
+    status = run_pool(jobs, max(1, sum(j.threads for j in jobs)), echo=lambda m: print(m, flush=True),
+                      after=analyse_after) if jobs else {}
     return {s: status.get(s, 0) for s in samples}
 
 
@@ -132,9 +138,51 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
                      widen=(s == "polyhedra" and p["contact_engine"] == "kernel"),
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s]]
-    status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True))
+    status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
+                      after=analyse_after)
     return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
                 for _, r in rows[s]] for s in samples}
+
+
+def analysis_folder(dump):
+    """The analysis folder of a run's dump: ``analysis/`` beside ``run.h5``,
+    else ``analysis-<stem>/`` beside ``<stem>.h5``."""
+    stem = os.path.splitext(dump)[0]
+    name = "analysis" if os.path.basename(stem) == "run" else "analysis-" + os.path.basename(stem)
+    return os.path.join(os.path.dirname(dump), name)
+
+
+def analyse_after(job):
+    """The pool's work after a complete run (:func:`yade_scripts.pool.run_pool`'s
+    ``after``): ``python -m yade_scripts.study --analyse DUMP``, the analyses
+    the study makes of it, done while other runs still go; the study's own
+    pass then keeps them (:func:`analyse_dump`)."""
+    return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump)]
+
+
+def analyse_one(dump):
+    """The study's analyses of one complete dump: the primary one
+    (:func:`analyse_dump`) and, for polyhedra, the other contact counts
+    (:func:`postproc.study.counts.analyse_counts`). Returns 0 when all
+    worked, else 1 (each problem printed in one line)."""
+    from postproc.schema import DumpFormatError, DumpReader
+    from postproc.study.counts import analyse_counts
+
+    try:
+        with DumpReader(dump) as r:
+            sample = r.sample_kind
+    except (DumpFormatError, OSError) as exc:
+        print(f"study: error: {dump}: {exc}", file=sys.stderr)
+        return 1
+    analysis = analysis_folder(dump)
+    if analyse_dump(dump, analysis) is not None:
+        return 1
+    if sample == "polyhedra":
+        _, bad = analyse_counts(dump, analysis)
+        for line in bad:
+            print(f"[study] {line}", flush=True)
+        return 1 if bad else 0
+    return 0
 
 
 def run_exits(dump):
@@ -148,11 +196,19 @@ def analyse_dump(dump, analysis, errors=True):
     """The dump's analysis (:func:`postproc.pipeline.analyze_path`, what
     ``postproc analyze`` runs; ``errors=False``: no standard errors) into
     ``analysis``; None when it worked (some bad snapshots allowed: they are
-    in analysis/errors.txt and printed), else the one-line reason."""
+    in analysis/errors.txt and printed), else the one-line reason. An
+    analysis made from the same dump files with the same options by the
+    same code (:func:`postproc.provenance.is_current`) is kept, not made
+    again."""
     from postproc.pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+    from postproc.provenance import is_current
 
+    options = AnalysisOptions(errors=errors)
+    if is_current(dump, analysis, options):
+        print(f"[study] {analysis} is up to date (same dump, options and code), kept", flush=True)
+        return None
     try:
-        _, problems = analyze_path(dump, analysis, AnalysisOptions(errors=errors), progress=False)
+        _, problems = analyze_path(dump, analysis, options, progress=False)
     except BAD_INPUT as exc:
         print(f"[study] analysis of {dump} failed: {exc}", flush=True)
         return str(exc)
@@ -210,8 +266,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None):
         for label, dump, status in items:
             stem = os.path.splitext(dump)[0]
             folder = os.path.dirname(dump)
-            analysis = os.path.join(folder, "analysis" if os.path.basename(stem) == "run"
-                                    else "analysis-" + os.path.basename(stem))
+            analysis = analysis_folder(dump)
             info = stem + ".info.json"
             extra = {}
             tries = attempts.get((s, label), []) if attempts is not None else run_exits(dump)
@@ -365,6 +420,9 @@ def main(argv=None):
     ap.add_argument("--collect", metavar="DIR",
                     help="analyse and report whatever has finished in the run folders of DIR "
                          "(e.g. a SLURM array from generate --slurm), run nothing")
+    ap.add_argument("--analyse", metavar="DUMP",
+                    help="make the study's analyses of one complete dump (its analysis folder beside it, and "
+                         "the other contact counts for polyhedra), run nothing; the study does this itself")
     ap.add_argument("--set", action="append", metavar="NAME=VALUE")
     ap.add_argument("--library")
     ap.add_argument("--ensemble", type=int, default=1, help="seeds per sample (>= 2: one schedule over both samples)")
@@ -373,6 +431,14 @@ def main(argv=None):
                     help="YADE threads a polyhedra job of an ensemble starts on (the kernel's OpenMP "
                          "threads; sphere jobs use one): e.g. --jobs 16 --job-threads 2 on a 16-core node")
     args = ap.parse_args(argv)
+    if args.analyse:
+        import signal
+
+        signal.signal(signal.SIGTERM, lambda *_: sys.exit(75))    # stopped: its temporary folder goes
+        if not complete(args.analyse):
+            print(f"study: error: {args.analyse}: not a complete dump", file=sys.stderr)
+            return 2
+        return analyse_one(args.analyse)
     if args.collect:
         try:
             runs, pending, failed, _ = collect(args.collect)

@@ -31,6 +31,7 @@ import pandas as pd
 
 from ..errors import InputError
 from ..pipeline import BAD_INPUT, AnalysisOptions, analyze_path
+from ..provenance import is_current
 from ..schema import DumpReader
 from ..statistics import steady_indices
 
@@ -63,28 +64,27 @@ def claim6_snapshots(summary, names):
 def analyse_counts(dump, analysis, counts=EXTRA_COUNTS, progress=False):
     """Analyse the S1 ``dump`` with each contact count of ``counts``, on the
     snapshots of :func:`claim6_snapshots` of its primary analysis (folder
-    ``analysis``, with its summary.csv). An analysis already made after the
-    primary one is kept. Returns {count: folder} of the analyses that exist,
-    and a list of one-line problems (a count that failed is left out and
-    named there; the others go on)."""
+    ``analysis``, with its summary.csv). An analysis made from the same dump
+    files, snapshots and options by the same code
+    (:func:`postproc.provenance.is_current`) is kept. Returns {count: folder}
+    of the analyses that exist, and a list of one-line problems (a count
+    that failed is left out and named there; the others go on)."""
     primary = os.path.join(analysis, "summary.csv")
     done, problems = {}, []
     if not os.path.exists(primary):
         return done, [f"{dump}: no primary analysis ({primary}), so no other count"]
-    summary = None
+    chosen = None
     for count in counts:
         folder = count_folder(analysis, count)
-        out = os.path.join(folder, "summary.csv")
-        if os.path.exists(out) and os.path.getmtime(out) >= os.path.getmtime(primary):
-            done[count] = folder
-            continue
         try:
-            if summary is None:
+            if chosen is None:
                 summary = pd.read_csv(primary, dtype={"snapshot": str})
                 with DumpReader(dump) as reader:
                     names = list(reader.names)
                 chosen = claim6_snapshots(summary, names)
-            analyze_path(dump, folder, AnalysisOptions(types=count, snapshots=chosen), progress=progress)
+            options = AnalysisOptions(types=count, snapshots=chosen)
+            if not is_current(dump, folder, options):
+                analyze_path(dump, folder, options, progress=progress)
             done[count] = folder
         except BAD_INPUT as exc:
             problems.append(f"{dump}: the {count} count failed: {exc}")

@@ -234,8 +234,14 @@ def _schedule_lines(study):
     m = s.get("summary", {})
     if not m.get("makespan_s"):
         return []
-    widened = sum(1 for a in s.get("attempts", []) if a.get("widening"))
-    return ["", f"Schedule (`schedule.json`): {len(s.get('attempts', []))} attempt(s) on {m['cores']} cores in "
+    att = s.get("attempts", [])
+    runs = [a for a in att if a.get("kind") != "after"]
+    after = [a for a in att if a.get("kind") == "after"]
+    widened = sum(1 for a in runs if a.get("widening"))
+    return ["", f"Schedule (`schedule.json`): {len(runs)} attempt(s) of runs"
+                + (f" and {len(after)} analyses of finished runs on free cores "
+                   f"({sum(a['end'] - a['start'] for a in after) / 60:.1f} core-min)" if after else "")
+                + f" on {m['cores']} cores in "
                 f"{m['makespan_s'] / 60:.1f} min; busy {m['busy_core_s'] / 60:.1f} core-min, idle "
                 f"{m['idle_core_s'] / 60:.1f} core-min ({100 * m['idle_share']:.1f} %); "
                 f"{widened} run(s) stopped to resume on more threads."]

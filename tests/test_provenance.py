@@ -1,0 +1,102 @@
+"""What an analysis was made from (postproc.provenance): an analysis is
+current only for the same input files, options and code, and the study
+keeps a current analysis instead of making it again."""
+import json
+import os
+
+import pytest
+
+from builders import lattice_snapshot, write_snapshot
+from postproc import provenance
+from postproc.pipeline import AnalysisOptions, analyze_path
+from postproc.schema import DumpWriter
+
+
+def _dump(path, n=4):
+    """A spheres dump: one isotropic snapshot, then n - 1 of shear."""
+    with DumpWriter(str(path), "spheres", {}) as w:
+        for k in range(n):
+            snap, _, _ = lattice_snapshot()
+            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear")
+    return str(path)
+
+
+@pytest.fixture
+def analysed(tmp_path):
+    dump = _dump(tmp_path / "run.h5")
+    out = str(tmp_path / "analysis")
+    analyze_path(dump, out, AnalysisOptions(), progress=False)
+    return dump, out
+
+
+def test_an_analysis_records_its_source_and_is_current(analysed):
+    dump, out = analysed
+    rec = json.load(open(os.path.join(out, provenance.SOURCE_FILE)))
+    st = os.stat(dump)
+    assert rec["input"] == [["run.h5", st.st_size, st.st_mtime_ns]]
+    assert rec["options"]["types"] == "points" and rec["options"]["errors"] is True
+    assert rec["code"] == provenance.code_hash() and len(rec["code"]) == 64
+    assert provenance.is_current(dump, out, AnalysisOptions())
+
+
+def test_another_dump_other_options_or_no_record_is_not_current(analysed):
+    dump, out = analysed
+    assert not provenance.is_current(dump, out, AnalysisOptions(errors=False))
+    assert not provenance.is_current(dump, out, AnalysisOptions(snapshots=(0, 1)))
+    st = os.stat(dump)
+    os.utime(dump, ns=(st.st_atime_ns, st.st_mtime_ns + 1))          # the dump was rewritten
+    assert not provenance.is_current(dump, out, AnalysisOptions())
+    analyze_path(dump, out, AnalysisOptions(), progress=False)
+    assert provenance.is_current(dump, out, AnalysisOptions())
+    os.remove(os.path.join(out, provenance.SOURCE_FILE))               # made before records existed
+    assert not provenance.is_current(dump, out, AnalysisOptions())
+    open(os.path.join(out, provenance.SOURCE_FILE), "w").write("{not json")
+    assert not provenance.is_current(dump, out, AnalysisOptions())
+    assert not provenance.is_current(dump + ".missing", out, AnalysisOptions())
+
+
+def test_a_dump_in_parts_counts_its_parts(tmp_path):
+    dump = _dump(tmp_path / "run.h5")
+    parts = tmp_path / "run.h5.parts"
+    parts.mkdir()
+    (parts / "snapshot_000004.h5").write_bytes(b"x" * 10)
+    files = provenance.input_files(dump)
+    assert [f[0] for f in files] == ["run.h5", "snapshot_000004.h5"] and files[1][1] == 10
+
+
+def test_the_code_hash_follows_every_source_file(tmp_path, monkeypatch):
+    """An edit to the code of any source file of the packages changes the
+    hash; a compiled build or cache folder, a comment or a docstring does
+    not."""
+    pkg = tmp_path / "fakepkg"
+    (pkg / "sub").mkdir(parents=True)
+    (pkg / "__init__.py").write_text('"""A package."""\n\n\ndef f(x):\n    """Twice x."""\n    return 2 * x\n')
+    (pkg / "sub" / "kernel.c").write_text("int f(void) { return 1; }\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setattr(provenance, "PACKAGES", ("fakepkg",))
+    h = provenance.code_hash.__wrapped__
+    first = h()
+    (pkg / "_build").mkdir()
+    (pkg / "_build" / "kernel.c").write_text("generated")
+    assert h() == first
+    (pkg / "__init__.py").write_text('"""A package, said otherwise."""\n\n\ndef f(x):  # doubles\n'
+                                     '    """x doubled."""\n\n    return 2 * x\n')
+    assert h() == first
+    (pkg / "__init__.py").write_text('def f(x):\n    return 3 * x\n')
+    assert h() != first
+    second = h()
+    (pkg / "sub" / "kernel.c").write_text("int f(void) { return 2; }\n")
+    assert h() not in (first, second)
+
+
+def test_the_study_keeps_a_current_analysis(analysed, capsys):
+    from yade_scripts.study import analyse_dump
+
+    dump, out = analysed
+    mtime = os.path.getmtime(os.path.join(out, "summary.csv"))
+    assert analyse_dump(dump, out) is None
+    assert "is up to date (same dump, options and code), kept" in capsys.readouterr().out
+    assert os.path.getmtime(os.path.join(out, "summary.csv")) == mtime
+    assert analyse_dump(dump, out, errors=False) is None              # other options: made again
+    assert "up to date" not in capsys.readouterr().out
+    assert os.path.getmtime(os.path.join(out, "summary.csv")) > mtime
