@@ -100,3 +100,16 @@ def test_the_study_keeps_a_current_analysis(analysed, capsys):
     assert analyse_dump(dump, out, errors=False) is None              # other options: made again
     assert "up to date" not in capsys.readouterr().out
     assert os.path.getmtime(os.path.join(out, "summary.csv")) > mtime
+
+
+def test_analyse_refuses_a_dump_that_is_not_complete(tmp_path, capsys):
+    from yade_scripts.study import main
+
+    assert main(["--analyse", str(tmp_path / "nothing.h5")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not a complete dump" in err[0]
+    dump = _dump(tmp_path / "run.h5")                 # written and closed: complete
+    assert main(["--analyse", dump]) == 0
+    assert os.path.exists(tmp_path / "analysis" / "summary.csv")
+    assert main(["--analyse", dump]) == 0
+    assert "is up to date" in capsys.readouterr().out
