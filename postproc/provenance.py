@@ -16,6 +16,7 @@ from __future__ import annotations
 import ast
 import dataclasses
 import hashlib
+import importlib.util
 import json
 import os
 from functools import lru_cache
@@ -37,8 +38,7 @@ def code_hash():
     docstring does not."""
     h = hashlib.sha256()
     for pkg in PACKAGES:
-        mod = __import__(pkg)
-        root = os.path.dirname(os.path.abspath(mod.__file__))
+        root = os.path.abspath(list(importlib.util.find_spec(pkg).submodule_search_locations)[0])
         base = os.path.dirname(root)
         files = []
         for folder, dirs, names in os.walk(root):
