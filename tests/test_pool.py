@@ -227,6 +227,6 @@ def test_stopping_stops_the_work_after_runs(tmp_path, fake):
             stop.append(1)
             t.append(time.time())
     st = run_pool(js, 1, echo=echo, yade=fake, stopping=lambda: bool(stop), after=_after(tmp_path, 30.0))
-    assert st["a"] == 0 and st["b"] in (0, "stopped")
+    assert st == {"a": 0, "b": 0}                   # one core: both runs go before any work after them
     assert time.time() - t[0] < 10.0
     assert not (tmp_path / "after-a").exists() and not (tmp_path / "after-b").exists()

@@ -265,7 +265,7 @@ class _After:
     """The work after a run (``after(job)``'s command) while it runs."""
 
     def __init__(self, job, cmd):
-        self.job, self.cmd = job, cmd
+        self.job = job
         self.log = RunFiles(job.dump).stem + ".after.log"
         with open(self.log, "a") as fh:
             fh.write(f"==== after {job.description}: {now_utc()} on {platform.node()}, {' '.join(cmd)} ====\n")
