@@ -60,6 +60,33 @@ def test_compaction_reaches_sigma0_on_every_axis():
     assert not prog.isotropic(step + 1, sig, lambda: 0.0)
 
 
+def test_the_compaction_gain_drives_the_compaction_only():
+    """compaction_gain replaces servo_gain in the compaction (where the same
+    cap still applies) and leaves the shear's servo as it was; 0 means
+    servo_gain."""
+    L, sig = 1.1 * LF, np.array([0.95, 0.9, 0.5]) * SIGMA0
+    own = program(compaction_gain=0.2)
+    np.testing.assert_array_equal(own.compaction_velocities(sig, L),
+                                  program(servo_gain=0.2).compaction_velocities(sig, L))
+    np.testing.assert_array_equal(program(compaction_gain=0.0).compaction_velocities(sig, L),
+                                  program().compaction_velocities(sig, L))
+    # rate 2/s, the error (0.05, 0.1, 0.5): 0.2 e + the integral's first step, closing at rate L/2
+    e = np.array([0.05, 0.1, 0.5])
+    J = np.where(e < 0.2, 0.2 * e * DT / (0.01 / 2.0), 0.0)
+    expected = 2.0 * (0.2 * e + J) * L / 2
+    np.testing.assert_allclose(program(compaction_gain=0.2).compaction_velocities(sig, L)[[0, 2, 4], [0, 1, 2]],
+                               expected, rtol=1e-14)
+    assert program(compaction_gain=1e9).stable_gain(2.0, 1e9) == pytest.approx(0.2 / (300.0 * 2.0 * DT))
+    own.start_shear(L, 0.6, 0, 0.0)
+    np.testing.assert_array_equal(own.shear_velocities(sig, 0.99 * L), program_sheared(L).shear_velocities(sig, 0.99 * L))
+
+
+def program_sheared(L):
+    prog = program()
+    prog.start_shear(L, 0.6, 0, 0.0)
+    return prog
+
+
 def test_shear_moves_the_top_wall_holds_the_sides_and_snapshots_on_schedule():
     prog = program()
     _, L, _ = compact(prog, 1.3 * LF)

@@ -190,6 +190,21 @@ def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
     assert not folder.exists() and (tmp_path / "spheres.old-1").exists()
 
 
+def test_a_parameter_missing_from_an_older_run_counts_as_its_default():
+    """A run made before a parameter existed was made with what its default
+    does, so it is not set aside for it; it is when the parameter is asked
+    for with another value."""
+    from yade_scripts.parameters import DEFAULTS, changed
+
+    wanted = {"preset": "intermediate", **resolve("intermediate", "polyhedra")}
+    older = {k: v for k, v in wanted.items() if k != "compaction_gain"}
+    assert wanted["compaction_gain"] == DEFAULTS["compaction_gain"] == 0.0
+    assert changed(older, wanted) == []
+    assert changed(older, {**wanted, "compaction_gain": 0.2}) == ["compaction_gain"]
+    assert changed(older, {**wanted, "kappa": "3000"}) == []          # compared as set, "3000" is 3000.0
+    assert changed({**older, "unknown": 1}, wanted) == ["unknown"]    # not a parameter: still compared
+
+
 def test_presets_choose_the_contact_engine_and_the_study_its_threads():
     """Polyhedra default to the compiled kernel, which the single-run study
     starts with every core (yade -jN); spheres and the stock contacts run on

@@ -40,13 +40,15 @@ class TriaxialLoading:
     granular gas and its first contacts, far from the isotropic state);
     wall_speed (m/s) the top wall's speed in shear (0: rate_shear times the
     height at the isotropic state); servo_gain, servo_time, kappa and dt as
-    in :func:`servo.servo_rates` and :meth:`stable_gain`; iso_tolerance and
+    in :func:`servo.servo_rates` and :meth:`stable_gain`; compaction_gain
+    the servo gain of the compaction (0: servo_gain); iso_tolerance and
     unbalanced_tolerance define the isotropic state; dump_strain and
     final_strain the snapshots in shear (every dump_strain of eps_1) and the
     end."""
 
     def __init__(self, sigma0, rate_compaction, rate_shear, wall_speed, servo_gain, servo_time, kappa, dt,
-                 iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor=1.0):
+                 iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor=1.0,
+                 compaction_gain=0.0):
         self.sigma0, self.rate_compaction, self.rate_shear = sigma0, rate_compaction, rate_shear
         self.wall_speed, self.servo_gain, self.servo_time = wall_speed, servo_gain, servo_time
         self.kappa, self.dt = kappa, dt
@@ -57,13 +59,14 @@ class TriaxialLoading:
         self.contact_steps = self.interaction_steps = 0
         self.shear_start_step = self.shear_start_wall = None
         self.approach_factor, self.approached = approach_factor, approach_factor <= 1.0
+        self.compaction_gain = compaction_gain if compaction_gain > 0 else servo_gain
 
-    def stable_gain(self, max_rate):
-        """The servo gain, lowered if needed so that one step changes the
-        wall stress by at most 20 % of the error: kappa * max_rate * gain *
-        dt <= 0.2 (gain 20 at kappa * max_rate * dt = 0.02 oscillated
-        here)."""
-        return min(self.servo_gain, 0.2 / (self.kappa * max_rate * self.dt))
+    def stable_gain(self, max_rate, gain=None):
+        """The servo gain (``gain``, default servo_gain), lowered if needed
+        so that one step changes the wall stress by at most 20 % of the
+        error: kappa * max_rate * gain * dt <= 0.2 (gain 20 at kappa *
+        max_rate * dt = 0.02 oscillated here)."""
+        return min(self.servo_gain if gain is None else gain, 0.2 / (self.kappa * max_rate * self.dt))
 
     # ------------------------------------------------------------ compaction
     def compaction_velocities(self, sig, L):
@@ -75,7 +78,7 @@ class TriaxialLoading:
         if not self.approached and np.mean(sig) >= APPROACH_STRESS * self.sigma0:
             self.approached = True
         rate = self.rate_compaction * (1.0 if self.approached else self.approach_factor)
-        rates = servo.servo_rates(sig, self.sigma0, rate, self.stable_gain(rate),
+        rates = servo.servo_rates(sig, self.sigma0, rate, self.stable_gain(rate, self.compaction_gain),
                                   self.integral, self.dt, self.servo_time / self.rate_compaction)
         return servo.wall_velocities(rates, L)
 

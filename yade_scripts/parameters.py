@@ -64,6 +64,8 @@ PARAMETERS = (
     Parameter("compaction_damping", float, (0.0, 0.99), 0.2, "... and during the isotropic compression"),
     Parameter("safety", float, (1e-3, 1.0), 0.45, "dt = safety * critical time step"),
     Parameter("servo_gain", float, (1e-3, 1e3), 10.0, "proportional gain of the wall servo (lowered if unstable)"),
+    Parameter("compaction_gain", float, (0.0, 1e3), 0.0,
+              "... during the isotropic compression (0: servo_gain; lowered if unstable)"),
     Parameter("servo_time", float, (1e-6, 10.0), 0.01,
               "integral time of the servo, as the strain (of the loading rate) it spans"),
     Parameter("placement", str, ("spheres", "grains"), "grains",
@@ -184,7 +186,10 @@ def changed(recorded, wanted, names=None):
     JSON); wanted : dict of what is asked for now, a parameter's value given
     as it would be set (checked with :func:`coerce`, so ``"300"`` equals
     300.0); names : the names compared (default: every name of either).
-    Values are compared as JSON gives them back (tuples as lists)."""
+    Values are compared as JSON gives them back (tuples as lists). A
+    parameter of the table missing from ``recorded`` counts as its default:
+    a parameter added later has a default that does what the scene did
+    before it existed, so older runs are not set aside for it."""
     def norm(k, v):
         if k in SCHEMA and v is not None:
             try:
@@ -193,6 +198,7 @@ def changed(recorded, wanted, names=None):
                 pass
         return json.loads(json.dumps(v))
 
+    recorded = {**{k: DEFAULTS[k] for k in wanted if k in DEFAULTS and k not in recorded}, **recorded}
     keys = sorted(set(recorded) | set(wanted)) if names is None else sorted(names)
     return [k for k in keys if k not in recorded or k not in wanted or norm(k, recorded[k]) != norm(k, wanted[k])]
 

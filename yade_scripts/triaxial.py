@@ -64,6 +64,7 @@ readParamsFromTable(
     compaction_damping=0.2,          # ... and during the isotropic compression
     safety=0.45,                     # dt = safety * critical time step
     servo_gain=10.0,                 # proportional gain of the wall servo (lowered if unstable)
+    compaction_gain=0.0,             # ... during the isotropic compression (0: servo_gain; lowered if unstable)
     servo_time=0.01,                 # integral time of the servo, as the strain (of the loading rate) it spans
     placement='grains',              # start: random sequential addition of the bounding spheres, or of the grains tested exactly (kernel)
     initial_fraction=0.25,           # packing fraction at the start: of the bounding spheres, or of the grains (placement grains)
@@ -90,10 +91,10 @@ from yade.params.table import (  # noqa: E402
     sample, n_particles, seed, sigma0, friction, compaction_friction, wall_friction,
     density, kappa, tangential_ratio, inertial_number, wall_speed,
     compaction_inertial_number, approach_factor, damping, compaction_damping, safety,
-    servo_gain, servo_time, placement, initial_fraction, aspect, iso_tolerance,
-    unbalanced_tolerance, dump_strain, final_strain, max_steps, library, out, log_every,
-    check_every, report_seconds, timing, contact_engine, kernel_threads, verlet_skin,
-    checkpoint_seconds, resume,
+    servo_gain, compaction_gain, servo_time, placement, initial_fraction, aspect,
+    iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, max_steps, library,
+    out, log_every, check_every, report_seconds, timing, contact_engine, kernel_threads,
+    verlet_skin, checkpoint_seconds, resume,
 )
 # --- end of parameters ---
 
@@ -425,7 +426,8 @@ def report(sig, L):
 
 # ------------------------------------------------------------ the controller (every step)
 program = loading.TriaxialLoading(sigma0, rate_compact, rate_shear, wall_speed, servo_gain, servo_time, kappa, O.dt,
-                                  iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor)
+                                  iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, approach_factor,
+                                  compaction_gain)
 progress = Progress(report_seconds)
 
 
