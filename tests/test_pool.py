@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import stat
+import subprocess
 import sys
 import textwrap
 import time
@@ -34,6 +36,7 @@ FAKE = textwrap.dedent("""\
     done = float(open(stem + ".ckpt").read()) if os.path.exists(stem + ".ckpt") else 0.0
     stop = []
     signal.signal(signal.SIGTERM, lambda *a: stop.append(1))
+    open(stem + ".pid", "w").write(str(os.getpid()))
     with open(stem + ".threads", "a") as fh:
         fh.write(f"{{threads}}\\n")
     work, tick = float(r["work"]), 0.05
@@ -230,3 +233,53 @@ def test_stopping_stops_the_work_after_runs(tmp_path, fake):
     assert st == {"a": 0, "b": 0}                   # one core: both runs go before any work after them
     assert time.time() - t[0] < 10.0
     assert not (tmp_path / "after-a").exists() and not (tmp_path / "after-b").exists()
+
+
+# a study or sweep: run_pool without ``stopping``, in a process of its own
+POOL_ALONE = textwrap.dedent("""\
+    import json, os, sys
+    from yade_scripts import pool
+    pool.POLL_SECONDS, pool.STARTING_SECONDS = 0.05, 0.3
+    folder, fake = sys.argv[1:3]
+    job = pool.Job(folder, 2, "a", os.path.join(folder, "a.h5"), 30.0, tag="t")
+    st = pool.run_pool([job], 1, yade=fake, echo=lambda m: print(m, flush=True))
+    print("STATUS", json.dumps(st), flush=True)
+""")
+
+
+@pytest.mark.parametrize("how", ["SIGTERM to the pool", "Ctrl-C to its process group"])
+def test_a_pool_on_its_own_stops_on_sigterm_or_ctrl_c_and_leaves_no_run_going(tmp_path, fake, how):
+    """Without ``stopping``, the pool's SIGTERM, or a terminal's Ctrl-C
+    (SIGINT to the whole foreground process group), makes it send SIGTERM
+    to its run, which checkpoints and exits 75; the pool returns "stopped"
+    and nothing it started is left running. The run is in a session of its
+    own, so the Ctrl-C does not kill it before its checkpoint."""
+    jobs_in(tmp_path / "f", [("a", 30.0)])
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    proc = subprocess.Popen([sys.executable, "-c", POOL_ALONE, str(tmp_path / "f"), fake], cwd=root,
+                            stdout=subprocess.PIPE, text=True, start_new_session=True)
+    lines = []
+    for line in proc.stdout:
+        lines.append(line)
+        if "started on 1 thread(s)" in line:
+            break
+    pid_file = tmp_path / "f" / "a.pid"
+    deadline = time.time() + 20
+    while not pid_file.exists() and time.time() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.3)                                   # the stand-in's SIGTERM handler is installed
+    if how.startswith("SIGTERM"):
+        proc.send_signal(signal.SIGTERM)
+    else:
+        os.killpg(proc.pid, signal.SIGINT)
+    out, _ = proc.communicate(timeout=30)
+    assert 'STATUS {"a": "stopped"}' in out, "".join(lines) + out
+    assert 0 < float((tmp_path / "f" / "a.ckpt").read_text()) < 30.0     # checkpointed part-way
+    with pytest.raises(ProcessLookupError):
+        os.kill(int(pid_file.read_text()), 0)
+
+
+def test_a_pool_on_its_own_puts_the_signal_handlers_back(tmp_path, fake):
+    before = signal.getsignal(signal.SIGTERM), signal.getsignal(signal.SIGINT)
+    assert run_pool(jobs_in(tmp_path / "f", [("a", 0.1)]), 1, echo=lambda m: None, yade=fake) == {"a": 0}
+    assert (signal.getsignal(signal.SIGTERM), signal.getsignal(signal.SIGINT)) == before

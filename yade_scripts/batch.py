@@ -23,6 +23,7 @@ import sys
 from dataclasses import dataclass
 
 from .parameters import ConfigError, coerce
+from .runstate import EXIT_TERM
 
 
 @dataclass(frozen=True)
@@ -158,6 +159,11 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"batch: error: {exc}", file=sys.stderr)
         return 2
+    stopped = sorted(d for d, s in status.items() if s == "stopped")
+    if stopped:
+        print(f"batch: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
+              f"checkpoint; run the same command again to resume", file=sys.stderr)
+        return EXIT_TERM
     bad = sorted(d for d, s in status.items() if s != 0)
     if bad:
         print(f"batch: not finished: {', '.join(bad)}", file=sys.stderr)

@@ -47,7 +47,11 @@ running runs goes through here: the study's single seeds
 * ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
   SIGTERM (it checkpoints and exits 75) as soon as its scene has started
   (its SIGTERM handler installed), no job starts any more, and the work
-  after runs is stopped (SIGTERM) and not started any more.
+  after runs is stopped (SIGTERM) and not started any more. Without a
+  ``stopping`` (the study, a sweep), the pool stops so on its own SIGTERM
+  or Ctrl-C (SIGINT) while it runs, and its runs and work are started in
+  sessions of their own, so that a terminal's Ctrl-C reaches the pool
+  only and no run is left going without it.
 
 Every attempt (job, start, end, threads, exit; ``"kind": "after"`` for the
 work after a run) goes to ``record`` (JSON),
@@ -62,6 +66,7 @@ import platform
 import shutil
 import signal
 import subprocess
+import threading
 import time
 from dataclasses import dataclass, field
 
@@ -241,8 +246,9 @@ class _Running:
                 if x.startswith(SCENE)]
 
 
-def _launch(job, threads, yade, number, note):
-    """Start an attempt: the header line in the job's log, then YADE."""
+def _launch(job, threads, yade, number, note, own_session=False):
+    """Start an attempt: the header line in the job's log, then YADE (in a
+    session of its own when ``own_session``)."""
     env = yade_env()
     if job.line is not None:
         env["YADE_BATCH"] = f"{job.table}:{job.line}"
@@ -257,21 +263,32 @@ def _launch(job, threads, yade, number, note):
                   f"{''.join(f', {k} {v}' for k, v in (note or {}).items())} ====\n")
         log.flush()
         proc = subprocess.Popen(cmd, cwd=job.folder, env=env, stdout=log, stderr=subprocess.STDOUT,
-                                stdin=subprocess.DEVNULL)
+                                stdin=subprocess.DEVNULL, start_new_session=own_session)
     return proc, offset
 
 
 class _After:
     """The work after a run (``after(job)``'s command) while it runs."""
 
-    def __init__(self, job, cmd):
+    def __init__(self, job, cmd, own_session=False):
         self.job = job
         self.log = RunFiles(job.dump).stem + ".after.log"
         with open(self.log, "a") as fh:
             fh.write(f"==== after {job.description}: {now_utc()} on {platform.node()}, {' '.join(cmd)} ====\n")
             fh.flush()
-            self.proc = subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+            self.proc = subprocess.Popen(cmd, stdout=fh, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                         start_new_session=own_session)
         self.started = time.time()
+
+
+def _catch_stop_signals(flag):
+    """SIGTERM and SIGINT append to the list ``flag`` instead of ending the
+    process (in the main thread only: Python sets handlers there); returns
+    a function that puts the previous handlers back."""
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+    old = {s: signal.signal(s, lambda num, frame: flag.append(num)) for s in (signal.SIGTERM, signal.SIGINT)}
+    return lambda: [signal.signal(s, h) for s, h in old.items()]
 
 
 def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
@@ -288,13 +305,25 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     value} added to each attempt's header and record (a SLURM job id).
     ``yade``: the executable (default: yade on the PATH). ``after``:
     job -> command (argv list) or None, the work after each complete job
-    (module docstring)."""
+    (module docstring). Without ``stopping``, the pool's own SIGTERM or
+    SIGINT stops it (the module docstring)."""
+    if stopping is not None:
+        return _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session=False)
+    signals = []
+    restore = _catch_stop_signals(signals)
+    try:
+        return _run_pool(jobs, cores, record, echo, yade, lambda: bool(signals), note, max_resumes, after,
+                         own_session=True)
+    finally:
+        restore()
+
+
+def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session):
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
-    stopping = stopping or (lambda: False)
     status, waiting, todo, doing = {}, [], [], []      # todo, doing: the work after runs
 
     def queue_after(job):
@@ -326,7 +355,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
 
     def launch(job, threads, why="started"):
         number = len(read_attempts(job.dump)) + 1
-        proc, offset = _launch(job, threads, yade, number, note)
+        proc, offset = _launch(job, threads, yade, number, note, own_session)
         running[job.description] = _Running(job, threads, proc, number, offset)
         echo(f"{job.name} {why} on {threads} thread(s)")
 
@@ -359,7 +388,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
             busy += job.threads
         while todo and not waiting and busy < cores:
             job, cmd = todo.pop(0)
-            doing.append(_After(job, cmd))
+            doing.append(_After(job, cmd, own_session))
             echo(f"{job.name}: the work after it started on a free core (log {doing[-1].log})")
             busy += 1
         choice = None if stop_sent else widen_choice(

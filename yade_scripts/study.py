@@ -41,7 +41,7 @@ from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_tab
 from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
 from .resources import check_memory, memory_mb
-from .runstate import complete, read_attempts
+from .runstate import EXIT_TERM, complete, read_attempts
 
 
 def finished(folder):
@@ -471,6 +471,11 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
+    stopped = [f"{s} {label}" for s in runs for label, _, status in runs[s] if status == "stopped"]
+    if stopped:
+        print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
+              f"checkpoint; run the same command again to resume", file=sys.stderr)
+        return EXIT_TERM
     failed = analyse_and_report(args.out, runs)
     missing = unusable_samples(args.out)
     if failed:
