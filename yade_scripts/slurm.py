@@ -74,13 +74,16 @@ US_PER_CONTACT_STEP = {"polyhedra": 1.41, "spheres": 0.33}
 CONTACTS_PER_GRAIN = {"polyhedra": 2.47, "spheres": 2.0}
 #: the reference point's number of grains (COMPACTION_STEPS, US_PER_CONTACT_STEP)
 REFERENCE_GRAINS = 1000
-#: above REFERENCE_GRAINS the polyhedra's compaction takes more steps, as
-#: (N / 1000)^0.25: the default's S1 reached the isotropic state in 24 700,
+#: above REFERENCE_GRAINS the compaction takes more steps, as (N / 1000)^x:
+#: polyhedra x = 0.25, the default's S1 reached the isotropic state in 24 700,
 #: 23 600 and 28 400 steps at 1000 grains (seeds 1-3) and in 35 800 and
 #: 40 050 at 5000 (seeds 1-2), 1.48 x the mean (the same step and I_c; 200
-#: grains: 23 950 and 19 750, so no fewer steps below 1000). The spheres'
-#: compaction is not measured at 5000 (the front's 4000-sphere ones: above)
-COMPACTION_N_EXPONENT = {"polyhedra": 0.25, "spheres": 0.0}
+#: grains: 23 950 and 19 750, so no fewer steps below 1000); spheres x =
+#: 0.41, the default's S2 in 64 200, 57 400 and 98 000 steps at 1000 (mean
+#: 73 200) and the intermediate preset's in 137 200, 114 400 and 172 400 at
+#: 5000 (mean 141 300, 1.93 x; its servo gain 0.2 against 0.5; 200 spheres:
+#: 36 200, 21 600 and 22 000, not in the model)
+COMPACTION_N_EXPONENT = {"polyhedra": 0.25, "spheres": 0.41}
 #: the whole step's cost per contact grows with N while the arrays outgrow
 #: the caches: a dense 5000-grain S1 costs 1.11 and 1.06 x the 1000-grain one
 #: per grain-step in two runs, 1.08 their mean (the same strain eps_1 = 0.05
@@ -115,12 +118,10 @@ def estimate(params):
     critical step); contacts = grains x CONTACTS_PER_GRAIN; core-hours =
     steps x contacts x US_PER_CONTACT_STEP x the cost's growth with N
     (COST_GROWTH) / 3.6e9. Shear steps do not depend on the number of grains
-    (rate and time step are per grain); the polyhedra's compaction steps grow
-    as (N / 1000)^COMPACTION_N_EXPONENT above 1000 grains (measured at 5000),
-    and large frictionless sphere packings take longer to settle (the front's
-    4000-sphere compactions: 65 400 steps and two not settled after 115 000),
-    which the model does not cover. The kernel's speed-up on more threads is
-    not in the model."""
+    (rate and time step are per grain); the compaction steps grow as
+    (N / 1000)^COMPACTION_N_EXPONENT above 1000 grains (measured at 5000 for
+    both samples). The kernel's speed-up on more threads is not in the
+    model."""
     s = params["sample"]
     r = REFERENCE[s]
     # steps per unit of simulated time, relative to r's: 1 / dt, dt = safety x dt_crit ~ kappa^-1/2
