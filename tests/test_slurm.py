@@ -74,6 +74,10 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
     assert "--slurm-time" in capsys.readouterr().err
     assert study_main(["--collect", str(tmp_path)]) == 2
     assert "no generated run folder" in capsys.readouterr().err
+    set_aside = make(tmp_path / "study", (1,))              # a run folder the study set aside
+    set_aside.rename(tmp_path / "study" / f"{set_aside.name}.old-1")
+    assert study_main(["--collect", str(tmp_path / "study")]) == 2
+    assert "no generated run folder" in capsys.readouterr().err
     out = make(tmp_path, (1,))
     assert study_main(["--collect", str(out)]) == 2
     assert "no run has finished yet (1 pending)" in capsys.readouterr().err

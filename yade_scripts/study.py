@@ -34,6 +34,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import shutil
 import sys
 
@@ -42,6 +43,10 @@ from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
 from .resources import check_memory, memory_mb
 from .runstate import EXIT_TERM, complete, read_attempts
+
+
+#: a run folder set aside because its parameters changed (FOLDER.old-K)
+SET_ASIDE = re.compile(r"\.old-\d+$")
 
 
 def finished(folder):
@@ -65,7 +70,7 @@ def _set_aside_if_changed(folder, preset, sample, overrides):
     k = 1
     while os.path.exists(f"{folder}.old-{k}"):
         k += 1
-    os.rename(folder, f"{folder}.old-{k}")
+    os.rename(folder, f"{folder}.old-{k}")       # SET_ASIDE
     print(f"[{sample}] parameters changed ({', '.join(names)}): previous run kept as {folder}.old-{k}", flush=True)
 
 
@@ -328,7 +333,8 @@ def unusable_samples(out):
 
 def collect(folder):
     """Analyse and report whatever has finished in the generated run folders
-    at or below ``folder`` (each with a ``table.txt``; a line's dump in the
+    at or below ``folder`` (each with a ``table.txt``, but for the folders
+    set aside as FOLDER.old-K, :data:`SET_ASIDE`; a line's dump in the
     line's own folder ``<description>/``, as a SLURM array task writes it,
     or next to the table, as the study and sweeps do), and say what every
     other line is: resumable at step N, failed (why), unfinished, not
@@ -347,7 +353,7 @@ def collect(folder):
         raise ConfigError(f"{folder}: no such folder")
     tables = [folder] if os.path.exists(os.path.join(folder, "table.txt")) else sorted(
         os.path.join(folder, d) for d in os.listdir(folder)
-        if os.path.exists(os.path.join(folder, d, "table.txt")))
+        if os.path.exists(os.path.join(folder, d, "table.txt")) and not SET_ASIDE.search(d))
     if not tables:
         raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
     runs, others, pending, resubmit = {}, {}, [], {}
