@@ -77,14 +77,10 @@ def test_the_compaction_gain_drives_the_compaction_only():
     np.testing.assert_allclose(program(compaction_gain=0.2).compaction_velocities(sig, L)[[0, 2, 4], [0, 1, 2]],
                                expected, rtol=1e-14)
     assert program(compaction_gain=1e9).stable_gain(2.0, 1e9) == pytest.approx(0.2 / (300.0 * 2.0 * DT))
-    own.start_shear(L, 0.6, 0, 0.0)
-    np.testing.assert_array_equal(own.shear_velocities(sig, 0.99 * L), program_sheared(L).shear_velocities(sig, 0.99 * L))
-
-
-def program_sheared(L):
-    prog = program()
-    prog.start_shear(L, 0.6, 0, 0.0)
-    return prog
+    plain = program()
+    for prog in (own, plain):
+        prog.start_shear(L, 0.6, 0, 0.0)
+    np.testing.assert_array_equal(own.shear_velocities(sig, 0.99 * L), plain.shear_velocities(sig, 0.99 * L))
 
 
 def test_shear_moves_the_top_wall_holds_the_sides_and_snapshots_on_schedule():

@@ -283,10 +283,8 @@ class _After:
 
 def _catch_stop_signals(flag):
     """SIGTERM and SIGINT append to the list ``flag`` instead of ending the
-    process (in the main thread only: Python sets handlers there); returns
-    a function that puts the previous handlers back."""
-    if threading.current_thread() is not threading.main_thread():
-        return lambda: None
+    process (call from the main thread: Python sets handlers there);
+    returns a function that puts the previous handlers back."""
     old = {s: signal.signal(s, lambda num, frame: flag.append(num)) for s in (signal.SIGTERM, signal.SIGINT)}
     return lambda: [signal.signal(s, h) for s, h in old.items()]
 
@@ -306,9 +304,11 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     ``yade``: the executable (default: yade on the PATH). ``after``:
     job -> command (argv list) or None, the work after each complete job
     (module docstring). Without ``stopping``, the pool's own SIGTERM or
-    SIGINT stops it (the module docstring)."""
-    if stopping is not None:
-        return _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session=False)
+    SIGINT stops it (the module docstring; from the main thread, where
+    Python sets signal handlers)."""
+    if stopping is not None or threading.current_thread() is not threading.main_thread():
+        return _run_pool(jobs, cores, record, echo, yade, stopping or (lambda: False), note, max_resumes, after,
+                         own_session=False)
     signals = []
     restore = _catch_stop_signals(signals)
     try:
