@@ -22,7 +22,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import t
+from scipy.stats import chi2, t
+from scipy.stats import f as f_dist
 
 STEADY_START = 0.5
 N_BATCHES = 4
@@ -324,3 +325,83 @@ def seeds_needed(mean, sd, level=0.95, n_max=100000):
         mid = (lo + hi) // 2
         lo, hi = (lo, mid) if half(mid) < mean else (mid, hi)
     return hi
+
+
+@dataclass
+class BlockComponents:
+    """How a per-block value scatters inside packings and between them
+    (:func:`block_components`). Standard deviations in the value's unit."""
+    local: float           # sd of one block about its packing's and its position's means
+    local_ci: tuple        # 95 % interval of ``local`` (chi-square, ``local_dof``)
+    local_dof: int
+    packing: float         # sd of the part shared by every block of one packing (0 if not seen)
+    packing_p: float       # F-test p-value of "no packing part"
+    position: float        # sd of the fixed position effects (walls), 0 if not seen
+    position_p: float      # F-test p-value of "no position effect"
+    whole: float           # predicted sd of the whole packing's value: sqrt(packing^2 + local^2 / B)
+    seeds: int
+    blocks: int
+
+
+def block_components(values):
+    """Split the scatter of a quantity measured on B blocks of S packings
+    into a local part, a packing part and fixed position effects.
+
+    The two-way model without interaction, value[s, b] = mu + alpha_s +
+    beta_b + e[s, b]: alpha_s a packing's own part (random, sd ``packing``),
+    beta_b the block's place in the box (fixed: blocks by a wall differ from
+    inner ones in every packing), e the local part (independent, sd
+    ``local``). Method of moments on the mean squares: MS_res estimates
+    local^2, MS_seed = local^2 + B packing^2, MS_pos = local^2 + S var(beta).
+    The mean of a packing's B blocks then scatters between packings with sd
+    sqrt(packing^2 + local^2 / B) (``whole``): if ``packing`` is 0 the
+    whole-packing value scatters as local / sqrt(B), i.e. as N^(-1/2) when
+    the blocks have a fixed number of grains.
+
+    Parameters
+    ----------
+    values : array_like, shape (S, B)
+        One value per packing (row) and block (column), same block layout in
+        every packing. Blocks (columns) with a NaN in any packing are dropped.
+
+    Returns
+    -------
+    BlockComponents
+        Every field NaN unless S >= 2 and B >= 2 blocks remain.
+
+    Examples
+    --------
+    Values that are the sum of a packing part and a position part only have
+    no local part:
+
+    >>> import numpy as np
+    >>> from postproc.statistics import block_components
+    >>> v = np.array([[0.0], [1.0], [2.0]]) + np.array([[0.0, 0.5, 0.25, 0.75]])
+    >>> c = block_components(v)
+    >>> print(round(c.local, 12), round(c.packing, 6), c.seeds, c.blocks)
+    0.0 1.0 3 4
+    """
+    v = np.asarray(values, float)
+    if v.ndim != 2:
+        raise ValueError(f"block_components: values must be (packings, blocks), got shape {v.shape}")
+    v = v[:, np.isfinite(v).all(axis=0)]
+    S, B = v.shape
+    nan = float("nan")
+    if S < 2 or B < 2:
+        return BlockComponents(nan, (nan, nan), 0, nan, nan, nan, nan, nan, S, B)
+    grand = v.mean()
+    rows, cols = v.mean(axis=1), v.mean(axis=0)
+    dof = (S - 1) * (B - 1)
+    ms_res = float(((v - rows[:, None] - cols[None, :] + grand) ** 2).sum() / dof)
+    ms_seed = float(B * ((rows - grand) ** 2).sum() / (S - 1))
+    ms_pos = float(S * ((cols - grand) ** 2).sum() / (B - 1))
+    packing2 = max(0.0, (ms_seed - ms_res) / B)
+    position2 = max(0.0, (ms_pos - ms_res) / S)
+    if ms_res > 0:
+        p_seed = float(f_dist.sf(ms_seed / ms_res, S - 1, dof))
+        p_pos = float(f_dist.sf(ms_pos / ms_res, B - 1, dof))
+    else:
+        p_seed = p_pos = nan
+    ci = (float(np.sqrt(dof * ms_res / chi2.ppf(0.975, dof))), float(np.sqrt(dof * ms_res / chi2.ppf(0.025, dof))))
+    return BlockComponents(float(np.sqrt(ms_res)), ci, dof, float(np.sqrt(packing2)), p_seed,
+                           float(np.sqrt(position2)), p_pos, float(np.sqrt(packing2 + ms_res / B)), S, B)

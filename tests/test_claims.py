@@ -5,7 +5,7 @@ import pandas as pd
 import pytest
 
 from postproc.study.claims import evaluate
-from postproc.statistics import (Estimate, difference, plateau_estimate, seed_scatter, seeds_needed,
+from postproc.statistics import (Estimate, block_components, difference, plateau_estimate, seed_scatter, seeds_needed,
                                  steady_indices)
 
 
@@ -44,6 +44,44 @@ def test_seeds_needed_against_the_t_table():
     assert seeds_needed(0.0, 0.1) is None and seeds_needed(1e-6, 1.0, n_max=1000) is None
     with pytest.raises(ValueError, match="finite"):
         seeds_needed(np.nan, 1.0)
+
+
+def test_block_components_split_local_packing_and_position_parts():
+    """Hand-built: a packing part plus a position part has no local part;
+    a local part alone has no packing part. Monte Carlo, S = 2000 packings
+    of B = 8 blocks, local sd 0.1, packing sd 0.05 and fixed position
+    effects of sd 0.08: local^2 has (S-1)(B-1) = 13 993 degrees of freedom,
+    a relative standard error of sqrt(2 / 13 993) = 0.012; packing^2 =
+    (MS_seed - MS_res) / B has a standard error of about sqrt(2 / 1999) x
+    (0.05^2 + 0.1^2 / 8) = 1.2e-4; the tolerances are 4 of them. The 95 %
+    interval of local covers the truth in 95 % of 2000 small replications
+    (S = 3, B = 8) to within 4 binomial standard errors."""
+    pack = np.array([[0.0], [1.0], [2.0]])
+    pos = np.array([[0.0, 0.5, 0.25, 0.75]])
+    c = block_components(pack + pos)
+    assert c.local == pytest.approx(0, abs=1e-12) and c.packing == pytest.approx(1.0)
+    assert c.position == pytest.approx(np.std(pos, ddof=1)) and (c.seeds, c.blocks) == (3, 4)
+    v = np.array([[1.0, -1.0], [-1.0, 1.0]])               # residuals only: rows and columns cancel
+    c = block_components(v)
+    assert c.local == pytest.approx(2.0) and c.packing == 0 and c.position == 0 and c.local_dof == 1
+    assert block_components(np.array([[1.0, np.nan, 2.0], [3.0, 4.0, 5.0]])).blocks == 2
+    assert np.isnan(block_components(np.ones((1, 5))).local)
+    with pytest.raises(ValueError, match="packings, blocks"):
+        block_components(np.ones(5))
+    rng = np.random.default_rng(2)
+    S, B = 2000, 8
+    beta = rng.normal(0, 0.08, B)
+    v = rng.normal(0, 0.05, (S, 1)) + beta[None, :] + rng.normal(0, 0.1, (S, B))
+    c = block_components(v)
+    assert abs(c.local ** 2 / 0.01 - 1) < 4 * np.sqrt(2 / ((S - 1) * (B - 1)))
+    assert abs(c.packing ** 2 - 0.0025) < 4 * np.sqrt(2 / (S - 1)) * (0.0025 + 0.01 / B)
+    assert c.whole == pytest.approx(np.sqrt(c.packing ** 2 + c.local ** 2 / B))
+    assert c.position_p < 1e-6
+    n, hits = 2000, 0
+    for _ in range(n):
+        lo, hi = block_components(rng.normal(0, 0.1, (3, B)) + beta[None, :]).local_ci
+        hits += lo <= 0.1 <= hi
+    assert abs(hits / n - 0.95) < 4 * np.sqrt(0.95 * 0.05 / n)
 
 
 def test_seed_scatter_splits_persistent_from_window_noise():

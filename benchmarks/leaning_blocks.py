@@ -1,0 +1,276 @@
+"""Does the scatter of claim 6's leanings fall as N^(-1/2)? Block averaging
+inside the packings of one or more studies.
+
+    python benchmarks/leaning_blocks.py STUDY [STUDY ...] [--types points lmgc90] \
+        [--grids 1 2 3 4] [--min-grains 25] [--out runs/leaning-blocks]
+
+A few seeds per size cannot say how the seed-to-seed scatter of a leaning
+scales with the number of grains N (the size front's F-intervals span two
+decades). Blocks can: each packing's box is cut into g x g x g blocks, and a
+leaning measured block by block scatters like that of many small packings.
+If a packing's leaning is the mean of independent local parts, the blocks'
+scatter goes as n^(-1/2) with their number of grains n, the blocks of one
+packing share no common part, and the whole packing's leaning scatters
+between seeds as N^(-1/2): one 5000-grain seed is then worth five 1000-grain
+seeds.
+
+For every complete S1 run of each STUDY (a ``make study`` folder) and each
+count (``--types``: the study's point count, ``points``, and LMGC90's,
+``lmgc90``, whichever the study analysed), the snapshots of the claim's
+steady window (:func:`postproc.statistics.steady_indices` on that count's
+``summary.csv``) are classified again with the count and its tolerance as
+recorded there. Each force-bearing particle-particle contact goes to the
+block holding the midpoint of its two centres (the range of the centres
+along each axis cut into g equal parts). A block's leaning of type k (VF,
+EE) is, as for the whole packing (:func:`postproc.pertype.class_statistics`,
+``fabric_a``), the mean of (5/4)(3 u^2 - 1) over its k contacts in a
+snapshot (u the cosine of the branch vector with the compression axis z),
+then averaged over the window's snapshots. At g = 1 this is the study's own
+seed leaning, which the script checks snapshot by snapshot (to 1e-9) before
+using anything else.
+
+Per count, type, size and grid with at least 2 seeds and ``--min-grains``
+grains per block, :func:`postproc.statistics.block_components` splits the
+blocks' values into a local part (sd ``local``, with its 95 % interval), a
+part shared by a packing's blocks (``packing``, with the F-test's p) and the
+blocks' places by the walls (``position``). ``local x sqrt(n)`` is constant
+when the local part scales as n^(-1/2); the slope of log(local) on log(n)
+over every (size, grid) is fitted by weighted least squares (weights the
+degrees of freedom: var(log s) = 1 / (2 dof)) with its 95 % interval.
+``whole`` = sqrt(packing^2 + local^2 / B) is the predicted seed-to-seed sd
+of the whole packing's leaning, beside the one the seeds show (g = 1), and
+with the present mean it gives the seeds the leaning needs to be told from
+0 (:func:`postproc.statistics.seeds_needed`).
+
+Writes OUT/blocks.csv (one row per count, type, size and grid), OUT/blocks.md
+(the tables) and caches each run's contacts of the window in
+OUT/cache/*.npz (block midpoints as fractions of the centres' range, type,
+(5/4)(3 u^2 - 1), snapshot), so a second call with other grids reclassifies
+nothing.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+import numpy as np
+import pandas as pd
+
+from postproc.classify import classifier_for
+from postproc.contactset import resolve
+from postproc.coordination import force_bearing
+from postproc.errors import InputError
+from postproc.pertype import class_statistics
+from postproc.pipeline import open_source
+from postproc.statistics import block_components, seeds_needed, steady_indices
+from postproc.study.report import discover
+
+TYPES = ("VF", "EE")
+AXIS = 2                       # the compression axis, z, as in the study's analyses
+
+
+def summaries_of(run):
+    """{count: summary.csv path} of one study run: its primary analysis
+    under its own count and every other count it has."""
+    out = {}
+    for folder in [run.get("analysis"), *(run.get("counts") or {}).values()]:
+        path = os.path.join(folder, "summary.csv") if folder else None
+        if path and os.path.exists(path):
+            method = pd.read_csv(path, usecols=["ct_method"])["ct_method"].iloc[0]
+            out.setdefault(str(method), path)
+    return out
+
+
+def window_contacts(dump, summary_path, cache):
+    """The force-bearing particle-particle contacts of the steady window of
+    one run under one count: dict of arrays ``frac`` (C, 3) the contact's
+    place in [0, 1]^3 (the midpoint of the two centres over the range of
+    the centres), ``label`` (C,) type, ``g`` (C,) (5/4)(3 u^2 - 1), ``snap``
+    (C,) the snapshot's index in the window, and ``n_particles``. Checks each
+    snapshot's VF and EE leaning against the summary's ``ct_fabric_*``. The
+    cache is used only while the summary's window (its steps and leanings)
+    is the one it was made from."""
+    df = pd.read_csv(summary_path, dtype={"snapshot": str})
+    rows = df.iloc[steady_indices(df["eps_q"], df["stage"])]
+    want = {int(s): i for i, s in enumerate(rows["step"])}
+    lean = rows[[f"ct_fabric_{t}" for t in TYPES]].to_numpy(float)
+    if os.path.exists(cache):
+        with np.load(cache) as z:
+            kept = {k: z[k] for k in z.files}
+        if np.array_equal(kept["steps"], rows["step"].to_numpy(int)) and np.array_equal(kept["lean"], lean,
+                                                                                         equal_nan=True):
+            return kept                      # the same window of the same analysis
+    method, tol = str(rows["ct_method"].iloc[0]), float(rows["ct_threshold"].iloc[0])
+    count, snaps, close, shapes = open_source(dump)
+    parts = {"frac": [], "label": [], "g": [], "snap": []}
+    seen = set()
+    try:
+        classifier = classifier_for(shapes, method, tolerance=tol)
+        for snap in snaps:
+            if isinstance(snap, Exception):
+                raise SystemExit(f"leaning_blocks: {dump}: {snap}")
+            k = want.get(int(snap.step))
+            if k is None or snap.stage != "shear":
+                continue
+            labels = classifier.classify(snap, variants=False).labels
+            cs = resolve(snap)
+            sel = cs.pp & force_bearing(cs.force)
+            branch = cs.arm[sel]
+            u = branch[:, AXIS] / np.linalg.norm(branch, axis=1)
+            st = class_statistics(labels[sel], cs.normal_force[sel], branch, AXIS)
+            for t in TYPES:
+                ref = float(rows[f"ct_fabric_{t}"].iloc[k])
+                got = st[t]["fabric_a"] if t in st else np.nan
+                if not (np.isclose(got, ref, rtol=0, atol=1e-9) or (np.isnan(got) and np.isnan(ref))):
+                    raise SystemExit(f"leaning_blocks: {dump} step {snap.step}: {method} {t} leaning {got:.12g} "
+                                     f"against the summary's {ref:.12g}: not the analysis the study made")
+            centres = snap.positions
+            lo, hi = centres.min(axis=0), centres.max(axis=0)
+            mid = centres[cs.i1[sel]] + 0.5 * branch
+            parts["frac"].append((mid - lo) / (hi - lo))
+            parts["label"].append(labels[sel].astype("U8"))
+            parts["g"].append(1.25 * (3 * u * u - 1))
+            parts["snap"].append(np.full(int(sel.sum()), k))
+            seen.add(k)
+    finally:
+        close()
+    if len(seen) != len(want):
+        raise SystemExit(f"leaning_blocks: {dump}: {len(want) - len(seen)} of the {len(want)} steady-window "
+                         f"snapshots of {summary_path} are not in the dump")
+    out = {k: np.concatenate(v) for k, v in parts.items()}
+    out["n_particles"] = np.array(len(centres))
+    out["steps"], out["lean"] = rows["step"].to_numpy(int), lean
+    os.makedirs(os.path.dirname(cache), exist_ok=True)
+    np.savez_compressed(cache, **out)
+    return out
+
+
+def block_values(c, g):
+    """(len(TYPES), g^3) each type's leaning per block (the window's mean of
+    the per-snapshot block means; NaN where a block never holds the type)
+    and the mean number of grains per block."""
+    cell = np.clip((c["frac"] * g).astype(int), 0, g - 1)
+    block = (cell[:, 0] * g + cell[:, 1]) * g + cell[:, 2]
+    S, B = int(c["snap"].max()) + 1, g ** 3
+    out = np.full((len(TYPES), B), np.nan)
+    for j, t in enumerate(TYPES):
+        m = c["label"] == t
+        key = c["snap"][m] * B + block[m]
+        tot = np.bincount(key, weights=c["g"][m], minlength=S * B).reshape(S, B)
+        num = np.bincount(key, minlength=S * B).reshape(S, B)
+        with np.errstate(invalid="ignore"):
+            per_snap = np.where(num > 0, tot / np.maximum(num, 1), np.nan)
+        ok = np.isfinite(per_snap).any(axis=0)
+        out[j, ok] = np.nanmean(per_snap[:, ok], axis=0)
+    return out, float(c["n_particles"]) / B
+
+
+def slope(points):
+    """Weighted least squares of log(local) on log(n): (slope, lo, hi), 95 %."""
+    from scipy.stats import t as student
+    x = np.log([p[0] for p in points])
+    y = np.log([p[1] for p in points])
+    w = 2.0 * np.array([p[2] for p in points], float)        # 1 / var(log s) = 2 dof
+    if len(x) < 3:
+        return np.nan, np.nan, np.nan
+    X = np.column_stack([np.ones_like(x), x])
+    cov = np.linalg.inv(X.T @ (w[:, None] * X))
+    beta = cov @ X.T @ (w * y)
+    chi = float(w @ (y - X @ beta) ** 2) / (len(x) - 2)      # scale by the misfit when it exceeds 1
+    se = np.sqrt(cov[1, 1] * max(1.0, chi))
+    h = student.ppf(0.975, len(x) - 2) * se
+    return float(beta[1]), float(beta[1] - h), float(beta[1] + h)
+
+
+def fmt(x, d=3):
+    return "–" if x is None or not np.isfinite(x) else f"{x:.{d}f}"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("studies", nargs="+")
+    ap.add_argument("--types", nargs="+", default=["points", "lmgc90"])
+    ap.add_argument("--grids", nargs="+", type=int, default=[1, 2, 3, 4])
+    ap.add_argument("--min-grains", type=float, default=25.0)
+    ap.add_argument("--out", default="runs/leaning-blocks")
+    args = ap.parse_args()
+    if any(g < 1 for g in args.grids) or 1 not in args.grids:
+        raise SystemExit("leaning_blocks: --grids must be positive integers and include 1 (the whole packing)")
+    runs = []                      # (N, count, seed label, contacts)
+    for study in args.studies:
+        try:
+            found = discover(study)
+        except (OSError, ValueError) as exc:
+            raise SystemExit(f"leaning_blocks: {study}: {exc}")
+        ok = [r for r in found.get("polyhedra", []) if r.get("status") == "ok"]
+        if not ok:
+            raise SystemExit(f"leaning_blocks: {study}: no complete S1 run")
+        for r in ok:
+            have = summaries_of(r)
+            for count in args.types:
+                if count not in have:
+                    print(f"leaning_blocks: {study} {r['label']}: no {count} analysis, left out", file=sys.stderr)
+                    continue
+                name = f"{os.path.basename(os.path.normpath(study))}-{r['label'].replace(' ', '')}-{count}"
+                print(f"leaning_blocks: {study} {r['label']} ({count})", file=sys.stderr, flush=True)
+                try:
+                    c = window_contacts(r["dump"], have[count], os.path.join(args.out, "cache", name + ".npz"))
+                except InputError as exc:
+                    raise SystemExit(f"leaning_blocks: {r['dump']}: {exc}")
+                runs.append((int(c["n_particles"]), count, f"{study}:{r['label']}", c))
+    if not runs:
+        raise SystemExit("leaning_blocks: no run with the counts asked for")
+    rows = []
+    for count in args.types:
+        for N in sorted({n for n, k, _, _ in runs if k == count}):
+            group = [c for n, k, _, c in runs if k == count and n == N]
+            for g in sorted(args.grids):
+                vals = [block_values(c, g) for c in group]
+                n_grains = float(np.mean([v[1] for v in vals]))
+                if g > 1 and n_grains < args.min_grains:
+                    continue
+                for j, t in enumerate(TYPES):
+                    V = np.array([v[0][j] for v in vals])
+                    row = {"count": count, "type": t, "N": N, "seeds": len(group), "grid": g, "blocks": g ** 3,
+                           "grains_per_block": n_grains, "mean": float(np.nanmean(V))}
+                    if g == 1:
+                        row["seed_sd"] = float(np.nanstd(V[:, 0], ddof=1)) if len(group) > 1 else np.nan
+                    else:
+                        bc = block_components(V)
+                        row.update({"blocks_used": bc.blocks, "local": bc.local, "local_lo": bc.local_ci[0],
+                                    "local_hi": bc.local_ci[1], "local_dof": bc.local_dof,
+                                    "local_sqrt_n": bc.local * np.sqrt(n_grains), "packing": bc.packing,
+                                    "packing_p": bc.packing_p, "position": bc.position,
+                                    "position_p": bc.position_p, "whole": bc.whole})
+                    rows.append(row)
+    tab = pd.DataFrame(rows)
+    os.makedirs(args.out, exist_ok=True)
+    tab.to_csv(os.path.join(args.out, "blocks.csv"), index=False)
+    lines = ["| count | type | N | seeds | g | grains per block | local sd [95 %] | local × √n | packing sd (p) | "
+             "position sd (p) | predicted whole sd | seeds' sd | mean | seeds needed |", "|" + "---|" * 14]
+    fits = ["", "| count | type | slope of log(local) on log(n) [95 %] | points |", "|---|---|---|---|"]
+    for (count, t), sub in tab.groupby(["count", "type"], sort=False):
+        pts = []
+        for N, s in sub.groupby("N"):
+            whole = s[s["grid"] == 1].iloc[0]
+            for _, r in s[s["grid"] > 1].iterrows():
+                if np.isfinite(r["local"]) and r["local"] > 0:
+                    pts.append((r["grains_per_block"], r["local"], r["local_dof"]))
+                need = seeds_needed(whole["mean"], r["whole"]) if np.isfinite(r["whole"]) and whole["mean"] else None
+                lines.append(f"| {count} | {t} | {N} | {int(r['seeds'])} | {int(r['grid'])} | "
+                             f"{r['grains_per_block']:.0f} | {fmt(r['local'])} [{fmt(r['local_lo'])}, "
+                             f"{fmt(r['local_hi'])}] | {fmt(r['local_sqrt_n'], 2)} | {fmt(r['packing'])} "
+                             f"({fmt(r['packing_p'], 2)}) | {fmt(r['position'])} ({fmt(r['position_p'], 2)}) | "
+                             f"{fmt(r['whole'])} | {fmt(whole['seed_sd'])} | {whole['mean']:+.3f} | "
+                             f"{need if need else '–'} |")
+        b, lo, hi = slope(pts)
+        fits.append(f"| {count} | {t} | {fmt(b, 2)} [{fmt(lo, 2)}, {fmt(hi, 2)}] | {len(pts)} |")
+    text = "\n".join(lines + fits) + "\n"
+    with open(os.path.join(args.out, "blocks.md"), "w") as fh:
+        fh.write(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,43 @@
+"""benchmarks/leaning_blocks.py: block leanings and the scaling fit, checked
+on hand-built contact sets with exact values."""
+import importlib.util
+import os
+
+import numpy as np
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+spec = importlib.util.spec_from_file_location("leaning_blocks", os.path.join(ROOT, "benchmarks", "leaning_blocks.py"))
+lb = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(lb)
+
+
+def contacts():
+    """Two snapshots of 80 grains; VF contacts in blocks 0 and 7 of a 2 x 2 x 2
+    grid, EE contacts only in block 7 and only in snapshot 1."""
+    frac = np.array([[0.1, 0.1, 0.1], [0.2, 0.3, 0.4], [0.9, 0.9, 0.9],     # snapshot 0: VF, VF, VF
+                     [0.1, 0.2, 0.3], [0.6, 0.7, 1.0], [1.0, 1.0, 1.0]])    # snapshot 1: VF, VF, EE
+    return {"frac": frac, "label": np.array(["VF", "VF", "VF", "VF", "VF", "EE"]),
+            "g": np.array([1.0, 0.0, 2.5, -1.25, 0.5, 0.25]), "snap": np.array([0, 0, 0, 1, 1, 1]),
+            "n_particles": np.array(80)}
+
+
+def test_block_values_are_window_means_of_snapshot_means():
+    vals, n = lb.block_values(contacts(), 2)
+    assert n == 10 and vals.shape == (2, 8)
+    vf, ee = vals
+    # block 0: snapshot 0 mean (1 + 0) / 2 = 0.5, snapshot 1 -1.25: window mean -0.375
+    assert vf[0] == pytest.approx(-0.375)
+    # block 7 (fractions >= 0.5 on every axis, 1.0 included): 2.5 then 0.5
+    assert vf[7] == pytest.approx(1.5)
+    assert np.isnan(vf[1:7]).all() and ee[7] == pytest.approx(0.25) and np.isnan(ee[:7]).all()
+    whole, n1 = lb.block_values(contacts(), 1)
+    # the whole packing: snapshot means (1 + 0 + 2.5) / 3 and (-1.25 + 0.5) / 2, as the study's leaning
+    assert n1 == 80 and whole[0, 0] == pytest.approx((3.5 / 3 - 0.375) / 2) and whole[1, 0] == pytest.approx(0.25)
+
+
+def test_slope_recovers_an_exact_power_law():
+    pts = [(n, 0.9 * n ** -0.5, dof) for n, dof in ((25, 7), (125, 14), (625, 14), (37, 52))]
+    b, lo, hi = lb.slope(pts)
+    assert b == pytest.approx(-0.5) and lo <= -0.5 <= hi
+    assert np.isnan(lb.slope(pts[:2])[0])
