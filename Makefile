@@ -106,14 +106,16 @@ front: system venv kernel $(SHAPES_LIB)
 # The size front: the default study at 200, 1000 and 5000 grains per sample
 # (presets small, default, intermediate; 3 + 3 seeds each, about 5.3
 # core-hours by the model, most of it the 5000-grain S1), then the table and
-# figure of every claim's quantity against N (runs/size-front/size.md).
-# Finished runs are not run again.
+# figure of every claim's quantity against N (runs/size-front/size.md), and
+# how the claim-6 leanings' scatter scales with N, from blocks of each
+# packing (runs/size-front/blocks/blocks.md). Finished runs are not run again.
 SIZE_FRONT ?= runs/size-front
 size-front: system venv kernel $(SHAPES_LIB)
 	$(MAKE) study PRESET=small STUDY=runs/small
 	$(MAKE) study PRESET=default STUDY=runs/study
 	$(MAKE) study PRESET=intermediate STUDY=runs/intermediate
 	$(PY) -m postproc.cli size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
+	$(PY) benchmarks/leaning_blocks.py runs/small runs/study runs/intermediate --out $(SIZE_FRONT)/blocks
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

@@ -330,15 +330,44 @@ def seeds_needed(mean, sd, level=0.95, n_max=100000):
 @dataclass
 class BlockComponents:
     """How a per-block value scatters inside packings and between them
-    (:func:`block_components`). Standard deviations in the value's unit."""
-    local: float           # sd of one block about its packing's and its position's means
-    local_ci: tuple        # 95 % interval of ``local`` (chi-square, ``local_dof``)
+    (:func:`block_components`), in the value's units.
+
+    Attributes
+    ----------
+    local : float
+        The standard deviation of one block about its packing's and its
+        position's means (sqrt of the residual mean square).
+    local_ci : tuple of float
+        Its 95 % interval (chi-square on ``local_dof`` degrees of freedom).
+    local_dof : int
+        (S - 1)(B - 1).
+    packing : float
+        The standard deviation of the part every block of one packing
+        shares (0 when the method of moments gives less).
+    packing_p : float
+        The F-test's p-value of "no packing part".
+    position : float
+        The standard deviation of the blocks' fixed position effects (blocks
+        by a wall against inner ones; 0 when not seen).
+    position_p : float
+        The F-test's p-value of "no position effect".
+    whole : float
+        sqrt(packing^2 + local^2 / B): the predicted standard deviation
+        between packings of the mean of a packing's B blocks.
+    seeds : int
+        S, the packings.
+    blocks : int
+        B, the blocks used (those without a NaN).
+    """
+
+    local: float
+    local_ci: tuple
     local_dof: int
-    packing: float         # sd of the part shared by every block of one packing (0 if not seen)
-    packing_p: float       # F-test p-value of "no packing part"
-    position: float        # sd of the fixed position effects (walls), 0 if not seen
-    position_p: float      # F-test p-value of "no position effect"
-    whole: float           # predicted sd of the whole packing's value: sqrt(packing^2 + local^2 / B)
+    packing: float
+    packing_p: float
+    position: float
+    position_p: float
+    whole: float
     seeds: int
     blocks: int
 
