@@ -38,7 +38,8 @@ when the local part scales as n^(-1/2); the slope of log(local) on log(n)
 over every (size, grid) is fitted by weighted least squares (weights the
 degrees of freedom: var(log s) = 1 / (2 dof)) with its 95 % interval.
 ``whole`` = sqrt(packing^2 + local^2 / B) is the predicted seed-to-seed sd
-of the whole packing's leaning, beside the one the seeds show (g = 1), and
+of the whole packing's leaning (which weights its blocks by their contacts,
+nearly equal), beside the one the seeds show (g = 1), and
 with the present mean it gives the seeds the leaning needs to be told from
 0 (:func:`postproc.statistics.seeds_needed`).
 

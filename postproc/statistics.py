@@ -15,7 +15,9 @@ Differences of independent estimates use Welch's t (Welch-Satterthwaite
 degrees of freedom). How the seeds scatter (:func:`seed_scatter`: the part a
 longer steady window would average away and the part it would not) and how
 many seeds an interval needs to exclude 0 (:func:`seeds_needed`) say what
-more computing would buy.
+more computing would buy; how a value measured on blocks of several packings
+splits into a local part, a packing part and the blocks' places
+(:func:`block_components`) says how its scatter scales with the packing's size.
 """
 from __future__ import annotations
 
@@ -396,7 +398,8 @@ def block_components(values):
     Returns
     -------
     BlockComponents
-        Every field NaN unless S >= 2 and B >= 2 blocks remain.
+        The standard deviations and p-values are NaN (``local_dof`` 0) unless
+        S >= 2 and B >= 2 blocks remain.
 
     Examples
     --------
