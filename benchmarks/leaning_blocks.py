@@ -57,12 +57,13 @@ import sys
 
 import numpy as np
 import pandas as pd
+from scipy.stats import t as student
 
 from postproc.classify import classifier_for
 from postproc.contactset import resolve
 from postproc.coordination import force_bearing
 from postproc.errors import InputError
-from postproc.pertype import class_statistics
+from postproc.pertype import axial_leaning, class_statistics
 from postproc.pipeline import open_source
 from postproc.statistics import block_components, seeds_needed, steady_indices
 from postproc.study.report import discover
@@ -118,7 +119,6 @@ def window_contacts(dump, summary_path, cache):
             cs = resolve(snap)
             sel = cs.pp & force_bearing(cs.force)
             branch = cs.arm[sel]
-            u = branch[:, AXIS] / np.linalg.norm(branch, axis=1)
             st = class_statistics(labels[sel], cs.normal_force[sel], branch, AXIS)
             for t in TYPES:
                 ref = float(rows[f"ct_fabric_{t}"].iloc[k])
@@ -131,7 +131,7 @@ def window_contacts(dump, summary_path, cache):
             mid = centres[cs.i1[sel]] + 0.5 * branch
             parts["frac"].append((mid - lo) / (hi - lo))
             parts["label"].append(labels[sel].astype("U8"))
-            parts["g"].append(1.25 * (3 * u * u - 1))
+            parts["g"].append(axial_leaning(branch, AXIS))
             parts["snap"].append(np.full(int(sel.sum()), k))
             seen.add(k)
     finally:
@@ -169,7 +169,6 @@ def block_values(c, g):
 
 def slope(points):
     """Weighted least squares of log(local) on log(n): (slope, lo, hi), 95 %."""
-    from scipy.stats import t as student
     x = np.log([p[0] for p in points])
     y = np.log([p[1] for p in points])
     w = 2.0 * np.array([p[2] for p in points], float)        # 1 / var(log s) = 2 dof

@@ -55,6 +55,38 @@ def partial_stresses(labels, force, arm, volume):
             for k in np.unique(labels)}
 
 
+def axial_leaning(branch, axis=2):
+    """Each contact's contribution to a signed branch-vector anisotropy
+    (claim 6's leaning): (5/4)(3 u^2 - 1), u the cosine of the branch vector
+    with the compression axis. Its mean over a set of contacts is
+    (5/2)(F_3 - F_1) of their fabric tensor F, the anisotropy a of seed
+    eq. 5 restricted to the set: positive towards the axis, negative towards
+    the lateral (minor principal) directions.
+
+    Parameters
+    ----------
+    branch : array_like, shape (C, 3)
+        m, branch vectors (their sign does not matter).
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis (default z).
+
+    Returns
+    -------
+    ndarray, shape (C,)
+        Dimensionless, in [-5/4, 5/2].
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from postproc.pertype import axial_leaning
+    >>> print(axial_leaning(np.array([[0, 0, 2.0], [1.0, 0, 0]])).tolist())
+    [2.5, -1.25]
+    """
+    L = np.asarray(branch, float)
+    u = (L @ axis_vector(axis)) / np.linalg.norm(L, axis=1)
+    return 1.25 * (3 * u * u - 1)
+
+
 def class_statistics(labels, normal_force, branch, axis=2):
     """Per-class statistics of the contacts given (typically the
     force-bearing particle-particle contacts of one snapshot).
@@ -98,10 +130,7 @@ def class_statistics(labels, normal_force, branch, axis=2):
     """
     labels = np.asarray(labels)
     fn = np.asarray(normal_force, float)
-    L = np.asarray(branch, float)
-    e = axis_vector(axis)
-    u = (L @ e) / np.linalg.norm(L, axis=1)
-    g = 1.25 * (3 * u * u - 1)          # contribution of one contact to a
+    g = axial_leaning(branch, axis)     # contribution of one contact to a
     total, mean = fn.sum(), fn.mean()
     out = {}
     for k in np.unique(labels):
