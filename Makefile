@@ -22,13 +22,18 @@ export OMP_WAIT_POLICY ?= PASSIVE
 .PHONY: test test-fast docs study results test-slurm system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
-# and gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP).
+# gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
+# g++ with the headers the kernel's YADE plugin compiles against (Eigen,
+# Boost.Python, CGAL, MPI and Python: yade_scripts/yadeplugin).
+PLUGIN_DEBS := g++ libeigen3-dev libboost-python-dev libboost-serialization-dev libboost-log-dev \
+	libcgal-dev libopenmpi-dev python3-dev
 system:
 	@if ! command -v yade >/dev/null 2>&1 || ! /usr/bin/python3 -c 'import h5py' >/dev/null 2>&1 \
-	    || ! command -v gcc >/dev/null 2>&1; then \
-	  echo "make: installing Debian packages yade python3-h5py gcc"; \
+	    || ! command -v gcc >/dev/null 2>&1 || ! command -v g++ >/dev/null 2>&1 \
+	    || ! dpkg -s $(PLUGIN_DEBS) >/dev/null 2>&1; then \
+	  echo "make: installing Debian packages yade python3-h5py gcc $(PLUGIN_DEBS)"; \
 	  $(SUDO) apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq yade python3-h5py gcc libgomp1; \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq yade python3-h5py gcc libgomp1 $(PLUGIN_DEBS); \
 	fi
 
 $(STAMP): pyproject.toml
@@ -41,10 +46,15 @@ $(STAMP): pyproject.toml
 venv: $(STAMP)
 
 # The compiled contact kernel: shapes/_build/polycontact-<hash>.so (gcc,
-# OpenMP), loaded with ctypes by YADE's Python and the venv alike. Rebuilt
-# only when the source changes (the hash names the build).
+# OpenMP), loaded with ctypes by YADE's Python and the venv alike; and its
+# YADE plugin, which steps it inside YADE's C++ loop: built against the
+# installed YADE, checked and probed in YADE (about a minute, once), in
+# yade_scripts/yadeplugin/_build/<hash>. Both are rebuilt only when their
+# sources change (or YADE does). A plugin that cannot be built here says why
+# and leaves the scenes on the PyRunner path; make does not stop.
 kernel: system venv
 	$(PY) -c "from shapes import ckernel; ckernel.build(quiet=False)"
+	$(PY) -m yade_scripts.yadeplugin build
 
 test: system venv kernel
 	$(PY) -m pytest -q --durations=25

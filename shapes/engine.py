@@ -154,6 +154,13 @@ class ContactEngine:
         err = self.lib.pc_engine_step(self.handle, ckernel.dptr(pos), ckernel.dptr(quat), ckernel.dptr(wp),
                                       ckernel.dptr(self.force), ckernel.dptr(self.torque),
                                       ckernel.dptr(self.wall_force), ckernel.dptr(self.stat))
+        self.raise_for(err)
+        return self.force, self.torque, self.wall_force[:self.nw]
+
+    def raise_for(self, err):
+        """Raise the EngineError of the step's return code ``err`` (nothing
+        for 0): also what a caller of ``pc_engine_step`` from C (the YADE
+        plugin) reports."""
         if err == -2:
             raise EngineError("particle positions are not finite")
         if err == -4:
@@ -161,7 +168,6 @@ class ContactEngine:
                               "(their forces would be lost): the shapes have more faces than it was sized for")
         if err:
             raise EngineError(f"contact engine step failed (code {err}: out of memory)")
-        return self.force, self.torque, self.wall_force[:self.nw]
 
     @property
     def stats(self):

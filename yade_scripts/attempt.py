@@ -24,6 +24,7 @@ numpy, h5py and the standard library; the YADE objects (``O``) are passed in.
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
@@ -105,6 +106,9 @@ class Attempt:
         self.terminated = False
         self.failed = None                   # why the scene stopped the run, when it did
         self._pause_request = False
+        #: a context manager around O.save of a checkpoint (the scene swaps in
+        #: engines that any YADE can load: the kernel plugin's PyRunner form)
+        self.scene_saving = contextlib.nullcontext
         self.t0 = self.last_checkpoint = time.time()
         # what the earlier attempts of this run took (from the checkpoint)
         self.earlier_wall_seconds, self.earlier_engine_seconds, self.resumes = 0.0, {}, []
@@ -193,7 +197,8 @@ class Attempt:
         and log's positions, the history and ``get_state()``."""
         O, f = self.O, self.files
         t_save = time.time()
-        scene = scene_bytes(O, f.checkpoint + ".scene.yade")
+        with self.scene_saving():
+            scene = scene_bytes(O, f.checkpoint + ".scene.yade")
         self.log.flush()
         stage, eps_1 = where()
         state, arrays = get_state()

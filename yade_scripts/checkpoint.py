@@ -37,9 +37,10 @@ _BLOB = "__blob__"
 
 #: parameters that may change between an interrupted run and its resume
 #: without changing the physics (how often to report or checkpoint, the
-#: thread count: the kernel is bit-identical on any number of threads)
+#: thread count: the kernel is bit-identical on any number of threads, and
+#: on the plugin's path as on the PyRunner's)
 RUNTIME_PARAMETERS = frozenset({"resume", "checkpoint_seconds", "report_seconds", "max_steps", "kernel_threads",
-                                "timing", "noTableOk"})
+                                "kernel_plugin", "timing", "noTableOk"})
 
 
 class CheckpointError(ValueError):

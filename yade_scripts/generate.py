@@ -26,7 +26,7 @@ import os
 import shutil
 import sys
 
-from . import slurm
+from . import slurm, yadeplugin
 from .parameters import SAMPLES, ConfigError, scene_with_block
 from .presets import resolve
 
@@ -79,11 +79,15 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
 
 def copy_packages(out):
     """``out/pkg/<package>`` for each of :data:`PACKAGES`: this repository's
-    code as the run ran it (Python files and the kernel's C source; no
-    caches, no compiled kernel: it is built in the copy on first use)."""
+    code as the run ran it (Python files, the kernel's C source, the YADE
+    plugin's source; no caches, no compiled kernel: it is built in the copy
+    on first use), and the YADE plugin's build for the installed YADE when
+    there is one (:mod:`yade_scripts.yadeplugin`; the folder then carries
+    it, else its scene steps the kernel from a PyRunner)."""
     for name in PACKAGES:
         shutil.copytree(os.path.join(ROOT, name), os.path.join(out, "pkg", name), dirs_exist_ok=True,
                         ignore=shutil.ignore_patterns("__pycache__", "_build", "*.pyc", "*.so"))
+    yadeplugin.copy_build(os.path.join(out, "pkg", "yade_scripts", "yadeplugin"))
 
 
 def write_seed_table(out, sample, seeds):
@@ -122,8 +126,10 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"generate: error: {exc}", file=sys.stderr)
         return 2
+    prefix = yadeplugin.environment(run_folder=args.out).get("YADE_PREFIX") if p["sample"] == "polyhedra" else None
+    run = f"YADE_PREFIX={prefix} yade -x triaxial.py" if prefix else "yade -x triaxial.py"
     print(f"generate: {args.out}: {p['n_particles']} {p['sample']} ({args.preset}); "
-          f"run with: cd {args.out} && yade -x triaxial.py", file=sys.stderr)
+          f"run with: cd {args.out} && {run}", file=sys.stderr)
     return 0
 
 

@@ -87,6 +87,8 @@ PARAMETERS = (
     Parameter("contact_engine", str, ("kernel", "yade"), "kernel",
               'polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)'),
     Parameter("kernel_threads", int, (0, 1024), 0, "OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)"),
+    Parameter("kernel_plugin", bool, None, True,
+              "step the kernel inside YADE's C++ loop by the plugin where YADE loaded it (False: the PyRunner)"),
     Parameter("verlet_skin", float, (1e-4, 10.0), 0.1, "kernel neighbour-list margin, in units of the mean d"),
     Parameter("checkpoint_seconds", float, (0.0, 1e7), 300.0,
               "s of wall time between checkpoints (0: only on SIGTERM)"),

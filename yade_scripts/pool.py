@@ -70,6 +70,7 @@ import threading
 import time
 from dataclasses import dataclass, field
 
+from . import yadeplugin
 from .parameters import ConfigError
 from .runstate import (MAX_RESUMES, RunFiles, checkpoint_position, clear_attempt, complete,
                        has_checkpoint, judge, now_utc, read_attempts, record_attempt)
@@ -92,13 +93,16 @@ SCENE = "triaxial.py: "
 STARTING_SECONDS = 60.0
 
 
-def yade_env():
+def yade_env(folder=None):
     """The environment for a YADE process: OpenMP threads sleep when idle
     (OMP_WAIT_POLICY=PASSIVE). With the default spinning, two YADE jobs on two
     cores made the polyhedra kernel's 2-thread steps 60 times slower
     (benchmarks/bench_kernel.py next to a running job: 24 ms against 0.35 ms).
-    libgomp reads the variable when it loads, so it must be set here."""
-    env = dict(os.environ)
+    libgomp reads the variable when it loads, so it must be set here. And
+    YADE_PREFIX on the kernel plugin's build for the run folder ``folder``
+    where there is one (:func:`yade_scripts.yadeplugin.environment`): YADE
+    loads its plugins when it starts, so that too must be set here."""
+    env = yadeplugin.environment(run_folder=folder)
     env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
     return env
 
@@ -249,7 +253,7 @@ class _Running:
 def _launch(job, threads, yade, number, note, own_session=False):
     """Start an attempt: the header line in the job's log, then YADE (in a
     session of its own when ``own_session``)."""
-    env = yade_env()
+    env = yade_env(job.folder)
     if job.line is not None:
         env["YADE_BATCH"] = f"{job.table}:{job.line}"
     env["DISPLAY"] = ""

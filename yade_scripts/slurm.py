@@ -243,6 +243,9 @@ for PY in "$(head -n 1 "$YADE" | sed -n 's|^#![[:space:]]*\\([^[:space:]]*\\).*|
 done
 [[ -n "$PY" ]] || {{ echo "slurm.sh: no Python with numpy and h5py for yade_scripts.task" >&2; exit 2; }}
 export PYTHONPATH="$HERE/pkg" OMP_WAIT_POLICY=PASSIVE
+# the kernel's YADE plugin for this node's YADE: carried by the folder, else built
+# here (about a minute, once); where it cannot be, the scene steps the kernel from a PyRunner
+"$PY" -m yade_scripts.yadeplugin build >&2 || true
 exec "$PY" -m yade_scripts.task "$HERE" --requeues {int(requeues)}
 """
     path = os.path.join(folder, "slurm.sh")

@@ -82,6 +82,7 @@ readParamsFromTable(
     timing=True,                     # record the time of each engine (run.info.json)
     contact_engine='kernel',         # polyhedra contacts: "kernel" (compiled, exact) or "yade" (stock Ig2/Law2)
     kernel_threads=0,                # OpenMP threads of the kernel (0: YADE's own, i.e. yade -jN)
+    kernel_plugin=True,              # step the kernel inside YADE's C++ loop by the plugin where YADE loaded it (False: the PyRunner)
     verlet_skin=0.1,                 # kernel neighbour-list margin, in units of the mean d
     checkpoint_seconds=300.0,        # s of wall time between checkpoints (0: only on SIGTERM)
     resume=True,                     # continue from OUT.ckpt when there is one (False: start afresh)
@@ -94,7 +95,7 @@ from yade.params.table import (  # noqa: E402
     servo_gain, compaction_gain, servo_time, placement, initial_fraction, aspect,
     iso_tolerance, unbalanced_tolerance, dump_strain, final_strain, max_steps, library,
     out, log_every, check_every, report_seconds, timing, contact_engine, kernel_threads,
-    verlet_skin, checkpoint_seconds, resume,
+    kernel_plugin, verlet_skin, checkpoint_seconds, resume,
 )
 # --- end of parameters ---
 
@@ -238,6 +239,8 @@ d_of[particles] = d
 if KERNEL:
     # Every polyhedra-polyhedra and polyhedra-wall contact comes from the
     # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
+    # It steps inside YADE's C++ loop (the PolyhedraKernelEngine plugin,
+    # where YADE was started with its YADE_PREFIX), else from a PyRunner.
     from yade_scripts.kernel_contacts import KernelContacts, KernelError  # noqa: E402
 
     # the library's grains (d = 1) scaled to each particle, in the library's order
@@ -250,10 +253,11 @@ if KERNEL:
             "OpenMP's spinning threads can slow the kernel down many times")
     O.engines = [
         ForceResetter(),
-        PyRunner(command="kernel_step()", iterPeriod=1, initRun=True, label="kernel_contacts"),
+        *kernel.yade_engines("kernel_step()", "kernel_check()", plugin=kernel_plugin),   # labelled kernel_contacts
         PyRunner(command="control()", iterPeriod=1, label="controller"),
         NewtonIntegrator(damping=compaction_damping, label="newton"),
     ]
+    run.scene_saving = kernel.portable          # checkpoints hold the PyRunner form: they resume on either path
 elif POLY:
     from yade_scripts.tangential import TangentialLaw  # noqa: E402
 
@@ -355,6 +359,15 @@ def kernel_step():
         fail(f"contact kernel: {exc}")
 
 
+def kernel_check():
+    """The plugin's first step of this attempt, checked against YADE's Python
+    (a one-shot engine right after it); a refusal falls back to the PyRunner."""
+    refused = kernel.verify()
+    if refused:
+        say(f"warning: the kernel plugin was refused at step {O.iter}: {refused}; "
+            "the step was redone and the run goes on with the PyRunner")
+
+
 def unbalanced():
     """YADE's unbalanced-force ratio (from the kernel's sums with the kernel,
     which leaves YADE no interactions to average over)."""
@@ -433,6 +446,11 @@ progress = Progress(report_seconds)
 
 def control():
     run.end_of_step()
+    if KERNEL and kernel.path == "plugin":
+        problem = kernel.step_error()
+        if problem:
+            fail(f"contact kernel: {problem}")
+            return
     lo, hi = box()
     L = hi - lo
     F = wall_forces()
@@ -506,6 +524,7 @@ def set_scene_state(state, arrays):
         kernel.rebind()
         kernel.engine.set_state({k[len("kernel/"):]: v for k, v in arrays.items() if k.startswith("kernel/")})
         kernel.set_counters(state["kernel_counters"])
+        kernel.install("kernel_step()", "kernel_check()", kernel_plugin)     # the loaded scene holds the PyRunner form
     elif POLY:
         tangential_law.history = {(int(a), int(b)): tuple(f) for (a, b), f in
                                   zip(arrays["tangential_ids"].tolist(), arrays["tangential_force"].tolist())}
@@ -523,6 +542,9 @@ run.start()
 if run.resumed:
     run.restore(set_scene_state, stage_and_strain)
     newton = [e for e in O.engines if isinstance(e, NewtonIntegrator)][0]     # the loaded scene's own engine
+if KERNEL:
+    say(f"polyhedra contacts: the kernel steps {'inside YADE (plugin)' if kernel.path == 'plugin' else 'from a PyRunner'}: "
+        f"{kernel.path_note}")
 O.timingEnabled = bool(timing)
 outcome = run.loop(done=lambda: program.stage == "done", get_state=scene_state, where=stage_and_strain)
 if outcome == "stalled":
@@ -547,7 +569,7 @@ info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"]
         "host": host.host_info()}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
-                      "memory_bytes": kernel.memory_bytes()}
+                      "memory_bytes": kernel.memory_bytes(), "path": kernel.path, "path_note": kernel.path_note}
 with open(run.files.info, "w") as fh:
     json.dump(info, fh, indent=1)
 say(f"done in {run.wall_seconds() - run.earlier_wall_seconds:.0f} s, {O.iter} steps; dump {out}")

@@ -1,0 +1,33 @@
+"""``python -m yade_scripts.yadeplugin build | status | prefix``.
+
+build   build and probe the plugin for the installed YADE unless done (exit 0
+        either way: a plugin that cannot be built leaves the PyRunner path)
+status  one line: ready (and where), or why not; exit 0 ready, 1 not
+prefix  print the YADE_PREFIX of the ready plugin; exit 1 (reason on stderr) if none
+"""
+import sys
+
+from . import build, status
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    cmd = argv[0] if argv else "status"
+    if cmd == "build":
+        st = build(quiet=False)
+        print(f"yadeplugin: {'ready: ' + st['prefix'] if st['ok'] else 'not used, the scenes step on the PyRunner path: ' + st['why']}")
+        return 0
+    if cmd in ("status", "prefix"):
+        st = status()
+        if cmd == "prefix" and st["ok"]:
+            print(st["prefix"])
+            return 0
+        line = f"ready: {st['prefix']}" if st["ok"] else f"not ready: {st['why']}"
+        print(f"yadeplugin: {line}", file=sys.stdout if cmd == "status" else sys.stderr)
+        return 0 if st["ok"] else 1
+    print(f"usage: python -m yade_scripts.yadeplugin build | status | prefix (got {cmd!r})", file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())
