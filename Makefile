@@ -114,7 +114,7 @@ front: system venv kernel $(SHAPES_LIB)
 	$(PY) benchmarks/front_analysis.py --out $(FRONT)-analysis
 
 # The size front: the default study at 200, 1000 and 5000 grains per sample
-# (presets small, default, intermediate; 3 + 3 seeds each, about 5.3
+# (presets small, default, intermediate; 3 + 3 seeds each, about 4.7
 # core-hours by the model, most of it the 5000-grain S1), then the table and
 # figure of every claim's quantity against N (runs/size-front/size.md), and
 # how the claim-6 leanings' scatter scales with N, from blocks of each

@@ -3,23 +3,26 @@ on the same dense packing, in one run.
 
     yade -j2 -n -x benchmarks/bench_engines.py RUN.h5 [SNAPSHOT [KERNEL_STEPS [STOCK_STEPS [BLOCKS]]]]
 
-(run it with OMP_WAIT_POLICY=PASSIVE in the environment). RUN.h5 is a polyhedra
+(run it with OMP_WAIT_POLICY=PASSIVE in the environment, and with the kernel
+plugin's YADE_PREFIX, ``$(python -m yade_scripts.yadeplugin prefix)``, to time
+the plugin's path too). RUN.h5 is a polyhedra
 dump (for example the isotropic snapshot of a kernel run); its parameters give
 k_V, k_t, friction, dt and the damping. The script builds the packing in
 YADE (the dumped shapes and poses, the six walls at the box), saves it in
 memory, then alternates blocks: reload, run STOCK_STEPS with YADE's
 collider + InteractionLoop (Ig2_Polyhedra_Polyhedra_PolyhedraGeom,
 Ig2_Wall_Polyhedra_PolyhedraGeom, the volumetric law) and our per-contact
-tangential law; reload, run KERNEL_STEPS with the kernel's PyRunner. Walls
+tangential law; reload, run KERNEL_STEPS with the kernel's PyRunner; and, when
+YADE loaded the kernel plugin, reload, run KERNEL_STEPS with the plugin. Walls
 are fixed (no servo: it is the same Python in both scenes). Each block
 starts with 2 untimed steps (the stock collider creates its interactions).
 
 Printed per engine (medians over blocks): steps/s, touching contacts,
 us per contact-step, and the split of a step: YADE engines from
-O.timingEnabled; for the kernel, its PyRunner split into reading the states,
-the C kernel and adding the forces; the ratio stock/kernel per contact-step
-(median of the block-pair ratios). JSON next to the dump:
-RUN.bench_engines.json.
+O.timingEnabled; for the kernel, its split into reading the states, the C
+kernel and adding the forces; the ratios stock/kernel per contact-step, for
+the PyRunner and for the plugin (medians of the per-block ratios). JSON next
+to the dump: RUN.bench_engines.json.
 """
 import json
 import os
@@ -63,15 +66,26 @@ engines = {}
 
 
 def scene(kind):
-    """Reload the packing and set the engines of ``kind``; returns the kernel or None."""
+    """Reload the packing and set the engines of ``kind`` ("yade", "kernel":
+    the PyRunner path, "plugin"); returns the kernel or None."""
     global law
     O.loadTmp("init")
     O.dt = P["dt"]
-    if kind == "kernel":
+    if kind in ("kernel", "plugin", "framework"):
         k = KernelContacts(O, particles, walls, shape_v, shape_t, d, k_v, P["tangential_ratio"] * k_v * a_face,
                                 mu, mu_w, P.get("verlet_skin", 0.1) * P["d_mean"], O.numThreads)
-        O.engines = [ForceResetter(), PyRunner(command="kernel()", iterPeriod=1, initRun=True, label="kernel_contacts"),
-                     NewtonIntegrator(damping=P["damping"], label="newton")]
+        # framework: the plugin, and beside it YADE's collider and an
+        # InteractionLoop over the same grains whose functors match no
+        # polyhedra pair: what YADE's own machinery costs per step before any
+        # geometry (the floor of a functor pair fed by the collider)
+        framework = [InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Wall_Aabb()], label="collider"),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                     [Law2_ScGeom_FrictPhys_CundallStrack()], label="interactionLoop")]
+        O.engines = ([ForceResetter()] + (framework if kind == "framework" else [])
+                     + k.yade_engines("kernel()", "kernel.verify()", plugin=kind != "kernel")
+                     + [NewtonIntegrator(damping=P["damping"], label="newton")])
+        if k.path != ("pyrunner" if kind == "kernel" else "plugin"):
+            raise SystemExit(f"bench_engines: no {kind} path: {k.path_note}")
         return k
     law = TangentialLaw(O, Vector3, kt_of)
     O.engines = [
@@ -116,44 +130,72 @@ def block(kind, steps):
     if kernel is not None:
         res["kernel_split_ms_per_step"] = {key: val * 1e3 / steps for key, val in kernel.seconds.items()}
         res["pairs"] = kernel.n_pairs
+        res["pairs_yade"] = len(O.interactions)
         res["memory_bytes"] = kernel.memory_bytes()
+        kernel.close()
     else:
         res["pairs"] = len(O.interactions)
     return res
 
 
 kernel = None
-results = {"kernel": [], "yade": []}
+from yade_scripts import yadeplugin  # noqa: E402
+
+KINDS = ("yade", "kernel") + (("plugin", "framework") if yadeplugin.loaded_class()[0] is not None else ())
+results = {k: [] for k in KINDS}
 for b in range(BLOCKS):
-    results["yade"].append(block("yade", K_STOCK))
-    results["kernel"].append(block("kernel", K_KERNEL))
-    print(f"block {b}: stock {results['yade'][-1]['us_per_contact_step']:.1f} us/contact-step, "
-          f"kernel {results['kernel'][-1]['us_per_contact_step']:.2f}", flush=True)
+    for kind in KINDS:
+        results[kind].append(block(kind, K_STOCK if kind == "yade" else K_KERNEL))
+    print(f"block {b}: " + ", ".join(f"{k} {results[k][-1]['us_per_contact_step']:.2f}" for k in KINDS)
+          + " us/contact-step", flush=True)
 
 
 def med(kind, key):
     return float(np.median([r[key] for r in results[kind]]))
 
 
-ratio = float(np.median([a["us_per_contact_step"] / b["us_per_contact_step"]
-                         for a, b in zip(results["yade"], results["kernel"])]))
+def ratio_to(kind):
+    return float(np.median([a["us_per_contact_step"] / b["us_per_contact_step"]
+                            for a, b in zip(results["yade"], results[kind])]))
+
+
+ratio = ratio_to("kernel")
 summary = {"dump": DUMP, "snapshot": SNAP, "particles": len(particles), "threads": O.numThreads,
            "omp_wait_policy": os.environ.get("OMP_WAIT_POLICY"), "ratio_stock_over_kernel": ratio,
            "blocks": results}
+if "plugin" in results:
+    summary["ratio_stock_over_plugin"] = ratio_to("plugin")
+    summary["ratio_pyrunner_over_plugin"] = float(np.median([a["us_per_contact_step"] / b["us_per_contact_step"]
+                                                             for a, b in zip(results["kernel"], results["plugin"])]))
+    fw = results["framework"]
+    summary["framework_ms_per_step"] = {
+        e: float(np.median([r["engines_ms_per_step"][e] for r in fw])) for e in ("collider", "interactionLoop")}
+    summary["framework_interactions"] = float(np.median([r["pairs_yade"] for r in fw]))
+    summary["plugin_glue_ms_per_step"] = float(np.median([r["kernel_split_ms_per_step"]["read"]
+                                                          + r["kernel_split_ms_per_step"]["apply"]
+                                                          for r in results["plugin"]]))
 print(f"\n{len(particles)} polyhedra, yade -j{O.numThreads}, {BLOCKS} blocks (medians)")
 print(f"{'engine':>7} {'steps/s':>9} {'contacts':>9} {'pairs':>7} {'us/contact-step':>16}")
-for kind in ("yade", "kernel"):
+for kind in KINDS:
     print(f"{kind:>7} {med(kind, 'steps_per_s'):9.2f} {med(kind, 'touching'):9.0f} {med(kind, 'pairs'):7.0f} "
           f"{med(kind, 'us_per_contact_step'):16.2f}")
-print(f"stock / kernel per contact-step: {ratio:.1f}x")
-for kind in ("yade", "kernel"):
+print(f"stock / kernel (PyRunner) per contact-step: {ratio:.1f}x")
+if "plugin" in results:
+    print(f"stock / kernel (plugin) per contact-step: {summary['ratio_stock_over_plugin']:.1f}x; "
+          f"PyRunner / plugin: {summary['ratio_pyrunner_over_plugin']:.2f}x")
+    fwm = summary["framework_ms_per_step"]
+    print(f"YADE's collider + InteractionLoop over the same grains, no geometry: {fwm['collider']:.3f} + "
+          f"{fwm['interactionLoop']:.3f} ms/step ({summary['framework_interactions']:.0f} interactions), "
+          f"against the plugin's reading and adding: {summary['plugin_glue_ms_per_step']:.3f} ms/step")
+for kind in KINDS:
     last = results[kind][-1]
     parts = ", ".join(f"{k} {v:.2f}" for k, v in last["engines_ms_per_step"].items())
     print(f"{kind} ms/step by engine (last block): {parts}")
-k = results["kernel"][-1]
-print("kernel PyRunner split ms/step (last block): "
-      + ", ".join(f"{a} {b:.3f}" for a, b in k["kernel_split_ms_per_step"].items())
-      + f"; kernel memory {k['memory_bytes'] / 1e6:.2f} MB")
+for kind in KINDS[1:]:
+    k = results[kind][-1]
+    print(f"{kind} split ms/step (last block): "
+          + ", ".join(f"{a} {b:.3f}" for a, b in k["kernel_split_ms_per_step"].items())
+          + f"; kernel memory {k['memory_bytes'] / 1e6:.2f} MB")
 with open(DUMP[:-3] + ".bench_engines.json", "w") as fh:
     json.dump(summary, fh, indent=1)
 sys.exit(0)

@@ -56,6 +56,7 @@ import pandas as pd
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
+from yade_scripts import yadeplugin  # noqa: E402
 from yade_scripts.checkpoint import read as read_checkpoint  # noqa: E402
 from yade_scripts.generate import DEFAULT_LIBRARY, generate  # noqa: E402
 
@@ -90,7 +91,7 @@ def run_once(folder, threads, steps, timeout, fresh):
         before = {"step": 0, "engine_seconds": {}, "kernel_counters": {"seconds": {}, "calls": 0, "touch_steps": 0}}
     else:
         before = read_checkpoint(ckpt)[0]
-    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
+    env = dict(yadeplugin.environment(run_folder=folder), OMP_WAIT_POLICY="PASSIVE")    # as the study runs it
     t0 = time.perf_counter()
     proc = subprocess.Popen(["yade", "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
@@ -133,48 +134,93 @@ def run_once(folder, threads, steps, timeout, fresh):
     return out
 
 
+def controller_ms(spec):
+    """The scene's controller (servo, snapshots and dumps, log rows) in ms
+    per step over the whole run that wrote the dump ``spec`` ("RUN.h5:SNAP"),
+    from its RUN.info.json, else its last checkpoint (NaN when the run kept
+    no timing)."""
+    stem = spec.rsplit(":", 1)[0][:-3]
+    try:
+        with open(stem + ".info.json") as fh:
+            i = json.load(fh)
+        return 1e3 * i["engine_seconds"]["controller"] / i["steps"]
+    except (OSError, KeyError, ValueError, ZeroDivisionError):
+        pass
+    try:                                  # a run still going: its last checkpoint
+        meta = read_checkpoint(stem + ".ckpt")[0]
+        return 1e3 * meta["engine_seconds"]["controller"] / meta["step"]
+    except Exception:                     # noqa: BLE001 - no timing of this run: the column stays empty
+        return np.nan
+
+
 def dense(specs, threads, steps, blocks, out):
     """The dense packings ``specs`` ("RUN.h5:SNAP") stepped side by side in
-    one YADE run per thread count (``bench_scale_dense.py``): medians over
-    blocks of every figure, per-grain ratios against the smallest packing
-    (paired block by block) and speed-ups against the fewest threads.
+    one YADE run per thread count (``bench_scale_dense.py``), each on both
+    kernel paths: medians over blocks of every figure, per-grain ratios
+    against the smallest packing and speed-ups against the fewest threads
+    (paired block by block, path by path), the PyRunner's step against the
+    plugin's, and the serial share. The whole step adds the scene's
+    controller (servo, dumps), timed in the run that wrote each dump (its
+    info.json), to the engines stepped here; the serial share is the part
+    of it that runs on one thread whatever the thread count: reading the
+    poses, adding the forces and the controller.
     Writes OUT/bench-scale-dense.md and returns its lines."""
     rows = []
+    env = dict(yadeplugin.environment(), OMP_WAIT_POLICY="PASSIVE")
+    if "YADE_PREFIX" not in env:
+        print(f"bench_scale: no ready kernel plugin ({yadeplugin.status()['why']}): the PyRunner path only",
+              flush=True)
+        env["BENCH_PATHS"] = "pyrunner"
+    ctrl = {}
     for th in threads:
         js = os.path.join(out, f"dense-j{th}.json")
         subprocess.run(["yade", "-j", str(th), "-n", "-x", os.path.join(ROOT, "benchmarks", "bench_scale_dense.py"),
-                        js, str(steps), str(blocks), *specs], check=True, env=dict(os.environ, OMP_WAIT_POLICY="PASSIVE"),
-                       stdout=subprocess.DEVNULL)
+                        js, str(steps), str(blocks), *specs], check=True, env=env, stdout=subprocess.DEVNULL)
         with open(js) as fh:
             res = json.load(fh)
-        for p in res["packings"]:
+        for spec, p in zip(specs, res["packings"]):
+            ctrl[p["particles"]] = controller_ms(spec)
             for b, blk in enumerate(p["blocks"]):
                 e, k = blk["engines_ms_per_step"], blk["kernel_split_ms_per_step"]
-                rows.append({"n": p["particles"], "threads": th, "block": b, "step_ms": blk["wall_ms_per_step"],
+                rows.append({"n": p["particles"], "threads": th, "path": blk.get("path", "pyrunner"),
+                             "block": b // (2 if len(p["blocks"]) > blocks else 1),
+                             "step_ms": blk["wall_ms_per_step"],
                              "us_per_grain_step": blk["us_per_grain_step"], "kernel_ms": k["kernel"],
                              "read_ms": k["read"], "apply_ms": k["apply"], "newton_ms": e.get("newton", np.nan),
                              "touching": blk["touching"],
                              "us_per_touch": 1e3 * k["kernel"] / blk["touching"] if blk["touching"] else np.nan,
                              "kernel_memory_mb": blk["memory_bytes"] / 2 ** 20})
     df = pd.DataFrame(rows)
+    df["controller_ms"] = df["n"].map(ctrl)
+    df["whole_ms"] = df["step_ms"] + df["controller_ms"].fillna(0)
+    df["serial_share"] = (df["read_ms"] + df["apply_ms"] + df["controller_ms"].fillna(0)) / df["whole_ms"]
     df.to_csv(os.path.join(out, "bench-scale-dense.csv"), index=False)
-    base = df["n"].min()
-    df["per_grain_ratio"] = df.apply(lambda r: r["us_per_grain_step"] / df[(df["n"] == base) & (
-        df["threads"] == r["threads"]) & (df["block"] == r["block"])]["us_per_grain_step"].iloc[0], axis=1)
-    few = min(threads)
-    df["speedup"] = df.apply(lambda r: df[(df["n"] == r["n"]) & (df["threads"] == few) & (
-        df["block"] == r["block"])]["step_ms"].iloc[0] / r["step_ms"], axis=1)
-    med = df.groupby(["n", "threads"]).median(numeric_only=True).reset_index()
+    key = ["n", "threads", "path", "block"]
+    idx = df.set_index(key)
+    base, few = df["n"].min(), min(threads)
+    df["per_grain_ratio"] = [r["us_per_grain_step"] / idx.loc[(base, r["threads"], r["path"], r["block"]),
+                                                              "us_per_grain_step"] for _, r in df.iterrows()]
+    df["speedup"] = [idx.loc[(r["n"], few, r["path"], r["block"]), "step_ms"] / r["step_ms"] for _, r in df.iterrows()]
+    has_py = (df["path"] == "pyrunner").any()
+    df["pyrunner_over_plugin"] = [
+        (idx.loc[(r["n"], r["threads"], "pyrunner", r["block"]), "whole_ms"] / r["whole_ms"])
+        if has_py and r["path"] == "plugin" else np.nan for _, r in df.iterrows()]
+    med = df.groupby(["n", "threads", "path"]).median(numeric_only=True).reset_index()
+    med = med.sort_values(["n", "threads", "path"])
     lines = [f"Dense packings ({', '.join(specs)}), {steps} steps per block, medians of {blocks} blocks "
-             f"(bench_scale.py --dense, {time.strftime('%Y-%m-%d')}):", "",
-             f"| N | threads | ms per step | µs per grain-step | per grain vs N = {base} | speed-up vs {few} thread(s) | "
-             "kernel | read poses | add forces | Newton | touching contacts | µs per touching contact (kernel) | "
-             "kernel memory (MB) |", "|---" * 13 + "|"]
+             f"(bench_scale.py --dense, {time.strftime('%Y-%m-%d')}); the controller per step is the run's "
+             f"own (its info.json), the same on both paths:", "",
+             f"| N | threads | kernel path | ms per step (engines) | + controller | whole step ms | "
+             f"PyRunner / plugin (whole step) | µs per grain-step | per grain vs N = {base} | "
+             f"speed-up vs {few} thread(s) | kernel | read poses | add forces | Newton | serial share | "
+             "touching contacts | µs per touching contact (kernel) | kernel memory (MB) |", "|---" * 18 + "|"]
     for _, r in med.iterrows():
-        lines.append(f"| {int(r['n'])} | {int(r['threads'])} | {r['step_ms']:.2f} | {r['us_per_grain_step']:.2f} | "
-                     f"{r['per_grain_ratio']:.3f} | {r['speedup']:.2f} | {r['kernel_ms']:.2f} | {r['read_ms']:.2f} | "
-                     f"{r['apply_ms']:.2f} | {r['newton_ms']:.2f} | {r['touching']:.0f} | {r['us_per_touch']:.2f} | "
-                     f"{r['kernel_memory_mb']:.1f} |")
+        ratio = "" if np.isnan(r["pyrunner_over_plugin"]) else f"{r['pyrunner_over_plugin']:.2f}"
+        lines.append(f"| {int(r['n'])} | {int(r['threads'])} | {r['path']} | {r['step_ms']:.2f} | "
+                     f"{r['controller_ms']:.2f} | {r['whole_ms']:.2f} | {ratio} | {r['us_per_grain_step']:.2f} | "
+                     f"{r['per_grain_ratio']:.3f} | {r['speedup']:.2f} | {r['kernel_ms']:.2f} | {r['read_ms']:.3f} | "
+                     f"{r['apply_ms']:.3f} | {r['newton_ms']:.2f} | {r['serial_share']:.3f} | {r['touching']:.0f} | "
+                     f"{r['us_per_touch']:.2f} | {r['kernel_memory_mb']:.1f} |")
     with open(os.path.join(out, "bench-scale-dense.md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     return lines

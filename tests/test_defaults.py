@@ -221,9 +221,14 @@ def test_the_core_hours_the_docs_quote():
     assert f"about {16 * pair('intermediate'):.0f} core-hours by the model" in scenes
     assert f"about {18 * pair('default'):.1f} core-hours by the cost model" in " ".join(text("docs/study.md").split())
     paper = estimate(resolve("paper", "polyhedra"))["core_hours"]
-    assert f"about **{paper:.0f} core-hours per S1 seed**" in scenes
-    assert f"{paper:.0f} × (0.37 + 0.63/64) ≈ {paper * (0.37 + 0.63 / 64):.0f} hours" in scenes
-    assert f"{paper:.0f} × (0.37 + 0.63/7.1) ≈ {paper * (0.37 + 0.63 / 7.1):.0f} hours" in scenes
+    old = estimate(resolve("paper", "polyhedra"), kernel_path="pyrunner")["core_hours"]
+    assert f"about **{paper:.0f} core-hours per S1 seed**" in scenes and f"(about {old:.0f} on the `PyRunner` path)" in scenes
+    assert f"{paper:.0f} × (0.045 + 0.955/64) ≈ {paper * (0.045 + 0.955 / 64):.0f} hours" in scenes
+    assert f"{paper:.0f} × (0.045 + 0.955/7.1) ≈ {paper * (0.045 + 0.955 / 7.1):.0f} hours" in scenes
+    assert f"{old:.0f} × (0.37 + 0.63/7.1) ≈ {old * (0.37 + 0.63 / 7.1):.0f} hours" in scenes
+    s1 = estimate(resolve("intermediate", "polyhedra"))["core_hours"]
+    s2 = estimate(resolve("intermediate", "spheres"))["core_hours"]
+    assert f"(16 × ({s1:.2f} + {s2:.2f}))" in scenes
 
 
 def test_the_scene_parameters_the_docs_quote():

@@ -18,7 +18,13 @@ import pytest
 from yade_scripts.generate import main as generate_main
 from yade_scripts.presets import resolve
 from yade_scripts.slurm import (COMPACTION_STEPS, CONTACTS_PER_GRAIN, PLACEMENT_FACTOR, SHEAR_STEPS,
-                                US_PER_CONTACT_STEP, estimate)
+                                US_PER_CONTACT_STEP, estimate, shear_step_factor)
+
+#: the reference run's 1/dt over the expected 1/dt of 1000 grains drawn from
+#: the library (its dt 3.953 us, the library's limit 3.276 us = 1/(1.11 x the
+#: expectation)), and the expected 1/dt of N grains over that of 1000
+REF_RATE = 3.276 * 1.1100 / 3.953
+DRAWS = {200: 0.8725, 1000: 1.0, 2000: 1.0479, 5000: 1.0967, 10_000: 1.1089, 36_933: 1.1100}
 from yade_scripts.study import main as study_main
 
 YADE = shutil.which("yade")
@@ -148,26 +154,42 @@ def test_cost_model_scaling():
     grown = 36.933 ** 0.25                                 # the compaction's growth with N, above 1000 grains
     assert e["compaction_steps"] == pytest.approx(COMPACTION_STEPS["polyhedra"] * root * 10 ** 0.55 * grown,
                                                   rel=1e-12)
-    assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 5, rel=1e-12)
+    # the shear at the time step expected of 36 933 grains, every sample holding the library's limit
+    assert e["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * root * 5 * DRAWS[36_933] / REF_RATE,
+                                             rel=1e-12)
     assert e["contacts"] == pytest.approx(36933 * CONTACTS_PER_GRAIN["polyhedra"])
-    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"] * 1.08
+    assert e["core_hours"] == pytest.approx(e["steps"] * e["contacts"] * US_PER_CONTACT_STEP["polyhedra"] * 1.04
                                             / 3.6e9, rel=1e-12)                # the 5000-grain cost per contact
+    assert US_PER_CONTACT_STEP["polyhedra"] == pytest.approx(1.41 * 0.670, rel=1e-12)    # the plugin's step
+    assert estimate(p, "pyrunner")["core_hours"] == pytest.approx(e["core_hours"] / 0.670, rel=1e-12)
+    with pytest.raises(ValueError, match="kernel_path"):
+        estimate(p, "python")
     # the cost per contact-step from 1000 to 5000 grains, linear in log N; the compaction above 1000 only
     from yade_scripts.slurm import _grains_factor
     assert [_grains_factor(n, 5000, 1.08) for n in (200, 1000, 5000, 36933)] == [1.0, 1.0, 1.08, 1.08]
     assert _grains_factor(math.sqrt(5) * 1000, 5000, 1.08) == pytest.approx(1.04, rel=1e-12)
-    small = resolve("small", "polyhedra")
-    assert estimate(small)["steps"] == pytest.approx(estimate(resolve("default", "polyhedra"))["steps"], rel=1e-12)
+    # the shear's time step: the table's points, linear in log N between, flat beyond
+    for n, g in DRAWS.items():
+        assert shear_step_factor("polyhedra", n) == pytest.approx(g / REF_RATE, rel=1e-12)
+    assert shear_step_factor("polyhedra", math.sqrt(2000 * 5000)) == pytest.approx(
+        (DRAWS[2000] + DRAWS[5000]) / 2 / REF_RATE, rel=1e-12)
+    assert shear_step_factor("polyhedra", 20) == shear_step_factor("polyhedra", 200)
+    assert shear_step_factor("polyhedra", 10 ** 6) == shear_step_factor("polyhedra", 36_933)
+    assert [shear_step_factor("spheres", n) for n in (200, 1000, 36_933)] == [1.0, 1.0, 1.0]
+    small, default = estimate(resolve("small", "polyhedra")), estimate(resolve("default", "polyhedra"))
+    assert small["compaction_steps"] == pytest.approx(default["compaction_steps"], rel=1e-12)
+    assert small["shear_steps"] == pytest.approx(default["shear_steps"] * DRAWS[200] / DRAWS[1000], rel=1e-12)
     q = dict(p, kappa=4e4, inertial_number=2e-3)          # 2 x sqrt(kappa), 1/2 I: the same shear
     assert estimate(q)["shear_steps"] == pytest.approx(e["shear_steps"], rel=1e-12)
     q = dict(p, safety=2 * p["safety"])                   # a time step twice as long: half the steps
     assert estimate(q)["steps"] == pytest.approx(e["steps"] / 2, rel=1e-12)
     # the default's polyhedra step at 0.45 too: the reference point (0.3) in 2/3 of its steps
     d = estimate(resolve("default", "polyhedra"))
-    assert d["steps"] == pytest.approx((COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45,
+    k = DRAWS[1000] / REF_RATE                              # 1000 grains' expected step against the reference run's
+    assert d["steps"] == pytest.approx((COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"] * k) * 0.3 / 0.45,
                                        rel=1e-12)
     assert estimate(resolve("default", "polyhedra", {"safety": 0.3}))["steps"] == pytest.approx(
-        COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"], rel=1e-12)
+        COMPACTION_STEPS["polyhedra"] + SHEAR_STEPS["polyhedra"] * k, rel=1e-12)
     # the spheres' constants are measured at the default's own point (I = 1e-3), and
     # their placement factor does not apply: the soft preset (kappa 300, I 2e-2,
     # I_c 5e-2) scales them by sqrt(0.1), 2^0.55 and 1/20 only
@@ -183,7 +205,7 @@ def test_cost_model_scaling():
     # half the strain: the top wall travels 1 - exp(-eps) of the height
     h = estimate(dict(resolve("default", "polyhedra"), final_strain=0.15, safety=0.3))
     assert h["shear_steps"] == pytest.approx(SHEAR_STEPS["polyhedra"] * (1 - math.exp(-0.15))
-                                             / (1 - math.exp(-0.3)), rel=1e-12)
+                                             / (1 - math.exp(-0.3)) * DRAWS[1000] / REF_RATE, rel=1e-12)
 
 
 @pytest.mark.yade
@@ -269,9 +291,10 @@ def test_intermediate_preset_fills_a_16_core_node(tmp_path):
         assert resolve(name, "spheres") == {**resolve("default", "spheres"), "n_particles": n, **spheres}
         assert resolve(name, "polyhedra") == {**resolve("default", "polyhedra"), "n_particles": n}
     e = estimate(p)
-    steps = (COMPACTION_STEPS["polyhedra"] * 5 ** 0.25 + SHEAR_STEPS["polyhedra"]) * 0.3 / 0.45   # the default's dt
+    steps = (COMPACTION_STEPS["polyhedra"] * 5 ** 0.25
+             + SHEAR_STEPS["polyhedra"] * DRAWS[5000] / REF_RATE) * 0.3 / 0.45   # the default's dt, 5000 grains' draws
     assert e["core_hours"] == pytest.approx(steps * 5000 * CONTACTS_PER_GRAIN["polyhedra"]
-                                            * US_PER_CONTACT_STEP["polyhedra"] * 1.08 / 3.6e9, rel=1e-12)
+                                            * US_PER_CONTACT_STEP["polyhedra"] * 1.04 / 3.6e9, rel=1e-12)
     out = tmp_path / "node"
     assert generate_main(["--preset", "intermediate", "--sample", "spheres", "--out", str(out),
                           "--seeds", *map(str, range(1, 17))]) == 0

@@ -352,6 +352,13 @@ class KernelContacts:
                 "force_tangential": c["force_tangential"], "overlap": c["volume"],
                 "footprint": c["footprint"], "footprint_area": c["area"]}
 
+    def close(self):
+        """Free the kernel (the plugin, if any, is unbound first: it must not
+        step a freed engine)."""
+        if self.plugin is not None:
+            self.plugin.unbind()
+        self.engine.close()
+
     def timing(self):
         """Seconds spent reading states, in the kernel, and applying forces."""
         return dict(self.seconds, calls=self.calls)

@@ -41,14 +41,19 @@ def servo_rates(stress, target, max_rate, gain, integral=None, dt=0.0, tau=np.in
     place in ``integral`` (3,) when given. The integral term removes the
     steady error a proportional servo keeps while the walls must move (the
     lateral walls follow the dilatancy during shear); it integrates only
-    while |e| < 0.2 and stays in [-1, 1] (anti-windup)."""
-    err = (target - np.asarray(stress, float)) / target
+    while |e| < 0.2 and stays in [-1, 1] (anti-windup). Three numbers, so
+    plain floats (the controller runs every step; numpy's calls on 3-arrays
+    cost more than the arithmetic), in numpy's order of operations."""
+    err = [(target - x) / target for x in np.asarray(stress, float).tolist()]
     if integral is not None and dt > 0 and np.isfinite(tau):
-        near = np.abs(err) < 0.2
-        integral[near] += gain * err[near] * dt / tau
-        np.clip(integral, -1.0, 1.0, out=integral)
-        return max_rate * np.clip(gain * err + integral, -1.0, 1.0)
-    return max_rate * np.clip(gain * err, -1.0, 1.0)
+        J = integral.tolist()
+        for a in range(3):
+            if abs(err[a]) < 0.2:
+                J[a] = J[a] + gain * err[a] * dt / tau
+            J[a] = min(max(J[a], -1.0), 1.0)
+        integral[:] = J
+        return np.array([max_rate * min(max(gain * e + j, -1.0), 1.0) for e, j in zip(err, J)])
+    return np.array([max_rate * min(max(gain * e, -1.0), 1.0) for e in err])
 
 
 def wall_velocities(rates, lengths):

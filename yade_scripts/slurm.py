@@ -62,12 +62,20 @@ COMPACTION_IC_EXPONENT = 0.55
 #: the grains themselves (0.25), same seed, kappa 3000, I_c = 0.05: 118 550
 #: against 51 000 steps. Spheres are their own bounding spheres (1).
 PLACEMENT_FACTOR = {"grains": 1.0, "spheres": 118_550 / 51_000}
-#: wall time per contact-step on one core (µs): polyhedra, the whole
-#: 1000-grain S1 at the reference point over its steps x the contacts of the
-#: model (26.7 core-min for 459 860 steps on a quiet core, 2026-11-24: the
-#: kernel, poses, forces, Newton, controller); YADE's own sphere loop for S2
-#: (the default front's sphere runs, median)
-US_PER_CONTACT_STEP = {"polyhedra": 1.41, "spheres": 0.33}
+#: wall time per contact-step on one core (µs), the kernel stepped by its
+#: YADE plugin. Polyhedra: the whole 1000-grain S1 at the reference point
+#: over its steps x the contacts of the model took 1.41 µs on the PyRunner
+#: path (26.7 core-min for 459 860 steps on a quiet core, 2026-11-24: the
+#: kernel, poses, forces, Newton, controller); on the plugin the whole step
+#: (engines and controller) costs 0.670 of that (2026-11-27, dense 1000-grain
+#: state stepped on both paths in one run, one thread: 10.04 + 0.64 ms
+#: against 14.86 + 1.09, the controller as in whole runs before and after it
+#: was made faster): 0.94. Spheres: YADE's own sphere loop (the default
+#: front's sphere runs, median).
+US_PER_CONTACT_STEP = {"polyhedra": 1.41 * 0.670, "spheres": 0.33}
+#: the PyRunner path's cost against the plugin's (where the plugin cannot be
+#: built or loaded): the inverse of the plugin's 0.670 above
+PYRUNNER_COST = {"polyhedra": 1 / 0.670, "spheres": 1.0}
 #: touching contacts per grain in a large sample: polyhedra 2.47 at the
 #: isotropic state of the reference run (a face-face pair counting once);
 #: spheres z / 2 of the 1000-sphere default study (3.96 / 2)
@@ -84,14 +92,47 @@ REFERENCE_GRAINS = 1000
 #: 5000 (mean 141 300, 1.93 x; its servo gain 0.2 against 0.5; 200 spheres:
 #: 36 200, 21 600 and 22 000, not in the model)
 COMPACTION_N_EXPONENT = {"polyhedra": 0.25, "spheres": 0.41}
-#: the whole step's cost per contact grows with N while the arrays outgrow
-#: the caches: a dense 5000-grain S1 costs 1.11 and 1.06 x the 1000-grain one
-#: per grain-step in two runs, 1.08 their mean (the same strain eps_1 = 0.05
-#: of the default's seed 1, stepped side by side in one run on one thread,
-#: bench_scale.py --dense; on 2 threads 0.86: the larger sample shares better); the model
-#: takes that factor from 5000 grains on and interpolates it in log N between
-#: 1000 and 5000 (the paper's 36 933 is not measured dense)
-COST_GROWTH = {"polyhedra": (5000, 1.08), "spheres": (5000, 1.0)}
+#: the whole step's cost per contact may grow with N while the arrays outgrow
+#: the caches: a dense 5000-grain S1 cost 1.11 and 1.06 x the 1000-grain one
+#: per grain-step in two runs on the PyRunner path (2026-11-26: the same
+#: strain eps_1 = 0.05 of the default's seed 1, stepped side by side in one
+#: run on one thread, bench_scale.py --dense), and 0.95 on the plugin (1.01
+#: on the PyRunner) in a third (2026-11-27, the isotropic states): 1.04 the
+#: mean of the three; the model takes that factor from 5000 grains on and
+#: interpolates it in log N between 1000 and 5000 (the paper's 36 933 is not
+#: measured dense)
+COST_GROWTH = {"polyhedra": (5000, 1.04), "spheres": (5000, 1.0)}
+#: the shear's steps follow the time step, which the sample's most limiting
+#: grain sets (yade_scripts/timestep.py): N grains drawn from the default
+#: library (1000 shapes, seed 0) hold a more limiting one the larger N is.
+#: E[1/dt] of N grains relative to 1000 grains, exact order statistics of the
+#: draws (benchmarks/timestep_draws.py, 2026-11-27): 200 grains 0.8725, 2000
+#: 1.0479, 5000 1.0967, 10 000 1.1089, 36 933 1.1100 (the library's limit,
+#: every sample holding its most limiting shape in the smallest class);
+#: linear in log N between, constant beyond. Spheres: the smallest class sets
+#: the step at any N.
+SHEAR_RATE_DRAWS = {"polyhedra": ((200, 0.8725), (1000, 1.0), (2000, 1.0479), (5000, 1.0967), (10_000, 1.1089),
+                                  (36_933, 1.1100)),
+                    "spheres": ((1000, 1.0),)}
+#: the reference run's 1/dt against the expectation at 1000 grains: its dt was
+#: 3.953 us, the library's limit 3.276 us = 1/(1.1100 x the expectation), so
+#: 3.276 x 1.1100 / 3.953 (SHEAR_STEPS are the reference run's)
+REFERENCE_SHEAR_RATE = {"polyhedra": 3.276 * 1.1100 / 3.953, "spheres": 1.0}
+
+
+def shear_step_factor(sample, n):
+    """The shear's steps of N grains against the reference run's: E[1/dt]
+    of N grains (:data:`SHEAR_RATE_DRAWS`) over the reference's 1/dt."""
+    table = SHEAR_RATE_DRAWS[sample]
+    if n <= table[0][0] or len(table) == 1:
+        g = table[0][1]
+    elif n >= table[-1][0]:
+        g = table[-1][1]
+    else:
+        k = next(i for i in range(1, len(table)) if n <= table[i][0])
+        (n0, g0), (n1, g1) = table[k - 1], table[k]
+        g = g0 + (g1 - g0) * math.log(n / n0) / math.log(n1 / n0)
+    return g / REFERENCE_SHEAR_RATE[sample]
 
 
 def _grains_factor(n, n_measured, factor):
@@ -103,10 +144,11 @@ def _grains_factor(n, n_measured, factor):
     return 1.0 + (factor - 1.0) * w
 
 
-def estimate(params):
+def estimate(params, kernel_path="plugin"):
     """Cost of one run on one core from its parameters: dict with
     compaction_steps, shear_steps, steps, contacts, contact_steps,
-    core_hours.
+    core_hours. ``kernel_path``: "plugin" (the polyhedra kernel stepped
+    inside YADE) or "pyrunner" (from a PyRunner, PYRUNNER_COST x more).
 
     With the sample's REFERENCE point r: compaction steps =
     COMPACTION_STEPS x sqrt(kappa / r.kappa) (the time step goes as
@@ -117,11 +159,12 @@ def estimate(params):
     at a constant speed); both also x r.safety / safety (dt = safety x the
     critical step); contacts = grains x CONTACTS_PER_GRAIN; core-hours =
     steps x contacts x US_PER_CONTACT_STEP x the cost's growth with N
-    (COST_GROWTH) / 3.6e9. Shear steps do not depend on the number of grains
-    (rate and time step are per grain); the compaction steps grow as
-    (N / 1000)^COMPACTION_N_EXPONENT above 1000 grains (measured at 5000 for
-    both samples). The kernel's speed-up on more threads is not in the
-    model."""
+    (COST_GROWTH) / 3.6e9. The shear's steps follow the expected time step
+    of N grains drawn from the library (:func:`shear_step_factor`; a
+    polyhedra run's own draw may be up to 1.21 x its reference's); the
+    compaction steps grow as (N / 1000)^COMPACTION_N_EXPONENT above 1000
+    grains (measured at 5000 for both samples, the time step's growth
+    included). The kernel's speed-up on more threads is not in the model."""
     s = params["sample"]
     r = REFERENCE[s]
     # steps per unit of simulated time, relative to r's: 1 / dt, dt = safety x dt_crit ~ kappa^-1/2
@@ -132,11 +175,15 @@ def estimate(params):
     comp = (COMPACTION_STEPS[s] * step_scale * (r["compaction_inertial_number"] / params["compaction_inertial_number"])
             ** COMPACTION_IC_EXPONENT * place * max(1.0, n / REFERENCE_GRAINS) ** COMPACTION_N_EXPONENT[s])
     shear = (SHEAR_STEPS[s] * step_scale * r["inertial_number"] / params["inertial_number"]
-             * (1 - math.exp(-params["final_strain"])) / (1 - math.exp(-r["final_strain"])))
+             * (1 - math.exp(-params["final_strain"])) / (1 - math.exp(-r["final_strain"]))
+             * shear_step_factor(s, n))
     steps = comp + shear
     contacts = n * CONTACTS_PER_GRAIN[s]
     cs = steps * contacts
-    us = US_PER_CONTACT_STEP[s] * _grains_factor(n, *COST_GROWTH[s])
+    if kernel_path not in ("plugin", "pyrunner"):
+        raise ValueError(f"kernel_path must be 'plugin' or 'pyrunner', got {kernel_path!r}")
+    us = US_PER_CONTACT_STEP[s] * _grains_factor(n, *COST_GROWTH[s]) * (
+        PYRUNNER_COST[s] if kernel_path == "pyrunner" else 1.0)
     return {"compaction_steps": comp, "shear_steps": shear, "steps": steps, "contacts": contacts,
             "contact_steps": cs, "us_per_contact_step": us, "core_hours": cs * us / 3.6e9}
 

@@ -39,6 +39,7 @@ import json
 import math
 import os
 import sys
+import time
 
 import numpy as np
 from yade import log, polyhedra_utils, utils
@@ -210,7 +211,8 @@ for k in range(n_particles):
 particles = np.array(particles)
 
 # ------------------------------------------------------------ time step and loading rates
-masses = np.array([O.bodies[int(i)].state.mass for i in particles])
+particle_list = particles.tolist()
+masses = np.array([O.bodies[i].state.mass for i in particle_list])      # kg, as every checkpoint keeps them
 if POLY:
     k_contact = k_v * max_face[shape_of] * d ** 2                 # stiffest face contact of each grain
     k_contact = np.maximum(k_contact, tangential_ratio * k_v * a_face * d ** 2)
@@ -321,19 +323,23 @@ else:
 volume_particles = float(sum(particle_volumes))
 
 
+wall_states = [O.bodies[w].state for w in walls]      # taken again after O.load of a checkpoint
+
+
 def box():
     """(lo, hi) of the box from the wall positions."""
-    p = [O.bodies[w].state.pos for w in walls]
+    p = [s.pos for s in wall_states]
     return (np.array([p[0][0], p[2][1], p[4][2]]), np.array([p[1][0], p[3][1], p[5][2]]))
 
 
 def wall_forces():
-    return np.array([tuple(O.forces.f(w)) for w in walls])
+    f = O.forces.f
+    return np.array([f(w).__getinitargs__() for w in walls])
 
 
 def set_wall_velocities(vel):
-    for w, v in zip(walls, vel):
-        O.bodies[w].state.vel = tuple(v)
+    for s, v in zip(wall_states, vel.tolist()):
+        s.vel = v
 
 
 def set_friction(mu):
@@ -381,13 +387,18 @@ def counts():
     return len(O.interactions), O.interactions.countReal()
 
 
+dump_seconds = [0.0]     # wall time of the snapshots (gathering and writing), part of the controller's
+
+
 def snapshot(stage):
+    t0 = time.perf_counter()
     lo, hi = box()
     writer.write_snapshot(
         step=O.iter, time=O.time, stage=stage, box_lo=lo, box_hi=hi, wall_ids=walls,
         wall_forces=wall_forces(),
         bodies=yadedump.gather_bodies(O, particles, 1 if POLY else 0, shape_index, d, particle_volumes),
         contacts=kernel.contacts() if KERNEL else yadedump.gather_contacts(O, POLY))
+    dump_seconds[0] += time.perf_counter() - t0
 
 
 def fail(reason):
@@ -402,14 +413,15 @@ def check_blowup(lo, hi, F):
     runaway kinetic energy)."""
     if not np.all(np.isfinite(F)):
         return "wall forces are NaN"
-    pos = np.array([tuple(O.bodies[int(i)].state.pos) for i in particles])
-    vel = np.array([tuple(O.bodies[int(i)].state.vel) for i in particles])
+    states = [O.bodies[i].state for i in particle_list]
+    pos = np.array([s.pos.__getinitargs__() for s in states])
+    vel = np.array([s.vel.__getinitargs__() for s in states])
     if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel))):
         return "particle positions or velocities are NaN"
     out_of_box = np.any((pos < lo - d.max()) | (pos > hi + d.max()), axis=1)
     if out_of_box.any():
         return f"particle {int(particles[np.argmax(out_of_box)])} left the box"
-    m = np.array([O.bodies[int(i)].state.mass for i in particles])
+    m = masses
     v_rms = math.sqrt(np.sum(m * np.sum(vel ** 2, axis=1)) / m.sum())
     v_ref = max(approach_factor * rate_compact, rate_shear) * box0.max()   # fastest wall speed of the run
     if v_rms > 50 * v_ref and v_rms > 0.05:
@@ -504,7 +516,8 @@ def control():
 # stay those of the first attempt.
 def scene_state():
     """What a checkpoint keeps beside YADE's scene: (JSON-able dict, arrays)."""
-    state = {"state": program.saved(), "friction": math.tan(O.materials[0].frictionAngle)}
+    state = {"state": program.saved(), "friction": math.tan(O.materials[0].frictionAngle),
+             "dump_seconds": dump_seconds[0]}
     arrays = {"particle_volumes": particle_volumes}
     if KERNEL:
         arrays.update({f"kernel/{k}": v for k, v in kernel.engine.state().items()})
@@ -518,6 +531,8 @@ def scene_state():
 
 def set_scene_state(state, arrays):
     """Put back what :func:`scene_state` kept (YADE's scene is loaded already)."""
+    wall_states[:] = [O.bodies[w].state for w in walls]
+    dump_seconds[0] = float(state.get("dump_seconds", 0.0))     # checkpoints of older code lack it
     program.restore(state["state"])
     progress.restart(O.iter)
     if KERNEL:
@@ -565,7 +580,8 @@ info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"]
         "solid_fraction_isotropic": program.phi_iso, "snapshots": writer.n_snapshots,
         "contact_steps": program.contact_steps, "interaction_steps": program.interaction_steps,
         "shear_start_step": program.shear_start_step, "shear_start_wall_seconds": program.shear_start_wall,
-        "engine_seconds": history["engine_seconds"], "resumes": history["resumes"], **derived,
+        "engine_seconds": history["engine_seconds"], "dump_seconds": dump_seconds[0], "resumes": history["resumes"],
+        **derived,
         "host": host.host_info()}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
