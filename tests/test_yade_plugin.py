@@ -1,19 +1,14 @@
 """The kernel's YADE plugin (yade_scripts/yadeplugin): its build against the
 installed YADE, its path against the PyRunner path, its refusal and the
 fallbacks. ``make test`` builds it first (``make kernel``)."""
-import glob
 import json
 import os
 import shutil
 import subprocess
 
-import h5py
-import numpy as np
 import pytest
 
 from yade_scripts import yadeplugin
-from yade_scripts.batch import main as batch_main
-from yade_scripts.generate import generate
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 YADE = shutil.which("yade")
@@ -160,39 +155,3 @@ def test_a_refused_step_says_why(prefix):
     assert res["path"] == "plugin" and res["before"] is None and res["code"] == -2
     assert res["after"] == "particle positions are not finite"
     assert res["touch_steps_unchanged"] and res["force_on_nudged"] == [0.0, 0.0, 0.0]
-
-
-# ------------------------------------------------------------ the scene, both ways
-def _datasets(path):
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda n, o: out.__setitem__(n, o[()]) if isinstance(o, h5py.Dataset) else None)
-    return out
-
-
-@needs_yade
-def test_the_tiny_scene_is_the_same_on_both_paths(prefix, tmp_path, shape_library):
-    """The tiny S1 scene through the batch launcher (which sets YADE_PREFIX):
-    on the plugin path (checked at its first step) and with the plugin
-    switched off, every dataset of the dumps equal bit for bit."""
-    runs = {}
-    for path, env in (("plugin", {}), ("pyrunner", {yadeplugin.SKIP_VARIABLE: "1"})):
-        out = tmp_path / path
-        generate(str(out), "tiny", "polyhedra", overrides={"kernel_threads": 1}, library=shape_library)
-        old = {k: os.environ.get(k) for k in env}
-        os.environ.update(env)
-        try:
-            assert batch_main([str(out), "--jobs", "1"]) == 0
-        finally:
-            for k, v in old.items():
-                os.environ.pop(k) if v is None else os.environ.__setitem__(k, v)
-        dumps = glob.glob(str(out / "*.h5"))
-        info = json.loads(open(dumps[0][:-3] + ".info.json").read())
-        assert info["kernel"]["path"] == path, info["kernel"]
-        runs[path] = (_datasets(dumps[0]), info)
-    (a, ia), (b, ib) = runs["plugin"], runs["pyrunner"]
-    assert ia["kernel"]["path_note"] == "its first step read and added exactly what YADE's Python sees"
-    assert set(a) == set(b) and len(a) > 20
-    for k in a:
-        assert a[k].dtype == b[k].dtype and np.array_equal(a[k], b[k]), k
-    assert ia["kernel"]["touch_steps"] == ib["kernel"]["touch_steps"] > 0

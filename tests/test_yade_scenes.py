@@ -9,6 +9,7 @@ import signal
 import subprocess
 import time
 
+import h5py
 import numpy as np
 import pytest
 
@@ -116,8 +117,12 @@ def tiny_runs(tmp_path_factory, shape_library):
         generate(str(out), "tiny", kind.split("-")[0], overrides={"kernel_threads": 1, **extra},
                  library=shape_library)
         log = open(out / "yade.log", "w")
-        procs[kind] = (subprocess.Popen([YADE, "-n", "-x", "triaxial.py"], cwd=out, stdout=log, env=yade_env(str(out)),
-                                        stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL), out, log)
+        # the stock contacts' run is the longest: YADE's InteractionLoop takes
+        # both cores once the others are done
+        threads = ["-j2"] if kind == "polyhedra-yade" else []
+        procs[kind] = (subprocess.Popen([YADE, *threads, "-n", "-x", "triaxial.py"], cwd=out, stdout=log,
+                                        env=yade_env(str(out)), stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL),
+                       out, log)
     runs = {}
     for kind, (p, out, log) in procs.items():
         rc = p.wait(timeout=900)
@@ -318,7 +323,12 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
     inputs: every snapshot's positions, orientations, wall forces, contact
     pairs, points and forces, the shapes, and the step count are the same
     to the bit (the kernel takes the grains from the library in its own
-    order and frame, not from YADE's CGAL re-hull)."""
+    order and frame, not from YADE's CGAL re-hull). The first ran as the
+    launchers run it, on the kernel's YADE plugin where it is built (its
+    first step checked); the copy runs without YADE_PREFIX, on the PyRunner
+    path: so the two paths give the same run, every dataset of the dumps."""
+    from yade_scripts import yadeplugin
+
     first = tiny_runs["polyhedra"]
     again = tmp_path / "again"
     again.mkdir()
@@ -338,6 +348,18 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
             assert sa.step == sb.step
             for name in ("positions", "orientations", "wall_forces", "id1", "id2", "point", "force"):
                 np.testing.assert_array_equal(getattr(sa, name), getattr(sb, name), err_msg=f"{name}, snapshot {k}")
+    paths = [json.loads((f / "run.info.json").read_text())["kernel"] for f in (first, again)]
+    assert paths[1]["path"] == "pyrunner" and "without YADE_PREFIX" in paths[1]["path_note"]
+    if yadeplugin.status()["ok"]:
+        assert paths[0] == {**paths[0], "path": "plugin",
+                            "path_note": "its first step read and added exactly what YADE's Python sees"}
+    with h5py.File(first / "run.h5", "r") as fa, h5py.File(again / "run.h5", "r") as fb:
+        names = []
+        fa.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
+        assert len(names) > 20
+        for n in names:
+            assert fa[n].dtype == fb[n].dtype and np.array_equal(fa[n][()], fb[n][()]), n
+    assert paths[0]["touch_steps"] == paths[1]["touch_steps"] > 0
 
 
 # ------------------------------------------------------------ failures

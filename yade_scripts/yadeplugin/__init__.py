@@ -303,10 +303,17 @@ def _make_prefix(folder, yade, library):
     return os.path.join(folder, "prefix")
 
 
+class _Transient(PluginError):
+    """A failure that says nothing of the build (a probe that timed out on a
+    loaded host, yade that could not start): not kept, tried again."""
+
+
 def probe(prefix, timeout=300):
     """Run the probe scene in YADE with ``YADE_PREFIX=prefix``: (ok, one
     line). The probe steps a tiny polyhedra scene with the plugin and with
-    the PyRunner path and compares what each read and added, bit for bit."""
+    the PyRunner path and compares what each read and added, bit for bit.
+    Raises _Transient when YADE did not give a verdict for a reason that is
+    not the build's (a timeout, yade missing)."""
     out = os.path.join(prefix, "probe.json")
     env = dict(os.environ, YADE_PREFIX=prefix, OMP_WAIT_POLICY="PASSIVE",
                PYTHONPATH=os.pathsep.join([os.path.dirname(os.path.dirname(HERE))]
@@ -316,9 +323,9 @@ def probe(prefix, timeout=300):
         res = subprocess.run(["yade", "-j1", "-n", "-x", PROBE_SCENE, out], env=env, capture_output=True, text=True,
                              timeout=timeout, cwd=prefix)
     except subprocess.TimeoutExpired:
-        return False, f"the probe scene did not finish in {timeout} s"
+        raise _Transient(f"the probe scene did not finish in {timeout} s") from None
     except OSError as exc:
-        return False, f"cannot start yade: {exc}"
+        raise _Transient(f"cannot start yade: {exc}") from None
     try:
         with open(out) as fh:
             result = json.load(fh)
@@ -373,8 +380,14 @@ def build(here=HERE, quiet=True, lib_dir=None):
         if not ok:
             raise PluginError(f"the probe in YADE refused it: {why}")
         status.update(ok=True, why=why)
+    except _Transient as exc:            # not kept: the next call tries again
+        shutil.rmtree(tmp, ignore_errors=True)
+        return dict(status, why=f"not checked: {exc}")
     except PluginError as exc:
         status["why"] = str(exc)
+    except Exception as exc:             # noqa: BLE001 - build() never raises: the scenes fall back, with why
+        shutil.rmtree(tmp, ignore_errors=True)
+        return dict(status, why=f"the build stopped: {type(exc).__name__}: {exc}")
     status["sizes_checked"] = {c: n for c, n in (locals().get("sizes") or {}).items()}
     with open(os.path.join(tmp, "status.json"), "w") as fh:
         json.dump(status, fh, indent=1)
