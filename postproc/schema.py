@@ -18,7 +18,9 @@ One HDF5 file per simulation run, ``RUN.h5``. File attributes:
 ``overlap_kind``      ``"volume"`` (m^3, polyhedra volumetric law) or
                       ``"depth"`` (m, sphere law)
 ``created``           ISO 8601 UTC time the writer was opened
+``n_snapshots``       the number of snapshot groups (written after the data)
 ``complete``          ``1`` once the writer was closed normally, else ``0``
+                      (written last of all)
 
 ``/shapes`` (polyhedra only, written once). Shape ``s`` owns vertices
 ``vertices[vertex_offsets[s]:vertex_offsets[s+1]]`` (m, in the body's local
@@ -77,6 +79,33 @@ time order). Group attributes ``step`` (int), ``time`` (s), ``stage``
 Sign convention: forces are the forces on id2 by id1; stresses computed from
 them are compression positive.
 
+``/index`` (one row per snapshot, written with each snapshot; dumps written
+before it existed have none and still read). Datasets, each of length
+``n_snapshots``, row ``k`` for ``/snapshots/k``:
+
+``step``                      (N,) int64, the snapshot's ``step`` attribute.
+``n_bodies``                  (N,) int64, the length of its ``bodies/id``.
+``n_contacts``                (N,) int64, the length of its ``contacts/id1``.
+``checksum``                  (N,) uint32, :func:`snapshot_checksum` of it.
+
+Group attribute ``checksum_kind`` = ``"crc32-v1"``: ``zlib.crc32`` run over,
+in this order, the line ``"step {step} time {time.hex()} stage {stage}\\n"``
+(``float.hex``: exact) and then, for every dataset of the snapshot in the
+order of its path inside the group (``"bodies/id"``, ``"box/hi"``, ...,
+sorted as Python strings), the line ``"{path} {dtype} {shape}\\n"`` (the
+little-endian numpy dtype string such as ``<f8``; the shape as ``6x3``, empty
+for a scalar) followed by the raw little-endian bytes in C order.
+
+Whole-dump checks
+=================
+:class:`DumpReader` refuses (one-line :class:`DumpFormatError`) a dump whose
+``n_snapshots`` is not the number of snapshot groups, whose groups are not
+exactly ``000000`` ... ``n-1``, or whose index has not one row per snapshot;
+:meth:`DumpReader.read` refuses a snapshot whose step, body or contact count
+or checksum differs from its index row (another writer's part, or damage).
+:meth:`DumpReader.verify` (or :func:`verify_dump`) reads every snapshot once
+to check a whole dump before an analysis.
+
 Atomic writes
 =============
 HDF5 is not journaled: a process killed while it modifies a file can leave
@@ -87,9 +116,16 @@ small master ``RUN.h5`` (attributes plus HDF5 external links to the parts) is
 rewritten to a temporary name and renamed over the old one. ``os.replace`` is
 atomic, so at every instant ``RUN.h5`` is a complete file naming only complete
 snapshots. h5py follows the external links transparently, so readers see the
-layout above. :meth:`DumpWriter.close` finally packs everything into one
-self-contained ``RUN.h5`` (again via a temporary file and a rename) and removes
-the parts folder.
+layout above. The master also holds ``/index``, rewritten with it, so the
+index always names exactly the snapshots the master links to.
+:meth:`DumpWriter.close` finally packs everything into one self-contained
+``RUN.h5`` through a temporary file: the shapes and snapshots are copied
+first, then ``/index``, then the attributes, ``n_snapshots`` and, last of
+all, ``complete``; every packed snapshot is checked against the writer's
+index (a part replaced by another writer stops the packing, the parts are
+kept) before the temporary file is renamed over ``RUN.h5`` and the parts
+folder removed. :meth:`DumpWriter.resume` takes the index back from the
+master and checks every kept part against it.
 """
 from __future__ import annotations
 
@@ -97,6 +133,7 @@ import datetime as _dt
 import json
 import os
 import shutil
+import zlib
 from dataclasses import dataclass, field
 from typing import Iterator, Optional
 
@@ -137,6 +174,9 @@ _CONTACT_FIELDS = {
     "footprint": (np.float64, (2,), False),
     "footprint_area": (np.float64, (), False),
 }
+CHECKSUM_KIND = "crc32-v1"    # how /index/checksum is computed (snapshot_checksum)
+INDEX_FIELDS = ("step", "n_bodies", "n_contacts", "checksum")
+_INDEX_DTYPES = (np.int64, np.int64, np.int64, np.uint32)
 
 
 class DumpFormatError(ValueError):
@@ -187,6 +227,115 @@ class Snapshot:
     def box_lengths(self) -> np.ndarray:
         """(3,) m, hi - lo (NaN when the box is unknown)."""
         return np.asarray(self.box_hi, float) - np.asarray(self.box_lo, float)
+
+
+def snapshot_checksum(step, time, stage, datasets) -> int:
+    """The ``crc32-v1`` checksum of one snapshot (see the module docstring).
+
+    Parameters
+    ----------
+    step : int
+    time : float
+    stage : str
+        The snapshot group's attributes.
+    datasets : dict
+        Every dataset of the snapshot: path inside the snapshot group
+        (``"bodies/id"``, ``"box/lo"`` ...) to array.
+
+    Returns
+    -------
+    int
+        ``zlib.crc32`` of the attributes line, then of each dataset's
+        ``"{path} {dtype} {shape}"`` line and raw little-endian bytes, in the
+        sorted order of the paths (0 <= value < 2**32).
+    """
+    if isinstance(stage, bytes):
+        stage = stage.decode()
+    crc = zlib.crc32(f"step {int(step)} time {float(time).hex()} stage {stage}\n".encode())
+    for path in sorted(datasets):
+        arr = np.asarray(datasets[path])
+        arr = np.ascontiguousarray(arr, dtype=arr.dtype.newbyteorder("<"))
+        shape = "x".join(str(n) for n in arr.shape)
+        crc = zlib.crc32(f"{path} {arr.dtype.str} {shape}\n".encode(), crc)
+        crc = zlib.crc32(arr.reshape(-1).view(np.uint8), crc)
+    return crc & 0xFFFFFFFF
+
+
+def _index_row(step, time, stage, datasets):
+    """(step, n_bodies, n_contacts, checksum) of one snapshot."""
+    return (int(step), len(datasets["bodies/id"]), len(datasets["contacts/id1"]),
+            snapshot_checksum(step, time, stage, datasets))
+
+
+def _load_group(g):
+    """(step, time, stage, {path: array}) of a snapshot group: every dataset
+    below it, read once. Raises KeyError/OSError/ValueError when it is
+    incomplete or unreadable."""
+    datasets = {}
+
+    def take(path, obj):
+        if isinstance(obj, h5py.Dataset):
+            datasets[path] = obj[()]
+
+    g.visititems(take)
+    stage = g.attrs["stage"]
+    stage = stage.decode() if isinstance(stage, bytes) else str(stage)
+    return int(g.attrs["step"]), float(g.attrs["time"]), stage, datasets
+
+
+def _row_differences(row, recorded, check_checksum=True):
+    """What differs between an index row computed from a snapshot and the
+    recorded one: a list of short phrases (empty when they agree)."""
+    out = []
+    for (what, got, want) in (("step", row[0], recorded[0]), ("bodies", row[1], recorded[1]),
+                              ("contacts", row[2], recorded[2])):
+        if int(got) != int(want):
+            out.append(f"{what} {got}, the index says {want}" if what == "step"
+                       else f"{got} {what}, the index says {want}")
+    if check_checksum and int(row[3]) != int(recorded[3]):
+        out.append(f"checksum {int(row[3]):08x}, the index says {int(recorded[3]):08x}")
+    return out
+
+
+def _read_index(f, where):
+    """The index of an open dump as (rows, checksum kind): rows a list of
+    (step, n_bodies, n_contacts, checksum) tuples; None when the dump has
+    no index (written before it existed). Raises DumpFormatError (one line)
+    when it is there but unreadable or ragged."""
+    if "index" not in f:
+        return None
+    try:
+        g = f["index"]
+        cols = [np.asarray(g[k][()]).reshape(-1) for k in INDEX_FIELDS]
+        kind = g.attrs.get("checksum_kind", "")
+    except (KeyError, OSError, ValueError) as exc:
+        raise DumpFormatError(f"{where}: /index is incomplete or unreadable ({exc})") from None
+    if len({len(c) for c in cols}) != 1:
+        raise DumpFormatError(f"{where}: /index datasets have different lengths "
+                              f"({', '.join(f'{k} {len(c)}' for k, c in zip(INDEX_FIELDS, cols))})")
+    kind = kind.decode() if isinstance(kind, bytes) else str(kind)
+    return [tuple(int(c[i]) for c in cols) for i in range(len(cols[0]))], kind
+
+
+def _write_index(f, rows):
+    g = f.create_group("index")
+    for k, (name, dtype) in enumerate(zip(INDEX_FIELDS, _INDEX_DTYPES)):
+        g[name] = np.array([r[k] for r in rows], dtype=dtype)
+    g.attrs["checksum_kind"] = CHECKSUM_KIND
+
+
+def _ranges(names):
+    """'000000–000004, 000006' for a list of snapshot names."""
+    nums = sorted(int(n) for n in names if n.isdigit())
+    parts, k = [], 0
+    while k < len(nums):
+        j = k
+        while j + 1 < len(nums) and nums[j + 1] == nums[j] + 1:
+            j += 1
+        parts.append(f"{nums[k]:06d}" if j == k else f"{nums[k]:06d}–{nums[j]:06d}")
+        k = j + 1
+    parts += [repr(n) for n in names if not n.isdigit()]
+    return ", ".join(parts)
 
 
 def _fsync_file(path: str) -> None:
@@ -254,6 +403,7 @@ class DumpWriter:
             "complete": 0,
         }
         self._links = {}      # name in master -> (part file basename, path in part)
+        self._index = []      # (step, n_bodies, n_contacts, checksum) per snapshot
         self._n_snapshots = 0
         self._closed = False
         self._write_master()
@@ -270,16 +420,28 @@ class DumpWriter:
         still there) to append after its first ``n_snapshots`` snapshots,
         the count a checkpoint recorded. Snapshots written after that (by a
         run that went on past its checkpoint and then died) are removed, so
-        the resumed run has no duplicate and no gap. Raises DumpFormatError
-        (one line) when the run is complete, has fewer snapshots or an
-        unreadable one."""
+        the resumed run has no duplicate and no gap.
+
+        The index is taken back from the master's ``/index`` and every kept
+        part is read once and checked against its row (a master written
+        before the index existed: the index is computed from the parts).
+
+        Raises
+        ------
+        DumpFormatError
+            (one line) when the run is complete, has fewer snapshots, an
+            unreadable one, or a part that does not match the checksum the
+            master recorded for it (another writer's).
+        """
         path = os.path.abspath(path)
         parts = path + ".parts"
+        n_snapshots = int(n_snapshots)
         if not os.path.isdir(parts):
             raise DumpFormatError(f"{path}: no parts folder to resume (a complete run, or no run)")
         try:
             with h5py.File(path, "r") as f:
                 attrs = {k: f.attrs[k] for k in f.attrs if k != "n_snapshots"}
+                recorded = _read_index(f, path)
         except OSError as exc:
             raise DumpFormatError(f"{path}: master file unreadable ({exc.__class__.__name__})") from None
         if attrs.get("schema") != SCHEMA_NAME or int(attrs.get("schema_version", -1)) != SCHEMA_VERSION:
@@ -288,19 +450,30 @@ class DumpWriter:
         self.path, self.parts = path, parts
         self.attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in attrs.items()}
         self.attrs["complete"] = 0
-        self._links, self._closed = {}, False
+        self._links, self._index, self._closed = {}, [], False
         if os.path.exists(os.path.join(parts, "shapes.h5")):
             self._links["shapes"] = ("shapes.h5", "/shapes")
-        for k in range(int(n_snapshots)):
+        for k in range(n_snapshots):
             base = f"snapshot_{k:06d}.h5"
             try:
                 with h5py.File(os.path.join(parts, base), "r") as f:
-                    f["snapshot"].attrs["step"]
-            except (OSError, KeyError):
+                    row = _index_row(*_load_group(f["snapshot"]))
+            except (OSError, KeyError, ValueError):
                 raise DumpFormatError(f"{path}: snapshot {k:06d} is missing or unreadable; "
                                       f"cannot resume after {n_snapshots} snapshots") from None
+            if recorded is not None:
+                rows, kind = recorded
+                if k >= len(rows):
+                    raise DumpFormatError(f"{path}: snapshot {k:06d} is not in the master's index "
+                                          f"({len(rows)} rows); cannot resume after {n_snapshots} snapshots")
+                bad = _row_differences(row, rows[k], check_checksum=kind == CHECKSUM_KIND)
+                if bad:
+                    raise DumpFormatError(f"{path}: snapshot {k:06d} ({os.path.basename(parts)}/{base}) is not "
+                                          f"what the master recorded ({'; '.join(bad)}): replaced by another "
+                                          f"writer?; cannot resume")
+            self._index.append(row)
             self._links[f"snapshots/{k:06d}"] = (base, "/snapshot")
-        self._n_snapshots = int(n_snapshots)
+        self._n_snapshots = n_snapshots
         for name in os.listdir(parts):        # later snapshots and half-written files
             later = name.startswith("snapshot_") and name.endswith(".h5") and \
                 name[len("snapshot_"):-3].isdigit() and int(name[len("snapshot_"):-3]) >= self._n_snapshots
@@ -321,16 +494,23 @@ class DumpWriter:
         os.replace(tmp, final)
         _fsync_dir(self.parts)
 
+    def _write_attrs(self, f, complete):
+        """The file attributes, ``n_snapshots`` and ``complete`` last."""
+        for k, v in self.attrs.items():
+            if k not in ("complete", "n_snapshots"):
+                f.attrs[k] = v
+        f.attrs["n_snapshots"] = self._n_snapshots
+        f.attrs["complete"] = int(complete)
+
     def _write_master(self):
         tmp = self.path + ".tmp"
         rel = os.path.basename(self.parts)
         with h5py.File(tmp, "w") as f:
-            for k, v in self.attrs.items():
-                f.attrs[k] = v
-            f.attrs["n_snapshots"] = self._n_snapshots
             f.require_group("snapshots")
             for name, (base, inner) in self._links.items():
                 f[name] = h5py.ExternalLink(rel + "/" + base, inner)
+            _write_index(f, self._index)
+            self._write_attrs(f, self.attrs["complete"])
         _fsync_file(tmp)
         os.replace(tmp, self.path)
         _fsync_dir(os.path.dirname(self.path))
@@ -416,54 +596,91 @@ class DumpWriter:
         wf = _as_field("walls/force", np.reshape(wall_forces, (nw, 3)) if nw == 0 else wall_forces,
                        (np.float64, (3,), True), nw)
         name = f"{self._n_snapshots:06d}"
+        data = {"box/lo": lo, "box/hi": hi, "walls/id": wid, "walls/force": wf}
+        if cell is not None:
+            data["cell"] = cell
+        data.update({"bodies/" + k: arr for k, arr in b.items()})
+        data.update({"contacts/" + k: arr for k, arr in c.items()})
+        step, time, stage = int(step), float(time), str(stage)
+        row = _index_row(step, time, stage, data)
 
         def fill(f):
             g = f.create_group("snapshot")
-            g.attrs["step"] = int(step)
-            g.attrs["time"] = float(time)
-            g.attrs["stage"] = str(stage)
-            g["box/lo"] = lo
-            g["box/hi"] = hi
-            g["walls/id"] = wid
-            g["walls/force"] = wf
-            if cell is not None:
-                g["cell"] = cell
-            for k, arr in b.items():
-                g["bodies/" + k] = arr
-            for k, arr in c.items():
-                g["contacts/" + k] = arr
+            g.attrs["step"] = step
+            g.attrs["time"] = time
+            g.attrs["stage"] = stage
+            for k, arr in data.items():
+                g[k] = arr
 
         self._write_part(f"snapshot_{name}.h5", fill)
         self._links[f"snapshots/{name}"] = (f"snapshot_{name}.h5", "/snapshot")
+        self._index.append(row)
         self._n_snapshots += 1
         self._write_master()
         return name
 
     def close(self, pack=True, complete=True):
-        """Close the run; ``complete`` marks a run that reached its end (a
-        run stopped on a failure is closed with complete=False). With
-        ``pack`` (default), copy every part into one self-contained file that
-        atomically replaces ``RUN.h5``, then delete ``RUN.h5.parts/``."""
+        """Close the run.
+
+        Parameters
+        ----------
+        pack : bool
+            Copy every part into one self-contained file that atomically
+            replaces ``RUN.h5``, then delete ``RUN.h5.parts/`` (default).
+            The data are copied first, then ``/index``, the attributes,
+            ``n_snapshots`` and ``complete`` last; each packed snapshot is
+            checked against the index before the rename.
+        complete : bool
+            The run reached its end (a run stopped on a failure is closed
+            with complete=False).
+
+        Raises
+        ------
+        DumpFormatError
+            (one line) when a part no longer holds what this writer wrote
+            (another writer replaced it): nothing is packed, ``RUN.h5`` and
+            its parts stay as they were (not complete).
+        """
         if self._closed:
             return
-        self.attrs["complete"] = int(bool(complete))
         if not pack:
+            self.attrs["complete"] = int(bool(complete))
             self._write_master()
             self._closed = True
             return
         tmp = self.path + ".pack.tmp"
-        with h5py.File(self.path, "r") as src, h5py.File(tmp, "w") as dst:
-            for k, v in self.attrs.items():
-                dst.attrs[k] = v
-            dst.attrs["n_snapshots"] = self._n_snapshots
-            dst.require_group("snapshots")
-            for name in self._links:
-                src.copy(src[name], dst, name=name)
+        try:
+            with h5py.File(self.path, "r") as src, h5py.File(tmp, "w") as dst:
+                dst.require_group("snapshots")
+                for name in self._links:
+                    src.copy(src[name], dst, name=name)
+                _write_index(dst, self._index)
+                self._write_attrs(dst, bool(complete))
+            self._check_packed(tmp)
+        except (OSError, KeyError, ValueError) as exc:
+            if os.path.exists(tmp):
+                os.remove(tmp)
+            if isinstance(exc, DumpFormatError):
+                raise
+            raise DumpFormatError(f"{self.path}: packing failed ({exc.__class__.__name__}: {exc}); "
+                                  f"the parts are kept") from None
+        self.attrs["complete"] = int(bool(complete))
         _fsync_file(tmp)
         os.replace(tmp, self.path)
         _fsync_dir(os.path.dirname(self.path))
         shutil.rmtree(self.parts, ignore_errors=True)
         self._closed = True
+
+    def _check_packed(self, tmp):
+        """Every snapshot of the packed temporary file against the index."""
+        with h5py.File(tmp, "r") as f:
+            for k, want in enumerate(self._index):
+                bad = _row_differences(_index_row(*_load_group(f[f"snapshots/{k:06d}"])), want)
+                if bad:
+                    raise DumpFormatError(
+                        f"{self.path}: snapshot {k:06d} in {os.path.basename(self.parts)}/ is not what this "
+                        f"writer wrote ({'; '.join(bad)}): replaced by another writer?; not packed, "
+                        f"the parts are kept")
 
     def __enter__(self):
         return self
@@ -475,12 +692,32 @@ class DumpWriter:
 
 
 # ---------------------------------------------------------------- reading
+@dataclass(frozen=True)
+class DumpCheck:
+    """What :meth:`DumpReader.verify` checked."""
+
+    path: str
+    n_snapshots: int
+    checksums: bool      # every snapshot compared with its /index checksum
+    complete: bool       # the dump's ``complete`` attribute
+
+
 class DumpReader:
     """Read a run written by :class:`DumpWriter` (packed or not).
 
-    Opening checks the schema name and version and raises
-    :class:`DumpFormatError` with a one-line message otherwise. Snapshots are
-    read one at a time (``read(i)`` or iteration) so large runs fit in memory.
+    Opening checks the schema name and version, that ``n_snapshots`` (when
+    present) is the number of snapshot groups, that these are exactly
+    ``000000`` ... ``n-1``, and that ``/index`` (when present) has one row per
+    snapshot; it raises :class:`DumpFormatError` with a one-line message
+    otherwise. Snapshots are read one at a time (``read(i)`` or iteration)
+    so large runs fit in memory; each is checked against its index row.
+    :meth:`verify` checks them all.
+
+    Attributes
+    ----------
+    indexed : bool
+        The dump has an ``/index`` (dumps written before it existed have
+        none: only the count and name checks apply to them).
     """
 
     def __init__(self, path):
@@ -511,6 +748,39 @@ class DumpReader:
         self.overlap_kind = str(a["overlap_kind"])
         self.complete = bool(a.get("complete", 0))
         self.names = sorted(self._f["snapshots"].keys()) if "snapshots" in self._f else []
+        try:
+            try:
+                said = int(a["n_snapshots"]) if "n_snapshots" in a else None
+            except (TypeError, ValueError):
+                raise DumpFormatError(f"{self.path}: attribute n_snapshots is not an integer "
+                                      f"({a['n_snapshots']!r})") from None
+            self._check_whole(said)
+            recorded = _read_index(self._f, self.path)
+        except DumpFormatError:
+            self._f.close()
+            raise
+        self._index, self._checksum_kind = recorded if recorded is not None else (None, None)
+        self.indexed = recorded is not None
+        if self.indexed and len(self._index) != len(self.names):
+            self._f.close()
+            raise DumpFormatError(f"{self.path}: the index has {len(self._index)} rows for "
+                                  f"{len(self.names)} snapshots: not a whole dump (two writers?)")
+
+    def _check_whole(self, said):
+        """n_snapshots against the groups, and the groups' names: 000000 ...
+        n-1 without a gap."""
+        names = self.names
+        expected = [f"{k:06d}" for k in range(len(names))]
+        if (said is None or said == len(names)) and names == expected:
+            return
+        held = f"holds {len(names)} ({_ranges(names)})" if names else "holds none"
+        if said is None:
+            raise DumpFormatError(f"{self.path}: {held}, not 000000–{len(names) - 1:06d} without a gap: "
+                                  f"not a whole dump (two writers?)")
+        missing = sorted(set(f"{k:06d}" for k in range(min(said, 10 ** 6))) - set(names))
+        lacks = f", lacks {_ranges(missing)}" if missing and said <= 10 ** 6 else ""
+        raise DumpFormatError(f"{self.path}: says {said} snapshots, {held}{lacks}: "
+                              f"not a whole dump (two writers?)")
 
     def close(self):
         self._f.close()
@@ -541,21 +811,42 @@ class DumpReader:
                 [tf[to[i]:to[i + 1]] for i in range(n)])
 
     def read(self, i) -> Snapshot:
-        """Snapshot number ``i`` (0-based, time order)."""
+        """Snapshot number ``i`` (0-based, time order).
+
+        Raises
+        ------
+        DumpFormatError
+            (one line) when the snapshot is incomplete or unreadable, or its
+            step, body or contact count or checksum differs from its row of
+            ``/index`` (a part replaced by another writer's, or damage).
+        """
         name = self.names[i]
         try:
-            g = self._f["snapshots/" + name]
-            lo, hi = g["box/lo"][()], g["box/hi"][()]
-            b = {k: g["bodies/" + k][()] for k in _BODY_FIELDS if "bodies/" + k in g}
-            c = {k: g["contacts/" + k][()] for k, s in _CONTACT_FIELDS.items()
-                 if s[2] or "contacts/" + k in g}
-            cell = g["cell"][()] if "cell" in g else None
+            step, time, stage, d = _load_group(self._f["snapshots/" + name])
+        except (KeyError, OSError, ValueError) as exc:
+            raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "
+                                  f"unreadable ({exc})") from None
+        if self._index is not None:
+            try:
+                row = _index_row(step, time, stage, d)
+            except KeyError as exc:
+                raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "
+                                      f"unreadable ({exc} missing)") from None
+            bad = _row_differences(row, self._index[int(name)], self._checksum_kind == CHECKSUM_KIND)
+            if bad:
+                raise DumpFormatError(f"{self.path}: snapshot {name} does not match its index row "
+                                      f"({'; '.join(bad)}): replaced or damaged (two writers?)")
+        try:
+            lo, hi = d["box/lo"], d["box/hi"]
+            b = {k: d["bodies/" + k] for k in _BODY_FIELDS if "bodies/" + k in d}
+            c = {k: d["contacts/" + k] for k, s in _CONTACT_FIELDS.items()
+                 if s[2] or "contacts/" + k in d}
+            cell = d.get("cell")
             snap = Snapshot(
-                name=name, step=int(g.attrs["step"]), time=float(g.attrs["time"]),
-                stage=str(g.attrs["stage"]),
+                name=name, step=step, time=time, stage=stage,
                 volume=float(np.prod(hi - lo)) if cell is None else float(abs(np.linalg.det(cell))),
                 box_lo=lo, box_hi=hi, cell=cell,
-                wall_ids=g["walls/id"][()], wall_forces=g["walls/force"][()],
+                wall_ids=d["walls/id"], wall_forces=d["walls/force"],
                 body_ids=b["id"], positions=b["position"],
                 id1=c["id1"], id2=c["id2"], point=c["point"],
                 force=c["force_normal"] + c["force_tangential"],
@@ -565,11 +856,49 @@ class DumpReader:
                 masses=b["mass"], shape_index=b["shape_index"], sizes=b["size"],
                 footprint=c.get("footprint"), footprint_area=c.get("footprint_area"),
             )
-        except (KeyError, OSError, ValueError) as exc:
+        except (KeyError, ValueError) as exc:
             raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "
                                   f"unreadable ({exc})") from None
         return snap
 
+    def verify(self):
+        """Check the whole dump: read every snapshot once, each against its
+        index row (the count and name checks were made on opening).
+
+        Returns
+        -------
+        DumpCheck
+            what was checked: the number of snapshots, whether checksums
+            were compared (False for a dump without an index) and
+            ``complete``.
+
+        Raises
+        ------
+        DumpFormatError
+            (one line) at the first snapshot that does not add up.
+        """
+        for i in range(len(self.names)):
+            self.read(i)
+        return DumpCheck(self.path, len(self.names),
+                         self.indexed and self._checksum_kind == CHECKSUM_KIND, self.complete)
+
     def __iter__(self) -> Iterator[Snapshot]:
         for i in range(len(self.names)):
             yield self.read(i)
+
+
+def verify_dump(path) -> DumpCheck:
+    """Open the dump ``path``, check it whole (:meth:`DumpReader.verify`)
+    and close it.
+
+    Returns
+    -------
+    DumpCheck
+
+    Raises
+    ------
+    DumpFormatError
+        (one line) when it is not a whole, consistent dump.
+    """
+    with DumpReader(path) as r:
+        return r.verify()

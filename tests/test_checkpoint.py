@@ -259,8 +259,8 @@ def test_a_crashed_run_is_resumed_a_stated_number_of_times(tmp_path, capsys):
     """The one rule (yade_scripts.runstate.judge, applied by the pool that
     runs every run) with a stand-in for YADE: a run killed by SIGKILL that
     left a checkpoint is started again until it ends with 0, at most
-    MAX_RESUMES times; a blow-up (exit 3) and a crash without a checkpoint
-    are not retried."""
+    MAX_RESUMES times; a crash before the first checkpoint starts afresh,
+    as many times at most; a blow-up (exit 3) is not retried."""
     from yade_scripts.pool import Job, run_pool
     from yade_scripts.runstate import MAX_RESUMES
 
@@ -278,4 +278,6 @@ def test_a_crashed_run_is_resumed_a_stated_number_of_times(tmp_path, capsys):
     assert exits("kill -9 $$") == [-9] * (MAX_RESUMES + 1)
     assert exits("exit 3") == [3]
     (tmp_path / "run.ckpt").unlink()
-    assert exits("kill -9 $$") == [-9]
+    assert exits("kill -9 $$") == [-9] * (MAX_RESUMES + 1)
+    assert "crashed (exit -9) before its first checkpoint: it starts afresh (retry 1 of at most 2)" in \
+        capsys.readouterr().out

@@ -55,10 +55,10 @@ def test_script_is_valid_bash_with_one_task_per_line(tmp_path):
     assert subprocess.run(["bash", "-n", str(out / "slurm.sh")]).returncode == 0
     assert "#SBATCH --array=1-3" in script and "#SBATCH --cpus-per-task=4" in script
     assert "#SBATCH --time=2-00:00:00" in script
-    # SLURM's output in the run folder whatever folder sbatch runs in, kept across requeues; SIGTERM
+    # SLURM's output in the run folder whatever folder sbatch runs in, kept across requeues; SIGUSR1
     # before the time limit to the batch shell, which is the task itself (exec)
     assert f"#SBATCH --output={out}/slurm-%A_%a.out" in script and "#SBATCH --open-mode=append" in script
-    assert "#SBATCH --signal=B:TERM@300" in script and "#SBATCH --requeue" in script
+    assert "#SBATCH --signal=B:USR1@300" in script and "#SBATCH --requeue" in script
     assert f'HERE="${{RUN_DIR:-{out}}}"' in script
     assert 'exec "$PY" -m yade_scripts.task "$HERE" --requeues 10' in script
     # task k is the k-th run line of the table
@@ -85,8 +85,11 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
     assert study_main(["--collect", str(tmp_path / "study")]) == 2
     assert "no generated run folder" in capsys.readouterr().err
     out = make(tmp_path, (1,))
-    assert study_main(["--collect", str(out)]) == 2
-    assert "no run has finished yet (1 pending)" in capsys.readouterr().err
+    assert study_main(["--collect", str(out)]) == 0            # nothing finished: still a manifest and a report
+    assert "no run has finished yet (1 not finished)" in capsys.readouterr().err
+    manifest = json.loads((out / "manifest.json").read_text())
+    assert [m["status"] for m in manifest["spheres"]] == ["not started"]
+    assert "| S2 spheres | seed 1 | not started" in (out / "report" / "report.md").read_text()
     for bad in (["--slurm-signal", "90", "--slurm-time", "1:00"], ["--slurm-requeues", "-1"],
                 ["--slurm-cpus", "0"]):
         assert generate_main(["--preset", "tiny", "--sample", "spheres", "--out", str(tmp_path / "y"),
@@ -239,6 +242,17 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
     assert f"| S2 spheres | seed 3 | not started (resubmit the unfinished lines of arr: sbatch --array=3 " \
            f"{out}/slurm.sh) |" in md
     assert "* S2 spheres spheres-seed4: invalid line:" in md
+    # a complete dump that lost a snapshot (another writer's doing): refused in one line, never analysed
+    with h5py.File(out / "spheres-seed2" / "spheres-seed2.h5", "a") as f:
+        n = int(f.attrs["n_snapshots"])
+        del f[f"snapshots/{n - 2:06d}"]
+    assert study_main(["--collect", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert f"not finished: spheres-seed2 (refused, not analysed: {out}/spheres-seed2/spheres-seed2.h5: says {n} " \
+        f"snapshots, holds {n - 1}" in err
+    manifest = json.loads((out / "manifest.json").read_text())
+    assert manifest["spheres"][1]["status"].startswith("refused, not analysed:")
+    assert "move it aside" in manifest["spheres"][1]["note"]
 
 
 @pytest.mark.yade
@@ -265,8 +279,10 @@ def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, ca
     assert p.returncode == 75, text
     from yade_scripts.runstate import checkpoint_position
     step, stage = checkpoint_position(str(d / "spheres-seed1.h5"))
-    assert f"task: FINAL not finished (resumable at step {step} ({stage})): run the task again" in text
-    assert study_main(["--collect", str(tmp_path)]) == 2     # nothing finished yet
+    assert text.count("task: FINAL") == 1
+    assert f"task: FINAL stopped on request (SIGTERM) (resumable at step {step} ({stage})); to resume: run the " \
+        "task again" in text
+    assert study_main(["--collect", str(tmp_path)]) == 0     # nothing finished yet
     assert f"not finished: arr/spheres-seed1 (resumable at step {step} ({stage}))" in capsys.readouterr().err
     r = task(out, 1, tmp_path)
     assert r.returncode == 0 and "task: FINAL done: spheres-seed1.h5 complete" in r.stdout
@@ -276,6 +292,87 @@ def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, ca
     assert log.index("stopped on SIGTERM") < log.index(f"resumed from spheres-seed1.ckpt at step {step}")
     tries = json.loads((d / "spheres-seed1.attempts.json").read_text())
     assert [(a["exit"], a["requested"], a["action"]) for a in tries] == [(75, True, "resume"), (0, False, "done")]
+
+
+def started(d, p, name="spheres-seed1"):
+    """Wait until the scene of the task process ``p`` has started in ``d``."""
+    t0 = time.time()
+    while not ((d / f"{name}.log.csv").exists() and "triaxial.py: 40 spheres" in
+               (d / "triaxial.log").read_text()):
+        assert p.poll() is None and time.time() - t0 < 300, "the run did not start"
+        time.sleep(0.2)
+
+
+def yade_child(pid):
+    """The pid of the YADE process the task ``pid`` started."""
+    r = subprocess.run(["pgrep", "-P", str(pid)], capture_output=True, text=True)
+    kids = [int(x) for x in r.stdout.split()]
+    assert len(kids) == 1, r.stdout
+    return kids[0]
+
+
+@pytest.mark.yade
+@pytest.mark.skipif(YADE is None, reason="needs Debian's yade")
+def test_one_writer_per_line_and_a_crash_before_any_checkpoint_is_retried(tmp_path, capsys):
+    """Two local tasks on one line: the second refuses at once (exit 4,
+    one FINAL line naming the first's pid), touching nothing; a scene
+    started by hand in the line's folder refuses too. --collect meanwhile
+    lists the line as running and leaves it out of the resubmit command.
+    Then YADE is killed before its first checkpoint: the task starts it
+    afresh by itself, and the record holds both attempts."""
+    out = make(tmp_path, (1, 2), "--set", "final_strain=0.05", "--set", "inertial_number=2e-4")
+    d = out / "spheres-seed1"
+    p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    started(d, p)
+    second = task(out, 1, tmp_path)
+    assert second.returncode == 4, second.stdout + second.stderr
+    final = [x for x in (second.stdout + second.stderr).splitlines() if x.startswith("task: FINAL")]
+    assert len(final) == 1 and final[0].startswith(f"task: FINAL refused: task 1 (spheres-seed1) is being written "
+                                                   f"by pid {p.pid} on {os.uname().nodename} (a task)")
+    hand = subprocess.run([YADE, "-n", "-x", "triaxial.py"], cwd=d, capture_output=True, text=True, timeout=120,
+                          env={**os.environ, "YADE_BATCH": f"{out}/table.txt:2"})     # the line, by hand
+    assert hand.returncode == 4 and "triaxial.py: refused: spheres-seed1/spheres-seed1 is being written by " \
+        f"pid {p.pid}" in hand.stdout
+    assert study_main(["--collect", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert f"not finished: spheres-seed1 (running: pid {p.pid} on" in err
+    assert f"resubmit the unfinished lines of arr: sbatch --array=2 {out}/slurm.sh" in err
+    # no checkpoint yet (the first is due after 300 s): a crash starts it afresh
+    assert not (d / "spheres-seed1.ckpt").exists()
+    os.kill(yade_child(p.pid), signal.SIGKILL)
+    text = p.communicate(timeout=600)[0]
+    assert p.returncode == 0, text
+    assert "crashed (exit -9) before its first checkpoint: it starts afresh (retry 1 of at most 2)" in text
+    tries = json.loads((d / "spheres-seed1.attempts.json").read_text())
+    # the refused ones left no attempt, and the dump is the first task's, whole
+    assert [(a["attempt"], a["exit"], a["action"]) for a in tries] == [(1, -9, "resume"), (2, 0, "done")]
+    with h5py.File(d / "spheres-seed1.h5", "r") as f:
+        assert f.attrs["complete"] == 1 and f.attrs["n_snapshots"] == len(f["snapshots"])
+
+
+@pytest.mark.yade
+@pytest.mark.skipif(YADE is None, reason="needs Debian's yade")
+def test_an_attempt_killed_with_its_task_is_recorded_and_the_run_taken_over(tmp_path):
+    """SIGKILL to the task and its YADE at once (what a node failure does):
+    the lock goes with them; the next task takes the run over, records the
+    killed attempt as killed under its own number and runs the line to the
+    end as attempt 2."""
+    out = make(tmp_path, (1,), "--set", "final_strain=0.05", "--set", "inertial_number=2e-4")
+    d = out / "spheres-seed1"
+    p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    started(d, p)
+    os.killpg(p.pid, signal.SIGKILL)
+    p.communicate(timeout=60)
+    r = task(out, 1, tmp_path)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert f"taking over the run from pid {p.pid} on {os.uname().nodename} (a task)" in r.stdout
+    assert "attempt(s) 1 ended without a record (killed with their launcher): recorded as killed" in r.stdout
+    tries = json.loads((d / "spheres-seed1.attempts.json").read_text())
+    assert [(a["attempt"], a["action"]) for a in tries] == [(1, "killed"), (2, "done")]
+    log = (d / "triaxial.log").read_text()
+    assert log.count("==== attempt 1 ") == 1 and log.count("==== attempt 2 ") == 1
 
 
 def test_intermediate_preset_fills_a_16_core_node(tmp_path):

@@ -190,3 +190,109 @@ def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys):
     print(f"cluster test: the shortest line takes {line_seconds:.0f} s uninterrupted; time limit {limit} s, SIGTERM {lead} s "
           f"before; array A done {seconds_a:.0f} s after C; requeues per task {[len(ra[k]) - 1 for k in (1, 2)]}; "
           f"whole test {time.time() - t_start:.0f} s")
+
+
+def scene_started(d, name, timeout=300):
+    t0 = time.time()
+    while not ((d / "triaxial.log").exists() and "triaxial.py: 40 spheres" in (d / "triaxial.log").read_text()
+               and (d / f"{name}.log.csv").exists()):
+        assert time.time() - t0 < timeout, f"{d}: the run did not start"
+        time.sleep(1)
+
+
+def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsys, monkeypatch):
+    """Line 1 submitted twice: the second job refuses at once (FAILED, exit
+    4, its comment naming the first job), touching nothing. --collect
+    while line 1 runs and line 2 is held in the queue lists them as
+    running and pending, in no resubmit command. ``scancel --batch
+    --signal=TERM`` stops line 1 for good (checkpoint, exit 75, comment);
+    ``scancel --batch --signal=USR1`` stops line 2 and requeues it, and it
+    runs to the end by itself; plain ``scancel`` of line 1 resubmitted
+    stops it too, with one FINAL line (SLURM takes no comment for a
+    cancelled job); submitted once more, it resumes to the end."""
+    from yade_scripts.generate import main as generate
+    from yade_scripts.runstate import checkpoint_position
+    from yade_scripts.study import main as study
+
+    env = cluster
+    monkeypatch.setenv("SLURM_CONF", env["SLURM_CONF"])       # --collect below asks squeue, in this process
+    b = tmp_path / "B"
+    assert generate(["--preset", "tiny", "--sample", "spheres", "--out", str(b), "--seeds", "1", "2", "--slurm",
+                     "--slurm-cpus", "1", "--slurm-time", "30:00", "--set", "final_strain=0.1",
+                     "--set", "inertial_number=1e-4"]) == 0
+    d1, d2 = b / "spheres-seed1", b / "spheres-seed2"
+    # a first job on a node just up: one submitted within a second of slurmctld's start once ended at once
+    wait_for(env, sbatch(env, "--wrap", "true", cwd=tmp_path), 120)
+    first = run(env, sys_python(), "-m", "yade_scripts.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
+    job1 = json.loads((b / "slurm-jobs.json").read_text())[-1]["job"]
+    scene_started(d1, "spheres-seed1")
+    twice = sbatch(env, "--array=1", str(b / "slurm.sh"), cwd=tmp_path)        # the same line again
+    held = sbatch(env, "--hold", "--array=2", str(b / "slurm.sh"), cwd=tmp_path)  # line 2, held in the queue
+    wait_for(env, twice, 300)
+    r = records(env, twice, (1,))
+    assert r[1][-1][:2] == ("FAILED", "4:0"), r
+    assert r[1][-1][2].startswith(f"refused: task 1 (spheres-seed1) is being written by pid ") and \
+        f"(SLURM job {job1}_1, a task)" in r[1][-1][2], r
+    out = (b / f"slurm-{twice}_1.out").read_text()
+    assert out.count("task: FINAL") == 1 and "==== attempt" not in out
+    # while line 1 runs and line 2 waits
+    assert study(["--collect", str(b)]) == 0
+    err = capsys.readouterr().err
+    assert f"not finished: spheres-seed1 (running: SLURM job {job1}_1, RUNNING)" in err
+    assert f"not finished: spheres-seed2 (pending: SLURM job {held}_2, PENDING, JobHeldUser)" in err
+    assert "resubmit" not in err
+    # stop line 1 for good
+    run(env, "scancel", "--batch", "--signal=TERM", f"{job1}_1")
+    wait_for(env, job1, 300)
+    r = records(env, job1, (1,))
+    step, stage = checkpoint_position(str(d1 / "spheres-seed1.h5"))
+    stopped = (f"stopped on request (SIGTERM, scancel) (resumable at step {step} ({stage})); to resume: "
+               f"sbatch --array=1 {b}/slurm.sh")
+    assert r[1] == [("FAILED", "75:0", stopped[:250])], r
+    out = (b / f"slurm-{job1}_1.out").read_text()
+    assert out.count("task: FINAL") == 1 and out.rstrip().endswith(f"task: FINAL {stopped}")
+    assert study(["--collect", str(b)]) == 0
+    err = capsys.readouterr().err
+    assert f"not finished: spheres-seed1 (resumable at step {step} ({stage}))" in err
+    assert f"resubmit the unfinished lines of B: sbatch --array=1 {b}/slurm.sh" in err     # not line 2: queued
+    # line 2: released, then stopped to resume later; it requeues itself and ends
+    run(env, "scontrol", "release", held)
+    scene_started(d2, "spheres-seed2")
+    run(env, "scancel", "--batch", "--signal=USR1", f"{held}_2")
+    wait_for(env, held, 900)
+    r = records(env, held, (2,))
+    assert [x[0] for x in r[2]] == ["REQUEUED", "COMPLETED"], r
+    assert r[2][0][2].startswith("requeued to resume (resumable at step ") and \
+        r[2][1][2] == "done: spheres-seed2.h5 complete", r
+    out = (b / f"slurm-{held}_2.out").read_text()
+    assert out.count("task: FINAL") == 2      # one per job of the task
+    # line 1 again: plain scancel stops it too (one FINAL line, no comment), then it resumes to the end
+    again = run(env, sys_python(), "-m", "yade_scripts.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
+    job3 = json.loads((b / "slurm-jobs.json").read_text())[-1]["job"]
+    t0 = time.time()
+    while "resumed from spheres-seed1.ckpt" not in (d1 / "triaxial.log").read_text():
+        assert time.time() - t0 < 300
+        time.sleep(1)
+    time.sleep(3)
+    run(env, "scancel", f"{job3}_1")
+    wait_for(env, job3, 300)
+    out = (b / f"slurm-{job3}_1.out").read_text()
+    assert out.count("task: FINAL") == 1 and "task: FINAL stopped on request (SIGTERM, scancel)" in out
+    assert "the job's comment could not be set" in out
+    assert checkpoint_position(str(d1 / "spheres-seed1.h5"))[0] > step
+    job4 = sbatch(env, "--array=1", str(b / "slurm.sh"), cwd=tmp_path)
+    wait_for(env, job4, 900)
+    assert records(env, job4, (1,))[1][-1] == ("COMPLETED", "0:0", "done: spheres-seed1.h5 complete")
+    tries = json.loads((d1 / "spheres-seed1.attempts.json").read_text())
+    assert [t["attempt"] for t in tries] == list(range(1, len(tries) + 1)) and tries[-1]["action"] == "done"
+    assert study(["--collect", str(b)]) == 0
+    m = json.loads((b / "manifest.json").read_text())["spheres"]
+    assert [e["status"] for e in m] == ["ok", "ok"]
+    print(f"cluster test: submitted {first.strip() or 'line 1'}; {again.strip() or 'line 1 again'}")
+
+
+def sys_python():
+    """The Python of the venv that runs the tests (it has the packages)."""
+    import sys
+
+    return sys.executable

@@ -24,6 +24,7 @@ numpy, h5py and the standard library; the YADE objects (``O``) are passed in.
 """
 from __future__ import annotations
 
+import atexit
 import contextlib
 import json
 import os
@@ -35,6 +36,7 @@ from dataclasses import dataclass
 from postproc.schema import DumpFormatError, DumpReader, DumpWriter
 
 from . import checkpoint
+from .runlock import RunLock, describe, inherited, lock_path
 from .runstate import RunFiles
 
 
@@ -85,7 +87,12 @@ class Attempt:
     :class:`Resumed`: the newest usable checkpoint written with the same
     ``parameters``, see :func:`yade_scripts.checkpoint.choose`), or afresh
     (what an unfinished attempt left is removed, with a line through
-    ``say``). ``resume=False`` always starts afresh. From then on SIGTERM
+    ``say``). ``resume=False`` always starts afresh. Before it looks at
+    any file it makes sure it is the run's only writer
+    (:mod:`yade_scripts.runlock`): the process that started it holds the
+    run's lock for it, or it takes the lock itself, held until the process
+    ends; another holder raises :class:`~yade_scripts.runlock.RunBusy`
+    (one line naming it) and nothing is touched. From then on SIGTERM
     only raises :attr:`terminated`; the run stops at the end of a step and
     writes a checkpoint.
 
@@ -112,6 +119,12 @@ class Attempt:
         self.t0 = self.last_checkpoint = time.time()
         # what the earlier attempts of this run took (from the checkpoint)
         self.earlier_wall_seconds, self.earlier_engine_seconds, self.resumes = 0.0, {}, []
+        self.lock = None
+        if not inherited(lock_path(dump)):
+            self.lock = RunLock(lock_path(dump), "scene").acquire()      # RunBusy: another writer
+            atexit.register(self.lock.release)                         # an ended run leaves no record
+            if self.lock.took_over:
+                say(f"taking over the run from {describe(self.lock.took_over)}, which is no longer running")
         self._begin(resume)
         if not self.complete:
             signal.signal(signal.SIGTERM, self._on_term)

@@ -23,7 +23,8 @@ import sys
 from dataclasses import dataclass
 
 from .parameters import ConfigError, coerce
-from .runstate import EXIT_TERM
+from .runlock import RunBusy
+from .runstate import EXIT_BUSY, EXIT_TERM
 
 
 @dataclass(frozen=True)
@@ -159,6 +160,9 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"batch: error: {exc}", file=sys.stderr)
         return 2
+    except RunBusy as exc:
+        print(f"batch: error: {exc}", file=sys.stderr)
+        return EXIT_BUSY
     stopped = sorted(d for d, s in status.items() if s == "stopped")
     if stopped:
         print(f"batch: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "

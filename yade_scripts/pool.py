@@ -72,8 +72,9 @@ from dataclasses import dataclass, field
 
 from . import yadeplugin
 from .parameters import ConfigError
-from .runstate import (MAX_RESUMES, RunFiles, checkpoint_position, clear_attempt, complete,
-                       has_checkpoint, judge, now_utc, read_attempts, record_attempt)
+from .runlock import RunBusy, RunLock, describe, lock_path
+from .runstate import (EXIT_TERM, MAX_RESUMES, RunFiles, Verdict, checkpoint_position, clear_attempt, complete, end_attempt,
+                       has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
 
 #: a running job is widened only after this many seconds (its SIGTERM
 #: handler is installed well before: YADE starts in a few seconds)
@@ -250,10 +251,13 @@ class _Running:
                 if x.startswith(SCENE)]
 
 
-def _launch(job, threads, yade, number, note, own_session=False):
+def _launch(job, threads, yade, number, note, own_session=False, lock=None):
     """Start an attempt: the header line in the job's log, then YADE (in a
-    session of its own when ``own_session``)."""
+    session of its own when ``own_session``), told that we hold its run's
+    ``lock`` (:func:`yade_scripts.runlock.inherited`)."""
     env = yade_env(job.folder)
+    if lock is not None:
+        env.update(lock.environment())
     if job.line is not None:
         env["YADE_BATCH"] = f"{job.table}:{job.line}"
     env["DISPLAY"] = ""
@@ -322,12 +326,50 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
         restore()
 
 
+def hold_runs(jobs, what="launcher"):
+    """Take the lock of every job's run (:mod:`yade_scripts.runlock`), all
+    or none: returns {description: RunLock}; raises
+    :class:`~yade_scripts.runlock.RunBusy` (one line naming the holder) when
+    another process holds one, having released those it took and touched
+    nothing. A stale lock (its holder died) is taken over and said so."""
+    locks = {}
+    try:
+        for job in jobs:
+            lock = RunLock(lock_path(job.dump), what).acquire()
+            locks[job.description] = lock
+    except RunBusy:
+        release_runs(locks)
+        raise
+    return locks
+
+
+def release_runs(locks):
+    for lock in locks.values():
+        lock.release()
+
+
 def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session):
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
     if yade is None:
         raise ConfigError("yade is not installed (make installs Debian's yade)")
+    locks = hold_runs(jobs, what="task" if (note or {}).get("slurm_job") else "run pool")
+    for job in jobs:
+        stale = locks[job.description].took_over
+        if stale and not stale.get("unreadable"):
+            echo(f"{job.name}: taking over the run from {describe(stale)}, which is no longer running")
+        killed = reclaim_killed(job.dump)
+        if killed:
+            echo(f"{job.name}: attempt(s) {', '.join(map(str, killed))} ended without a record (killed with their "
+                 f"launcher): recorded as killed")
+    try:
+        return _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks)
+    finally:
+        release_runs(locks)
+
+
+def _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks):
     status, waiting, todo, doing = {}, [], [], []      # todo, doing: the work after runs
 
     def queue_after(job):
@@ -358,8 +400,9 @@ def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, afte
             os.replace(tmp, record)
 
     def launch(job, threads, why="started"):
-        number = len(read_attempts(job.dump)) + 1
-        proc, offset = _launch(job, threads, yade, number, note, own_session)
+        number = start_attempt(job.dump, start=now_utc(), threads=threads, log=os.path.basename(job.log),
+                               host=platform.node(), **(note or {}))
+        proc, offset = _launch(job, threads, yade, number, note, own_session, locks[job.description])
         running[job.description] = _Running(job, threads, proc, number, offset)
         echo(f"{job.name} {why} on {threads} thread(s)")
 
@@ -439,23 +482,26 @@ def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, afte
             attempts.append({"job": d, "tag": job.tag, "start": r.started - t0, "end": end - t0,
                              "threads": r.threads, "exit": code, "widening": bool(r.widening)})
             write_record()
-            v = judge(code, job.dump, resumes=sum(1 for c in job.exits if c != 0), requested=bool(r.requested),
-                      max_resumes=max_resumes)
+            outside = code == EXIT_TERM and not r.requested   # SIGTERM sent to YADE itself (a scancel, a kill)
+            v = judge(code, job.dump, resumes=sum(1 for c in job.exits if c != 0),
+                      requested=bool(r.requested) or outside, max_resumes=max_resumes)
+            if outside and v.action == "resume":
+                v = Verdict("resume", v.reason.replace("stopped on request", "stopped by a SIGTERM sent to YADE"))
             job.verdict = v
-            record_attempt(job.dump, attempt=r.number, start=r.start_utc, seconds=round(end - r.started, 3),
-                           threads=r.threads, exit=code, requested=bool(r.requested), action=v.action, reason=v.reason,
-                           log=os.path.basename(job.log), host=platform.node(), **(note or {}))
+            end_attempt(job.dump, r.number, start=r.start_utc, seconds=round(end - r.started, 3),
+                        threads=r.threads, exit=code, requested=bool(r.requested), action=v.action, reason=v.reason,
+                        log=os.path.basename(job.log), host=platform.node(), **(note or {}))
             if r.widening and v.action == "resume" and not stop_sent:
                 launch(job, r.widening, why="resumed")
                 continue
-            if not r.requested:
+            if not (r.requested or outside):
                 job.exits.append(code)
             if v.action == "done":
                 status[d] = 0
                 echo(f"{job.name} done in {end - r.started:.0f} s")
                 if not stop_sent:
                     queue_after(job)
-            elif v.action == "resume" and not stop_sent:
+            elif v.action == "resume" and not stop_sent and not outside:
                 echo(f"{job.name}: {v.reason}")
                 launch(job, r.threads, why="resumed")
             elif v.action == "resume":

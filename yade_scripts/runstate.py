@@ -18,6 +18,8 @@ Exit codes of the scene:
 * :data:`EXIT_FAILED` (3): stopped on a blow-up or ``max_steps``; the
   snapshots are kept, the checkpoints removed (a blow-up replays
   identically from a checkpoint, so it is never retried);
+* :data:`EXIT_BUSY` (4): another process holds the run (its lock,
+  :mod:`yade_scripts.runlock`); nothing was touched;
 * :data:`EXIT_TERM` (75, EX_TEMPFAIL): stopped by SIGTERM after writing a
   checkpoint; run it again to resume;
 * anything else is a crash: run it again to resume from the newest
@@ -34,7 +36,7 @@ import os
 import shutil
 from dataclasses import dataclass
 
-EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_TERM = 0, 2, 3, 75
+EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_BUSY, EXIT_TERM = 0, 2, 3, 4, 75
 #: a run that crashed and left a checkpoint is started again this many times
 #: at most; stops asked for (SIGTERM by a scheduler, or to give a run more
 #: cores) do not count
@@ -161,10 +163,16 @@ def judge(code, dump, resumes=0, requested=False, max_resumes=MAX_RESUMES):
         return Verdict("failed", "stopped on a blow-up or max_steps (exit 3; the scene's log says why)")
     if code == EXIT_CONFIG:
         return Verdict("failed", "invalid parameters (exit 2; the scene's log names it)")
+    if code == EXIT_BUSY:
+        return Verdict("failed", "another process holds the run (exit 4; the scene's log names it)")
     if not has_checkpoint(dump):
         if requested:
             return Verdict("resume", f"stopped on request (exit {code}) before its first checkpoint: it starts afresh")
-        return Verdict("failed", f"crashed (exit {code}) before its first checkpoint")
+        if resumes >= max_resumes:
+            return Verdict("failed", f"crashed (exit {code}) before its first checkpoint, after {resumes} "
+                           f"retry(ies)")
+        return Verdict("resume", f"crashed (exit {code}) before its first checkpoint: it starts afresh "
+                       f"(retry {resumes + 1} of at most {max_resumes})")
     where = checkpoint_position(dump)
     at = f" at step {where[0]} ({where[1]})" if where else ""
     if requested:
@@ -187,16 +195,76 @@ def read_attempts(dump):
     return data if isinstance(data, list) else []
 
 
-def record_attempt(dump, **entry):
-    """Append one attempt (``entry``: exit, action, reason, threads, ...,
-    with ``end`` set to now, UTC) to the run's record, atomically."""
+def _write_attempts(dump, rows):
     path = RunFiles(dump).attempts
-    rows = read_attempts(dump) + [{**entry, "end": now_utc()}]
     tmp = path + ".tmp"
     with open(tmp, "w") as fh:
         json.dump(rows, fh, indent=1)
     os.replace(tmp, path)
     return rows
+
+
+def record_attempt(dump, **entry):
+    """Append one attempt (``entry``: exit, action, reason, threads, ...,
+    with ``end`` set to now, UTC) to the run's record, atomically."""
+    return _write_attempts(dump, read_attempts(dump) + [{**entry, "end": now_utc()}])
+
+
+def start_attempt(dump, **entry):
+    """Record an attempt as it starts (``"action": "running"``, no end), so
+    that an attempt killed with its launcher (a node failure, SIGKILL)
+    still has its number and a record (:func:`reclaim_killed`). Returns its
+    number (1, 2, ...: one more than the attempts recorded)."""
+    rows = read_attempts(dump)
+    number = len(rows) + 1
+    _write_attempts(dump, rows + [{"attempt": number, **entry, "action": "running", "end": None}])
+    return number
+
+
+def end_attempt(dump, number, **entry):
+    """Complete the record of attempt ``number`` (:func:`start_attempt`)
+    with how it ended (``entry``; ``end`` is now); appended when it was
+    not recorded at its start."""
+    rows = read_attempts(dump)
+    for k, row in enumerate(rows):
+        if row.get("attempt") == number and row.get("action") == "running":
+            rows[k] = {**row, **entry, "attempt": number, "end": now_utc()}
+            return _write_attempts(dump, rows)
+    return _write_attempts(dump, rows + [{"attempt": number, **entry, "end": now_utc()}])
+
+
+#: the reason recorded for an attempt that ended with its launcher
+KILLED = ("killed with its launcher, no end recorded (a node failure, SIGKILL, or the end of a job "
+          "that was not warned)")
+
+
+def reclaim_killed(dump):
+    """Mark every attempt still recorded as running as killed
+    (:data:`KILLED`): call it holding the run's lock
+    (:mod:`yade_scripts.runlock`), when no attempt of the run can be
+    running. Returns the numbers of the attempts marked."""
+    rows = read_attempts(dump)
+    killed = [r.get("attempt") for r in rows if r.get("action") == "running"]
+    if killed:
+        _write_attempts(dump, [{**r, "action": "killed", "reason": KILLED} if r.get("action") == "running" else r
+                               for r in rows])
+    return killed
+
+
+def mark_requeued(dump, note):
+    """Note on the newest attempt that its task requeued itself
+    (``"requeued": note``); :func:`task_requeues` counts them."""
+    rows = read_attempts(dump)
+    if rows:
+        rows[-1] = {**rows[-1], "requeued": note}
+        _write_attempts(dump, rows)
+
+
+def task_requeues(dump):
+    """How many times the run's SLURM task requeued itself (attempts with
+    ``requeued``): a node failure or a preemption, which SLURM requeues on
+    its own, is not among them."""
+    return sum(1 for r in read_attempts(dump) if r.get("requeued"))
 
 
 def now_utc():
@@ -207,11 +275,14 @@ def now_utc():
 @dataclass(frozen=True)
 class RunState:
     """What a run folder says about one run. ``state`` is one of
-    "complete", "resumable", "failed", "unfinished", "not started";
-    ``detail`` is one line; ``step`` the checkpoint's step (resumable)."""
+    "complete", "running", "resumable", "failed", "unfinished", "not
+    started"; ``detail`` is one line; ``step`` the checkpoint's step
+    (resumable, and running when it has one); ``holder`` the lock record
+    of the process that runs it (running)."""
     state: str
     detail: str
     step: int | None = None
+    holder: dict | None = None
 
     @property
     def finished(self):
@@ -220,19 +291,31 @@ class RunState:
 
 def state_of(dump):
     """The :class:`RunState` of the run writing ``dump``, from its files:
-    a complete dump; a checkpoint (resumable at its step); the last recorded
-    attempt failed (its reason); files of an attempt without either
-    (unfinished: it is running, or was killed before its first checkpoint,
-    and starts afresh); nothing (not started)."""
+    a complete dump; a process holding the run's lock (running: named,
+    :mod:`yade_scripts.runlock`); a checkpoint (resumable at its step); the
+    last recorded attempt failed (its reason); files of an attempt without
+    either (unfinished: killed before its first checkpoint, it starts
+    afresh); nothing (not started). Only a dump whose ``complete`` flag is
+    set is complete here; whether it adds up is checked when it is read
+    (:class:`postproc.schema.DumpReader`)."""
+    from .runlock import describe, holds, lock_path, run_holder
+
     if complete(dump):
         return RunState("complete", "complete")
     where = checkpoint_position(dump)
+    try:
+        holder = None if holds(lock_path(dump)) else run_holder(dump)       # not ourselves
+    except OSError:
+        holder = None
+    if holder is not None:
+        at = f", last checkpoint at step {where[0]} ({where[1]})" if where else ""
+        return RunState("running", f"running: {describe(holder)}{at}", where and where[0], holder)
     if where is not None:
         return RunState("resumable", f"resumable at step {where[0]} ({where[1]})", where[0])
     tries = read_attempts(dump)
     if tries and tries[-1].get("action") == "failed":
         return RunState("failed", f"failed: {tries[-1].get('reason', 'no reason recorded')}")
     if any(os.path.exists(p) for p in RunFiles(dump).written_by_an_attempt()) or tries:
-        return RunState("unfinished", "unfinished, no checkpoint (running, or killed before its first "
-                        "checkpoint: it starts afresh)")
+        return RunState("unfinished", "unfinished, no checkpoint (killed before its first checkpoint: it starts "
+                        "afresh)")
     return RunState("not started", "not started")

@@ -12,8 +12,8 @@ folder), says in one line when the folder, its table or its scene is
 missing, and ``exec``s :mod:`yade_scripts.task` on YADE's own Python: task
 K runs table line K in ``FOLDER/<description>/`` (its dump, its log
 ``triaxial.log``, every attempt appended), checks the line first, skips a
-complete dump, and on SIGTERM, which SLURM sends ``--slurm-signal`` seconds
-before the time limit (``--signal=B:TERM@S``), lets YADE write its
+complete dump, and on SIGUSR1, which SLURM sends ``--slurm-signal`` seconds
+before the time limit (``--signal=B:USR1@S``), lets YADE write its
 checkpoint and requeues itself (``--slurm-requeues`` times at most), so
 one ``sbatch`` runs every line to the end. SLURM's own output goes to
 ``FOLDER/slurm-<job>_<task>.out``, appended across requeues
@@ -30,6 +30,7 @@ from __future__ import annotations
 import argparse
 import json
 import re
+import shutil
 import sys
 
 import math
@@ -237,7 +238,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
     cpus : cores per task (YADE's ``-j``: the polyhedra kernel's threads);
     time : the time limit of one job; requeues : requeues of a task at most
     (default :data:`yade_scripts.task.DEFAULT_REQUEUES`); signal_seconds :
-    SIGTERM this long before the time limit."""
+    SIGUSR1 this long before the time limit."""
     from .batch import read_table
     from .parameters import ConfigError
     from .task import DEFAULT_REQUEUES
@@ -259,7 +260,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
 #SBATCH --array=1-{len(rows)}
 #SBATCH --cpus-per-task={int(cpus)}
 #SBATCH --time={time}
-#SBATCH --signal=B:TERM@{int(signal_seconds)}
+#SBATCH --signal=B:USR1@{int(signal_seconds)}
 #SBATCH --requeue
 #SBATCH --open-mode=append
 #SBATCH --output={folder}/slurm-%A_%a.out
@@ -268,8 +269,10 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
 #   sbatch {folder}/slurm.sh          (some lines only: sbatch --array=2,5 ...)
 # By hand, one task: SLURM_ARRAY_TASK_ID=1 bash slurm.sh
 # Task K runs table line K in the folder <description>/, resuming from its checkpoint;
-# SIGTERM {int(signal_seconds)} s before the time limit: YADE writes a checkpoint and the
+# SIGUSR1 {int(signal_seconds)} s before the time limit: YADE writes a checkpoint and the
 # task requeues itself (at most {requeues} times), so one sbatch runs every line to the end.
+# Stop a task for good: scancel JOB_TASK (checkpoint written; resumable: sbatch --array=K ...)
+# Stop it now and have it resume (requeued): scancel --batch --signal=USR1 JOB_TASK
 #
 # Cost model (yade_scripts/slurm.py, docs/scenes.md): steps x contacts x us per contact-step
 #   {params['sample']}, {params['n_particles']} grains, kappa={params['kappa']:g}, I={params['inertial_number']:g}:
@@ -290,6 +293,7 @@ for PY in "$(head -n 1 "$YADE" | sed -n 's|^#![[:space:]]*\\([^[:space:]]*\\).*|
 done
 [[ -n "$PY" ]] || {{ echo "slurm.sh: no Python with numpy and h5py for yade_scripts.task" >&2; exit 2; }}
 export PYTHONPATH="$HERE/pkg" OMP_WAIT_POLICY=PASSIVE
+cd "$HERE"      # python -m looks in the working folder first: the folder's own pkg/, never a checkout's
 # the kernel's YADE plugin for this node's YADE: carried by the folder, else built
 # here (about a minute, once); where it cannot be, the scene steps the kernel from a PyRunner
 "$PY" -m yade_scripts.yadeplugin build >&2 || true
@@ -302,6 +306,114 @@ exec "$PY" -m yade_scripts.task "$HERE" --requeues {int(requeues)}
     return path
 
 
+#: the record of an array's SLURM jobs, beside its table (:func:`record_job`)
+JOBS_FILE = "slurm-jobs.json"
+#: squeue states of a task that is in the queue or on a node (not ended)
+QUEUED = {"PENDING", "REQUEUED", "REQUEUE_HOLD", "REQUEUE_FED", "RESV_DEL_HOLD", "SPECIAL_EXIT"}
+ON_A_NODE = {"RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "RESIZING", "STAGE_OUT", "SIGNALING",
+             "STOPPED"}
+
+
+def recorded_jobs(folder):
+    """The array job ids recorded for the run folder ``folder`` (list of
+    str, oldest first; [] when none)."""
+    try:
+        with open(os.path.join(folder, JOBS_FILE)) as fh:
+            rows = json.load(fh)
+    except (OSError, ValueError):
+        return []
+    return [str(r["job"]) for r in rows if isinstance(r, dict) and r.get("job")] if isinstance(rows, list) else []
+
+
+def record_job(folder, job, how):
+    """Add the array job id ``job`` to ``folder``'s record of submissions
+    (JOBS_FILE), once; ``how`` says who recorded it ("submit", or "task"
+    for a task that found its array unrecorded: an ``sbatch`` by hand).
+    Written atomically; a folder that cannot be written is left alone."""
+    import time as _time
+
+    path = os.path.join(folder, JOBS_FILE)
+    try:
+        with open(path) as fh:
+            rows = json.load(fh)
+        rows = rows if isinstance(rows, list) else []
+    except (OSError, ValueError):
+        rows = []
+    if any(isinstance(r, dict) and str(r.get("job")) == str(job) for r in rows):
+        return
+    rows.append({"job": str(job), "recorded_by": how,
+                 "time": _time.strftime("%Y-%m-%dT%H:%M:%SZ", _time.gmtime())})
+    tmp = f"{path}.{os.getpid()}.tmp"
+    try:
+        with open(tmp, "w") as fh:
+            json.dump(rows, fh, indent=1)
+        os.replace(tmp, path)
+    except OSError:
+        pass
+
+
+def submit(folder, array=None, sbatch_args=()):
+    """``sbatch --parsable [--array=ARRAY] FOLDER/slurm.sh``, its job id
+    recorded (:func:`record_job`) so that ``--collect`` can ask SLURM which
+    lines are pending or running. Returns the job id; raises ConfigError
+    (one line) when sbatch is missing or refuses."""
+    import subprocess
+
+    from .parameters import ConfigError
+
+    script = os.path.join(os.path.abspath(folder), "slurm.sh")
+    if not os.path.exists(script):
+        raise ConfigError(f"{folder}: no slurm.sh (generate --slurm, or python -m yade_scripts.slurm FOLDER)")
+    exe = shutil.which("sbatch")
+    if exe is None:
+        raise ConfigError("sbatch is not on the PATH (not a SLURM login node?)")
+    cmd = [exe, "--parsable", *([f"--array={array}"] if array else []), *sbatch_args, script]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        raise ConfigError(f"sbatch refused: {(r.stderr.strip() or r.stdout.strip()).splitlines()[-1]}")
+    job = r.stdout.strip().split(";")[0]
+    record_job(os.path.abspath(folder), job, "submit")
+    return job
+
+
+def queue_states(folder):
+    """{task: (job id, state, reason)} of ``folder``'s array tasks that SLURM
+    has in its queue or on a node now (``squeue -r``): the jobs recorded at
+    submission or by their tasks (:func:`recorded_jobs`), and any job whose
+    batch script is ``folder/slurm.sh`` (an ``sbatch`` by hand whose tasks
+    have not started). {} without squeue; raises nothing."""
+    import subprocess
+
+    exe = shutil.which("squeue")
+    if exe is None:
+        return {}
+    script = os.path.realpath(os.path.join(folder, "slurm.sh"))
+    r = subprocess.run([exe, "-h", "-r", "-o", "%i|%T|%r|%o|%K"], capture_output=True, text=True)
+    if r.returncode != 0:
+        return {}
+    ids = set(recorded_jobs(folder))
+    out = {}
+    for row in r.stdout.splitlines():
+        parts = row.strip().split("|")
+        if len(parts) != 5:
+            continue
+        job, state, reason, command, task = parts
+        array = job.split("_")[0]
+        mine = array in ids or os.path.realpath(command) == script
+        if not mine or not task.isdigit():
+            continue
+        out[int(task)] = (job, state, reason)
+    return out
+
+
+def queue_detail(job, state, reason):
+    """The words ``--collect`` says of a task in SLURM's queue."""
+    if state in ON_A_NODE:
+        return f"running: SLURM job {job}, {state}"
+    why = f", {reason}" if reason and reason not in ("None", "(null)") else ""
+    return f"pending: SLURM job {job}, {state}{why}"
+
+
 def add_options(ap, prefix="--slurm-"):
     """The options of a SLURM array on ``ap`` (argparse), named ``prefix`` + cpus, time, ..."""
     ap.add_argument(prefix + "cpus", type=int, default=2, help="cores per array task (default 2)")
@@ -310,7 +422,7 @@ def add_options(ap, prefix="--slurm-"):
     ap.add_argument(prefix + "requeues", type=int, default=None,
                     help="requeues of a task at most, each after a time limit (default 10)")
     ap.add_argument(prefix + "signal", type=int, default=DEFAULT_SIGNAL_SECONDS,
-                    help=f"SIGTERM this many seconds before the time limit (default {DEFAULT_SIGNAL_SECONDS})")
+                    help=f"SIGUSR1 this many seconds before the time limit (default {DEFAULT_SIGNAL_SECONDS})")
 
 
 def options_of(args, prefix="slurm_"):
@@ -324,11 +436,21 @@ def main(argv=None):
     from .parameters import ConfigError
 
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.slurm",
-                                 description="Write slurm.sh, a SLURM job array over a run folder's table.")
+                                 description="Write slurm.sh, a SLURM job array over a run folder's table "
+                                             "(or, with --submit, submit it).")
     ap.add_argument("folder", help="a generated run folder (table.txt, triaxial.py, pkg/)")
+    ap.add_argument("--submit", action="store_true",
+                    help="submit the folder's slurm.sh (sbatch) and record its job id, so that --collect can ask "
+                         "SLURM which lines are pending or running; slurm.sh is not written again")
+    ap.add_argument("--array", help="with --submit: the tasks (table lines) to submit, e.g. 2,5 (default: all)")
     add_options(ap, "--")
     args = ap.parse_args(argv)
     try:
+        if args.submit:
+            job = submit(args.folder, args.array)
+            print(f"slurm: submitted {os.path.join(os.path.abspath(args.folder), 'slurm.sh')} as job {job} "
+                  f"(recorded in {JOBS_FILE})", file=sys.stderr)
+            return 0
         if not os.path.exists(os.path.join(args.folder, "pkg")):
             raise ConfigError(f"{args.folder}: no pkg/ (not a run folder of this code; an older folder keeps "
                               f"its own slurm.sh)")
@@ -336,7 +458,8 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"slurm: error: {exc}", file=sys.stderr)
         return 2
-    print(f"slurm: {path}; submit with: sbatch {path}", file=sys.stderr)
+    print(f"slurm: {path}; submit with: sbatch {path} (or python -m yade_scripts.slurm {args.folder} --submit, "
+          f"which records the job for --collect)", file=sys.stderr)
     return 0
 
 

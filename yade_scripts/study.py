@@ -42,7 +42,8 @@ from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_tab
 from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
 from .resources import check_memory, memory_mb
-from .runstate import EXIT_TERM, complete, read_attempts
+from .runlock import RunBusy, RunLock
+from .runstate import EXIT_BUSY, EXIT_TERM, complete, read_attempts
 
 
 #: a run folder set aside because its parameters changed (FOLDER.old-K)
@@ -197,6 +198,20 @@ def run_exits(dump):
     return [a.get("exit") for a in read_attempts(dump) if not a.get("requested")]
 
 
+def whole(dump):
+    """None when the complete dump ``dump`` adds up (every snapshot it says
+    it has, each matching what was recorded when it was written:
+    :meth:`postproc.schema.DumpReader.verify`), else the one line why."""
+    from postproc.schema import DumpFormatError, DumpReader
+
+    try:
+        with DumpReader(dump) as r:
+            r.verify()
+    except DumpFormatError as exc:
+        return str(exc)
+    return None
+
+
 def analyse_dump(dump, analysis, errors=True):
     """The dump's analysis (:func:`postproc.pipeline.analyze_path`, what
     ``postproc analyze`` runs; ``errors=False``: no standard errors) into
@@ -337,17 +352,23 @@ def collect(folder):
     set aside as FOLDER.old-K, :data:`SET_ASIDE`; a line's dump in the
     line's own folder ``<description>/``, as a SLURM array task writes it,
     or next to the table, as the study and sweeps do), and say what every
-    other line is: resumable at step N, failed (why), unfinished, not
-    started, or an invalid line (:func:`yade_scripts.batch.table_lines`:
-    named, never blocking the other lines or arrays). Writes
-    FOLDER/manifest.json (every line of every table) and FOLDER/report/.
+    other line is: pending or running in SLURM (``squeue`` of the jobs
+    recorded for the folder, :func:`yade_scripts.slurm.queue_states`),
+    running (a process holds its lock, :mod:`yade_scripts.runlock`: a task,
+    a study or a scene, on any node that shares the folder), resumable at
+    step N, failed (why), unfinished, not started, an invalid line
+    (:func:`yade_scripts.batch.table_lines`: named, never blocking the
+    other lines or arrays), or a complete dump that does not add up
+    (refused, never analysed). Pending and running lines are never in the
+    resubmit command. Writes FOLDER/manifest.json (every line of every
+    table) and FOLDER/report/, also when nothing has finished yet.
 
     Returns (runs analysed as {sample: [(label, dump, 0)]}, lines not
     finished as ["<folder>/<description> (<state>)"], failures of the
-    analysis, {table folder: command that resubmits its unfinished lines}).
-    Raises ConfigError when no line has finished."""
+    analysis, {table folder: command that resubmits its unfinished lines})."""
     from .batch import dump_of, table_lines
     from .runstate import state_of
+    from .slurm import queue_detail, queue_states
 
     if not os.path.isdir(folder):
         raise ConfigError(f"{folder}: no such folder")
@@ -370,6 +391,7 @@ def collect(folder):
                                                      "status": f"invalid run folder: {why}"})
             continue
         todo = []
+        queue = queue_states(t) if os.path.exists(os.path.join(t, "slurm.sh")) else {}
         for line in lines:
             label = prefix + (f"seed {line.row['seed']}" if "seed" in line.row and not line.error
                               else line.description)
@@ -382,11 +404,19 @@ def collect(folder):
                 dump = (os.path.join(own, os.path.basename(dump_of(t, line.row))) if os.path.isdir(own)
                         else dump_of(t, line.row))
                 st = state_of(dump)
-                if st.finished:
+                bad = whole(dump) if st.finished else None
+                if st.finished and bad is None:
                     runs.setdefault(sample, []).append((label, dump, 0))
                     continue
-                st_detail = st.detail
-                todo.append(line)
+                if bad is not None:
+                    st_detail = f"refused, not analysed: {bad}"
+                elif line.task in queue:
+                    st_detail = queue_detail(*queue[line.task])
+                elif st.state == "running":
+                    st_detail = st.detail
+                else:
+                    st_detail = st.detail
+                    todo.append(line)
             pending.append(f"{os.path.relpath(os.path.join(t, line.description), folder)} ({st_detail})")
             others.setdefault(sample, []).append({"label": label, "dump": dump and os.path.relpath(dump, folder),
                                                   "status": st_detail, **where})
@@ -402,10 +432,15 @@ def collect(folder):
             resubmit[t] = command(todo)
         mine = [e for e in others.get(sample, []) if e.get("table") == os.path.relpath(os.path.join(t, "table.txt"),
                                                                                       folder)]
-        for e, line in zip(mine, [x for x in lines if x.error or x in todo]):
-            if line.error:
+        by_number = {x.number: x for x in lines}
+        for e in mine:
+            line = by_number[e["line"]]
+            if e["status"].startswith("refused"):
+                e["note"] = (f"the dump does not add up: move it aside (and its .lock, .attempts.json), then "
+                             f"{command([line])}")
+            elif line.error:
                 e["note"] = f"fix line {line.number} of {name}/table.txt, then: {command([line])}"
-            else:
+            elif line in todo:
                 e["resubmit"] = resubmit[t]
                 e["note"] = f"resubmit the unfinished lines of {name}: {resubmit[t]}"
     for p in pending:
@@ -414,7 +449,8 @@ def collect(folder):
         print(f"study: resubmit the unfinished lines of {os.path.basename(os.path.abspath(t))}: {cmd}",
               file=sys.stderr)
     if not runs:
-        raise ConfigError(f"{folder}: no run has finished yet ({len(pending)} pending)")
+        print(f"study: no run has finished yet ({len(pending)} not finished): the manifest and the report list them",
+              file=sys.stderr)
     failed = analyse_and_report(folder, runs, unfinished=others)
     return runs, pending, failed, resubmit
 
@@ -458,6 +494,23 @@ def main(argv=None):
     if not args.out:
         ap.error("--out is required (unless --collect)")
     try:
+        os.makedirs(args.out, exist_ok=True)
+        lock = RunLock(os.path.join(args.out, "study.lock"), "study").acquire()
+    except RunBusy as exc:          # another study writes this folder: touch nothing
+        print(f"study: error: {exc}", file=sys.stderr)
+        return EXIT_BUSY
+    except OSError as exc:
+        print(f"study: error: {args.out}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    try:
+        return _study(args)
+    finally:
+        lock.release()
+
+
+def _study(args):
+    """The study of ``main``'s parsed ``args``, its folder's lock held."""
+    try:
         if args.ensemble < 1:
             raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
         overrides = parse_overrides(args.set)
@@ -465,7 +518,6 @@ def main(argv=None):
         # at once: both samples (one seed), or --jobs runs of the largest (ensembles)
         check_memory(params if args.ensemble == 1 else
                      [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
-        os.makedirs(args.out, exist_ok=True)
         if args.ensemble == 1:
             codes = run_samples(args.out, args.preset, overrides, args.library)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
@@ -477,6 +529,9 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
+    except RunBusy as exc:          # a run of the study written by another process (a task, a scene by hand)
+        print(f"study: error: {exc}", file=sys.stderr)
+        return EXIT_BUSY
     stopped = [f"{s} {label}" for s in runs for label, _, status in runs[s] if status == "stopped"]
     if stopped:
         print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "

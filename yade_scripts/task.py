@@ -4,7 +4,7 @@ end across as many jobs as it takes, without a human.
     python -m yade_scripts.task FOLDER [--task K] [--requeues N]
 
 ``slurm.sh`` (:mod:`yade_scripts.slurm`) ``exec``s this on YADE's own
-Python, so that SLURM's ``--signal=B:TERM@S`` reaches it. Task K (default
+Python, so that SLURM's ``--signal=B:USR1@S`` reaches it. Task K (default
 ``$SLURM_ARRAY_TASK_ID``) is the K-th run line of ``FOLDER/table.txt``; it
 runs in the line's own folder ``FOLDER/<description>/`` (made on its first
 run, with relative links to the scene, ``pkg/`` and the shape library),
@@ -14,24 +14,37 @@ task:
 1. checks its line by name, type and range (:func:`yade_scripts.batch.table_lines`):
    a bad line fails at once with one line naming the line and the
    parameter, before YADE starts;
-2. exits at once when the line's dump is complete;
-3. runs the line through :func:`yade_scripts.pool.run_pool` (the one loop
-   and rule of every run: every attempt appended to ``triaxial.log`` with a
-   header, and to the run's ``STEM.attempts.json``; a crash with a
-   checkpoint resumed in place);
-4. on SIGTERM (the time limit's warning) stops YADE, which writes a
-   checkpoint and exits 75, and requeues its own job (``scontrol requeue``)
-   while it has been requeued fewer than ``--requeues`` times, so that the
-   next job of the task resumes from the checkpoint.
+2. takes the run's lock (:mod:`yade_scripts.runlock`): when another
+   process writes the run (the same line submitted twice, a study or a
+   task by hand on it), it refuses at once, naming that process, touches
+   nothing and exits 4;
+3. exits at once when the line's dump is complete;
+4. runs the line through :func:`yade_scripts.pool.run_pool` (the one loop
+   and rule of every run: every attempt recorded in the run's
+   ``STEM.attempts.json`` as it starts and when it ends, one killed with
+   its job recorded as killed by the next; appended to ``triaxial.log``
+   with a header; a crash resumed from its checkpoint, or started afresh
+   when it had none, :data:`yade_scripts.runstate.MAX_RESUMES` times at most);
+5. on SIGUSR1 (the time limit's warning, ``--signal=B:USR1@S``; or
+   ``scancel --batch --signal=USR1``, to stop it now and have it resume)
+   stops YADE, which writes a checkpoint and exits 75, and requeues its own
+   job (``scontrol requeue``) while it has requeued itself fewer than
+   ``--requeues`` times (counted in the attempts record: SLURM's own
+   requeues, after a node failure or a preemption, do not count), so that
+   the next job of the task resumes from the checkpoint;
+6. on SIGTERM (``scancel``: stop for good) stops YADE the same way and
+   ends, not requeued; its run stays resumable by submitting the task again.
 
 Its final state and reason go to its output (lines ``task: ...``, the last
-one ``task: FINAL ...``), to SLURM's accounting (the exit code, and the job's
-``Comment``, which ``sacct --format=JobID,State,ExitCode,Comment`` shows
-when the cluster stores job comments) and to the run's attempts record.
+one, once per job, ``task: FINAL ...``), to SLURM's accounting (the exit
+code, and the job's ``Comment``, which ``sacct
+--format=JobID,State,ExitCode,Comment`` shows when the cluster stores job
+comments) and to the run's attempts record.
 
-Exit codes: 0 complete; 2 invalid line or folder; 3 the run failed (a
-blow-up, or it crashed past its resumes); 75 stopped and resumable but not
-requeued (no SLURM, or ``--requeues`` used up): submit the task again.
+Exit codes: 0 complete (or requeued); 2 invalid line or folder; 3 the run
+failed (a blow-up, or it crashed past its resumes); 4 another process
+writes the run; 75 stopped and resumable but not requeued (scancel, no
+SLURM, or ``--requeues`` used up): submit the task again.
 
 Standard library only outside the run (the pool and the table checks):
 it runs on the Python YADE runs on.
@@ -47,7 +60,9 @@ import sys
 
 from .batch import dump_of, table_lines
 from .parameters import ConfigError
-from .runstate import EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, now_utc, state_of
+from .runlock import RunBusy, RunLock, describe, lock_path
+from .runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, mark_requeued, now_utc, state_of,
+                       task_requeues)
 
 #: requeues of one task at most (``--requeues``): each is one job's time limit
 DEFAULT_REQUEUES = 10
@@ -81,13 +96,15 @@ def scontrol(*args):
 
 
 def finish(code, state, job_id):
-    """Say the task's final state, leave it as the job's comment; returns
-    ``code``."""
-    say(f"FINAL {state}", err=code not in (EXIT_DONE, EXIT_TERM))
+    """Leave the task's final state as the job's comment, then say it as
+    the task's last line, ``task: FINAL <state>`` (one per job); returns
+    ``code``. A job that ``scancel`` cancelled is finished for SLURM
+    before its task ends, and takes no comment: said on the line before."""
     if job_id:
         why = scontrol("update", f"JobId={job_id}", f"Comment={state[:250]}")
         if why:
             say(f"the job's comment could not be set: {why}")
+    say(f"FINAL {state}", err=code not in (EXIT_DONE, EXIT_TERM))
     return code
 
 
@@ -120,7 +137,10 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
     job_id, restarts = slurm_job()
     threads = threads or int(os.environ.get("SLURM_CPUS_PER_TASK") or 1)
     say(f"task {task} of {folder}, {now_utc()} on {os.uname().nodename}"
-        + (f", SLURM job {job_id} (requeued {restarts} time(s) so far)" if job_id else ", outside SLURM"))
+        + (f", SLURM job {job_id} (started {restarts + 1} time(s) so far)" if job_id else ", outside SLURM"))
+    stop = []                      # the signals that asked it to stop, in order
+    for sig in (signal.SIGTERM, signal.SIGUSR1):
+        signal.signal(sig, lambda num, frame: stop.append(num))
     missing = [f for f in ("table.txt", "triaxial.py", "params.json", "pkg")
                if not os.path.exists(os.path.join(folder, f))]
     if missing:
@@ -138,6 +158,27 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
         return finish(EXIT_CONFIG, f"invalid line: {line.error}", job_id)
     own = line_folder(folder, line)
     dump = os.path.join(own, os.path.basename(dump_of(folder, line.row)))
+    if job_id:        # the array's job, for --collect to ask SLURM about (an sbatch by hand is recorded so)
+        from .slurm import record_job
+
+        record_job(folder, os.environ.get("SLURM_ARRAY_JOB_ID") or job_id.split("_")[0], "task")
+    try:
+        os.makedirs(own, exist_ok=True)
+        lock = RunLock(lock_path(dump), "task", subject=f"task {task} ({line.description})").acquire()
+    except RunBusy as exc:         # another writer: touch nothing
+        return finish(EXIT_BUSY, f"refused: {exc}", job_id)
+    except OSError as exc:
+        return finish(EXIT_CONFIG, f"failed: {own}: {exc.strerror or exc}", job_id)
+    if lock.took_over and not lock.took_over.get("unreadable"):
+        say(f"taking over the run from {describe(lock.took_over)}, which is no longer running")
+    try:
+        return _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, echo)
+    finally:
+        lock.release()
+
+
+def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, echo):
+    """The task's line, its run's lock held."""
     before = state_of(dump)
     if before.finished:
         return finish(EXIT_DONE, f"done: {os.path.basename(dump)} is complete, nothing to do", job_id)
@@ -145,39 +186,45 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
 
     from .pool import Job, run_pool
 
-    stop = []
-    signal.signal(signal.SIGTERM, lambda *a: stop.append(1))
     try:
         link_inputs(folder, own, line)
     except OSError as exc:
         return finish(EXIT_CONFIG, f"failed: {own}: {exc.strerror or exc}", job_id)
     job = Job(own, line.number, line.description, dump, tag=os.path.basename(folder), threads=threads,
               log=os.path.join(own, "triaxial.log"), table=os.path.join(folder, "table.txt"))
-    note = {"slurm_job": job_id, "requeued": restarts} if job_id else None
+    note = {"slurm_job": job_id, "job_start": int(os.environ.get("SLURM_RESTART_COUNT") or 0) + 1} if job_id else None
     try:
         run_pool([job], threads, echo=echo, stopping=lambda: bool(stop), note=note)
     except ConfigError as exc:
         return finish(EXIT_CONFIG, f"failed: {exc}", job_id)
+    except RunBusy as exc:
+        return finish(EXIT_BUSY, f"refused: {exc}", job_id)
     v = job.verdict
+    resubmit = f"sbatch --array={task} {os.path.join(folder, 'slurm.sh')}" if job_id else "run the task again"
     if v is None:                       # stopped before YADE started
-        return finish(EXIT_TERM, f"not finished: stopped before its run started ({state_of(dump).detail})", job_id)
+        return finish(EXIT_TERM, f"stopped before its run started ({state_of(dump).detail}); to resume: {resubmit}",
+                      job_id)
     if v.action == "done":
         return finish(EXIT_DONE, f"done: {os.path.basename(dump)} complete", job_id)
     if v.action == "failed":
         return finish(EXIT_FAILED, f"failed: {v.reason}", job_id)
     where = state_of(dump).detail
-    if job_id and restarts < requeues:
-        state = f"requeued to resume ({where}; requeue {restarts + 1} of at most {requeues})"
-        say(f"FINAL {state}")
-        why = scontrol("update", f"JobId={job_id}", f"Comment={state}") or scontrol("requeue", job_id)
-        if why is None:
-            return EXIT_DONE           # SLURM ends this job as REQUEUED and starts the task again
-        return finish(EXIT_TERM, f"not finished: {where}; the requeue failed ({why}): submit the task again",
+    asked = signal.Signals(stop[0]).name if stop else "no signal"
+    if not job_id:
+        return finish(EXIT_TERM, f"stopped on request ({asked}) ({where}); to resume: {resubmit}", job_id)
+    if stop and stop[0] == signal.SIGTERM:         # scancel: stopped for good, resumable by hand
+        return finish(EXIT_TERM, f"stopped on request (SIGTERM, scancel) ({where}); to resume: {resubmit}", job_id)
+    used = task_requeues(dump)           # its own requeues: SLURM's (node failure, preemption) not counted
+    if used >= requeues:
+        return finish(EXIT_TERM, f"stopped ({where}); its {requeues} requeue(s) are used up; to resume: {resubmit}",
                       job_id)
-    if job_id:
-        return finish(EXIT_TERM, f"not finished: {where}; {requeues} requeue(s) used up: submit the task again "
-                      f"(sbatch --array={task} {os.path.join(folder, 'slurm.sh')})", job_id)
-    return finish(EXIT_TERM, f"not finished ({where}): run the task again", job_id)
+    state = f"requeued to resume ({where}; requeue {used + 1} of at most {requeues})"
+    why = scontrol("update", f"JobId={job_id}", f"Comment={state[:250]}") or scontrol("requeue", job_id)
+    if why is None:
+        mark_requeued(dump, f"requeue {used + 1} of at most {requeues}")
+        say(f"FINAL {state}")
+        return EXIT_DONE               # SLURM ends this job as REQUEUED and starts the task again
+    return finish(EXIT_TERM, f"stopped ({where}); the requeue failed ({why}); to resume: {resubmit}", job_id)
 
 
 def main(argv=None):

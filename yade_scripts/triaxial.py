@@ -31,7 +31,8 @@ as OUT.ckpt.prev. Run the same command again in the folder and it resumes
 from the newest usable checkpoint, appending to the same dump
 (``resume=False`` starts afresh). Exit codes (yade_scripts/runstate.py): 0
 done (or already complete), 2 invalid parameters, 3 stopped on a blow-up or
-max_steps (message printed, snapshots kept), 75 checkpoint written after
+max_steps (message printed, snapshots kept), 4 another process is writing
+the run (its lock, yade_scripts/runlock.py: nothing touched), 75 checkpoint written after
 SIGTERM (run again to resume), anything else a crash (run again to resume
 from the last periodic checkpoint).
 """
@@ -102,14 +103,15 @@ from yade.params.table import (  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(sys.argv[0]))
 sys.path.insert(0, os.path.join(HERE, "pkg"))      # this run's copy of the repository's packages
-from postproc.schema import DumpWriter  # noqa: E402
+from postproc.schema import DumpFormatError, DumpWriter  # noqa: E402
 from shapes import sizes  # noqa: E402
 from shapes.library import ShapeLibrary  # noqa: E402
 from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
 from yade_scripts import sample as sampling  # noqa: E402
 from yade_scripts.attempt import Attempt, Progress  # noqa: E402
 from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
-from yade_scripts.runstate import EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
+from yade_scripts.runlock import RunBusy  # noqa: E402
+from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
 
 
 def say(message):
@@ -130,7 +132,11 @@ log.setLevel("Polyhedra_support.cpp", log.ERROR)
 os.chdir(HERE)
 
 # ------------------------------------------------------------ this attempt: resume, or start afresh
-run = Attempt(O, os.path.join(HERE, out), PARAMS, checkpoint_seconds, resume, timing, say)
+try:                  # the run's only writer, or nothing is touched
+    run = Attempt(O, os.path.join(HERE, out), PARAMS, checkpoint_seconds, resume, timing, say)
+except RunBusy as exc:
+    say(f"refused: {exc}")
+    sys.exit(EXIT_BUSY)
 if run.complete:
     say(f"{out} is complete already; nothing to do (delete it to run again)")
     sys.exit(EXIT_DONE)
@@ -569,11 +575,15 @@ if outcome == "terminated":
     say(f"stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} snapshot(s) are kept: "
         f"run again in this folder to resume (exit {EXIT_TERM})")
     sys.exit(EXIT_TERM)
-if run.failed:
-    writer.close(pack=True, complete=False)
-    run.finish()                  # a blow-up replays identically from a checkpoint: nothing to resume
+try:                              # packing checks every snapshot against what was recorded when it was written
+    if run.failed:
+        writer.close(pack=True, complete=False)
+        run.finish()              # a blow-up replays identically from a checkpoint: nothing to resume
+        sys.exit(EXIT_FAILED)
+    writer.close(pack=True)
+except DumpFormatError as exc:    # the parts do not add up (a second writer?): kept as they are, never complete
+    say(f"the dump cannot be closed: {exc}")
     sys.exit(EXIT_FAILED)
-writer.close(pack=True)
 run.finish()
 history = run.history()
 info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"],

@@ -1,0 +1,245 @@
+"""One writer per run: an exclusive lock held for as long as a process may
+write a run's files.
+
+    with RunLock(lock_path(dump), "task"):      # RunBusy (one line) when another process holds it
+        ...
+
+The lock is a POSIX record lock (``fcntl.lockf``) on the file ``STEM.lock``
+beside the dump. POSIX locks are what NFS's lock manager (NLM, and NFSv4's
+own locking) serves, so the lock holds across the nodes of a cluster that
+share the run folder. The kernel drops it when its holder dies, however it
+dies (a crash, SIGKILL, a node that reboots and whose locks the server
+reclaims), so a lock is never left held by a dead process. The file holds
+one JSON line naming its holder (host, pid, SLURM job, since, what), which
+a refusal quotes; a holder that ends normally empties it, so a file that
+still names someone while nobody holds the lock is a *stale* record of a
+process that died, recognised and taken over (:attr:`RunLock.took_over`).
+
+Who holds it:
+
+* a launcher (:func:`yade_scripts.pool.run_pool`, for the study, sweeps and
+  SLURM tasks) holds the lock of every run it has, from before it looks at
+  the run's files to after its last attempt; the YADE process it starts
+  learns from the environment (:data:`INHERITED`) that its parent holds
+  it, and checks that this is so (:func:`inherited`);
+* a scene started by hand (``yade -x triaxial.py`` in a run folder) takes
+  the lock itself (:class:`yade_scripts.attempt.Attempt`);
+* the study holds one more on its whole folder (``OUT/study.lock``), so that
+  a second study on the folder refuses before it generates or sets aside
+  anything.
+
+POSIX locks belong to a process, and closing *any* descriptor of the file
+releases them all; so a process opens each lock file once (a registry of
+the locks it holds, counted), and :func:`holder` never opens a lock file
+its own process holds.
+
+Standard library only: YADE's Python, the venv and a SLURM task use it.
+"""
+from __future__ import annotations
+
+import errno
+import fcntl
+import json
+import os
+import socket
+import struct
+import time
+
+#: the environment variable by which a launcher tells the YADE process it
+#: starts that it holds the run's lock: JSON {"path": lock file, "pid": the
+#: launcher's pid}
+INHERITED = "GRANULAR_RUN_LOCK"
+
+#: struct flock of Linux (l_type, l_whence, l_start, l_len, l_pid), native alignment
+_FLOCK = "hhqqi"
+_held = {}       # real path -> [fd, count, record]: the locks this process holds
+
+
+class RunBusy(RuntimeError):
+    """The run is held by another process; ``holder`` is its record (dict,
+    possibly empty) and ``path`` the lock file. ``str()`` is one line."""
+
+    def __init__(self, path, holder, subject=None):
+        self.path, self.holder = path, holder or {}
+        super().__init__(f"{subject or describe_lock(path)} is being written by {describe(self.holder)}; "
+                         f"nothing was touched (stop that one first, or wait for it)")
+
+
+def lock_path(dump):
+    """The lock file of the run that writes ``dump`` (``STEM.lock``)."""
+    return os.path.splitext(dump)[0] + ".lock"
+
+
+def describe_lock(path):
+    """The run a lock file stands for, as a message names it."""
+    base = os.path.basename(path)
+    stem = base[:-len(".lock")] if base.endswith(".lock") else base
+    folder = os.path.basename(os.path.dirname(os.path.abspath(path)))
+    return f"{folder}/{stem}" if stem != "study" else f"the study folder {os.path.dirname(os.path.abspath(path))}"
+
+
+def describe(record):
+    """One phrase naming a holder record: ``pid 123 on node1 (SLURM job
+    45_2, a task) since 2026-...``."""
+    if not record:
+        return "another process (its record is not written yet)"
+    bits = [f"pid {record.get('pid', '?')} on {record.get('host', '?')}"]
+    extra = [f"SLURM job {record['slurm_job']}"] if record.get("slurm_job") else []
+    extra += [f"a {record['what']}"] if record.get("what") else []
+    if extra:
+        bits.append(f"({', '.join(extra)})")
+    if record.get("since"):
+        bits.append(f"since {record['since']}")
+    return " ".join(bits)
+
+
+def own_record(what):
+    """The record this process writes into a lock it takes."""
+    job = os.environ.get("SLURM_JOB_ID")
+    array, task = os.environ.get("SLURM_ARRAY_JOB_ID"), os.environ.get("SLURM_ARRAY_TASK_ID")
+    return {"pid": os.getpid(), "host": socket.gethostname(),
+            "slurm_job": (f"{array}_{task}" if array and task else job) or None, "what": what,
+            "since": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+
+
+def _read(fd):
+    os.lseek(fd, 0, os.SEEK_SET)
+    data = b""
+    while True:
+        chunk = os.read(fd, 65536)
+        if not chunk:
+            break
+        data += chunk
+    try:
+        rec = json.loads(data.decode("utf-8", "replace") or "{}")
+    except ValueError:
+        return {"unreadable": data[:200].decode("utf-8", "replace")}
+    return rec if isinstance(rec, dict) else {}
+
+
+def _write(fd, record):
+    os.ftruncate(fd, 0)
+    os.lseek(fd, 0, os.SEEK_SET)
+    os.write(fd, (json.dumps(record) + "\n").encode())
+    os.fsync(fd)
+
+
+def _busy(exc):
+    return exc.errno in (errno.EACCES, errno.EAGAIN)
+
+
+class RunLock:
+    """The exclusive lock on ``path`` (a lock file; :func:`lock_path` of a
+    dump), taken by :meth:`acquire` (or ``with``): non-blocking, it raises
+    :class:`RunBusy` naming the holder when another process holds it, and
+    touches nothing then. Re-entrant within a process (counted).
+    ``what`` names the holder's role in its record ("study", "task", "scene" ...).
+    After :meth:`acquire`, :attr:`took_over` is the record of a holder that
+    died without releasing (a stale lock), or None."""
+
+    def __init__(self, path, what="run", subject=None):
+        self.path, self.what, self.subject = os.path.abspath(path), what, subject
+        self.took_over, self.acquired = None, False
+
+    @property
+    def key(self):
+        return os.path.realpath(self.path)
+
+    def acquire(self):
+        held = _held.get(self.key)
+        if held is not None:
+            held[1] += 1
+            self.acquired = True
+            return self
+        fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.lockf(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as exc:
+            holder = _read(fd) if _busy(exc) else {}
+            os.close(fd)
+            if _busy(exc):
+                raise RunBusy(self.path, holder, self.subject) from None
+            raise
+        previous = _read(fd)
+        self.took_over = previous or None
+        record = own_record(self.what)
+        _write(fd, record)
+        _held[self.key] = [fd, 1, record]
+        self.acquired = True
+        return self
+
+    def release(self):
+        if not self.acquired:
+            return
+        self.acquired = False
+        held = _held.get(self.key)
+        if held is None:
+            return
+        held[1] -= 1
+        if held[1] > 0:
+            return
+        del _held[self.key]
+        fd = held[0]
+        try:
+            os.ftruncate(fd, 0)        # released normally: no record left to look stale
+            fcntl.lockf(fd, fcntl.LOCK_UN)
+        finally:
+            os.close(fd)
+
+    def __enter__(self):
+        return self.acquire()
+
+    def __exit__(self, *exc):
+        self.release()
+
+    def environment(self):
+        """{INHERITED: ...}: what a child process gets to know that this
+        process holds the lock for it (:func:`inherited`)."""
+        return {INHERITED: json.dumps({"path": self.key, "pid": os.getpid()})}
+
+
+def holds(path):
+    """True when this process holds the lock ``path``."""
+    return os.path.realpath(path) in _held
+
+
+def inherited(path, environ=None):
+    """True when the environment says the parent process holds the lock
+    ``path`` for us, and it does: the variable names this lock file and the
+    parent's pid, and the lock file's record names that pid (its holder)."""
+    raw = (os.environ if environ is None else environ).get(INHERITED)
+    if not raw:
+        return False
+    try:
+        said = json.loads(raw)
+    except ValueError:
+        return False
+    if not isinstance(said, dict) or said.get("path") != os.path.realpath(path) or said.get("pid") != os.getppid():
+        return False
+    rec = holder(path)
+    return bool(rec) and rec.get("pid") == said["pid"]
+
+
+def holder(path):
+    """The record of the process that holds the lock ``path`` now (dict;
+    ``{}`` when its record is not written yet), or None when nobody holds
+    it (no file, or a free lock: a stale record is not a holder). This
+    process's own locks are answered from its registry."""
+    key = os.path.realpath(path)
+    if key in _held:
+        return dict(_held[key][2])
+    try:
+        fd = os.open(key, os.O_RDWR)
+    except FileNotFoundError:
+        return None
+    try:       # F_GETLK asks who holds it, without taking it (a probe that took it could refuse a real writer)
+        probe = struct.pack(_FLOCK, fcntl.F_WRLCK, os.SEEK_SET, 0, 0, 0)
+        kind = struct.unpack(_FLOCK, fcntl.fcntl(fd, fcntl.F_GETLK, probe))[0]
+        return None if kind == fcntl.F_UNLCK else _read(fd)
+    finally:
+        os.close(fd)
+
+
+def run_holder(dump):
+    """:func:`holder` of the run that writes ``dump``."""
+    return holder(lock_path(dump))
