@@ -99,7 +99,8 @@ PLANS["kernel"] = {
 }
 # The time-step sweep (benchmarks/timestep_front.py): S1 on the default
 # preset (kappa = 3000, I = 5e-3) at 200 grains, the time step at 0.3 (the
-# default), 0.45, 0.6 and 0.9 of the critical step, 3 seeds, seed-major; the
+# default when it was measured), 0.45 (today's default), 0.6 and 0.9 of the
+# critical step, 3 seeds, seed-major; the
 # same seed starts from the same grains and positions at every step.
 TIMESTEP_SAFETIES = (0.3, 0.45, 0.6, 0.9)
 PLANS["timestep"] = {

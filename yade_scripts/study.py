@@ -26,8 +26,11 @@ keeps every analysis made from the same dump, options and code
 (:mod:`postproc.provenance`), so a rerun analyses only what changed;
 ``OUT/manifest.json`` lists the runs and their status, and the report
 (:func:`postproc.study.report.build_report`) goes to ``OUT/report/``. A
-failed run is reported and everything else still builds; the exit code is
-non-zero when a run failed.
+failed run is reported and everything else still builds. Exit codes: 0
+when every sample has a usable run (a failed run is then listed in the
+report); 1 when a sample has none; 2 for invalid options; 4 when another
+process writes the folder or one of its runs (nothing touched); 75 when
+stopped (SIGTERM, Ctrl-C: run the same command again to resume).
 """
 from __future__ import annotations
 
