@@ -358,7 +358,7 @@ def test_an_attempt_killed_with_its_task_is_recorded_and_the_run_taken_over(tmp_
     the lock goes with them; the next task takes the run over, records the
     killed attempt as killed under its own number and runs the line to the
     end as attempt 2."""
-    out = make(tmp_path, (1,), "--set", "final_strain=0.05", "--set", "inertial_number=2e-4")
+    out = make(tmp_path, (1,), "--set", "final_strain=0.02", "--set", "inertial_number=2e-4")
     d = out / "spheres-seed1"
     p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True, start_new_session=True)
