@@ -1,5 +1,6 @@
-"""The analysis library's docstrings: every public function and class of
-the core modules has numpydoc sections (Parameters and Returns, or
+"""The docstrings of the analysis library's core modules and of the run
+machinery a user calls (one writer per run, the run's state and rule):
+every public function and class has numpydoc sections (Parameters and Returns, or
 Attributes for a data class), and their Examples run and give what they
 show (doctest)."""
 import doctest
@@ -10,13 +11,15 @@ import io
 import pytest
 
 #: the analysis library's modules whose public API is documented in numpydoc
-NUMPYDOC = ("stress", "fabric", "angular", "coordination", "networks", "pertype", "strain", "statistics")
+NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
+                                            "strain", "statistics")) + ("yade_scripts.runlock", "yade_scripts.runstate")
 #: the core modules whose every public function shows a runnable example
-EXAMPLES = ("stress", "fabric", "angular", "strain", "coordination", "networks", "pertype", "statistics")
+EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
+                                           "pertype", "statistics")) + ("yade_scripts.runlock", "yade_scripts.runstate")
 
 
 def public(module):
-    mod = importlib.import_module(f"postproc.{module}")
+    mod = importlib.import_module(module)
     for name, obj in vars(mod).items():
         if name.startswith("_") or getattr(obj, "__module__", None) != mod.__name__:
             continue
@@ -51,7 +54,7 @@ def test_every_public_definition_has_numpydoc_sections(module):
 
 @pytest.mark.parametrize("module", EXAMPLES)
 def test_the_examples_run(module):
-    mod = importlib.import_module(f"postproc.{module}")
+    mod = importlib.import_module(module)
     finder = doctest.DocTestFinder()
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     out = io.StringIO()

@@ -56,8 +56,16 @@ _held = {}       # real path -> [fd, count, record]: the locks this process hold
 
 
 class RunBusy(RuntimeError):
-    """The run is held by another process; ``holder`` is its record (dict,
-    possibly empty) and ``path`` the lock file. ``str()`` is one line."""
+    """The run is held by another process; ``str()`` is one line naming it.
+
+    Attributes
+    ----------
+    path : str
+        The lock file.
+    holder : dict
+        The holder's record (:func:`own_record` of that process; empty when
+        it has not written it yet).
+    """
 
     def __init__(self, path, holder, subject=None):
         self.path, self.holder = path, holder or {}
@@ -66,12 +74,46 @@ class RunBusy(RuntimeError):
 
 
 def lock_path(dump):
-    """The lock file of the run that writes ``dump`` (``STEM.lock``)."""
+    """The lock file of the run that writes ``dump``.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump, ``STEM.h5``.
+
+    Returns
+    -------
+    str
+        ``STEM.lock``, beside the dump.
+
+    Examples
+    --------
+    >>> lock_path("runs/study/polyhedra/run.h5")
+    'runs/study/polyhedra/run.lock'
+    """
     return os.path.splitext(dump)[0] + ".lock"
 
 
 def describe_lock(path):
-    """The run a lock file stands for, as a message names it."""
+    """The run a lock file stands for, as a message names it.
+
+    Parameters
+    ----------
+    path : str
+        A lock file: ``STEM.lock`` of a run, or a study folder's ``study.lock``.
+
+    Returns
+    -------
+    str
+        ``folder/STEM`` for a run; ``the study folder FOLDER`` for a study.
+
+    Examples
+    --------
+    >>> describe_lock("/scratch/arr/spheres-seed1/spheres-seed1.lock")
+    'spheres-seed1/spheres-seed1'
+    >>> describe_lock("/scratch/study/study.lock")
+    'the study folder /scratch/study'
+    """
     base = os.path.basename(path)
     stem = base[:-len(".lock")] if base.endswith(".lock") else base
     folder = os.path.basename(os.path.dirname(os.path.abspath(path)))
@@ -79,8 +121,27 @@ def describe_lock(path):
 
 
 def describe(record):
-    """One phrase naming a holder record: ``pid 123 on node1 (SLURM job
-    45_2, a task) since 2026-...``."""
+    """One phrase naming the holder of a lock.
+
+    Parameters
+    ----------
+    record : dict or None
+        A holder's record (:func:`own_record`): pid, host, slurm_job,
+        what, since; any may be missing.
+
+    Returns
+    -------
+    str
+        e.g. ``pid 123 on node1 (SLURM job 45_2, a task) since ...``.
+
+    Examples
+    --------
+    >>> describe({"pid": 123, "host": "node1", "slurm_job": "45_2", "what": "task",
+    ...           "since": "2026-11-27T16:25:53Z"})
+    'pid 123 on node1 (SLURM job 45_2, a task) since 2026-11-27T16:25:53Z'
+    >>> describe({})
+    'another process (its record is not written yet)'
+    """
     if not record:
         return "another process (its record is not written yet)"
     bits = [f"pid {record.get('pid', '?')} on {record.get('host', '?')}"]
@@ -94,7 +155,25 @@ def describe(record):
 
 
 def own_record(what):
-    """The record this process writes into a lock it takes."""
+    """The record this process writes into a lock it takes.
+
+    Parameters
+    ----------
+    what : str
+        The holder's role ("study", "task", "scene", "run pool" ...).
+
+    Returns
+    -------
+    dict
+        pid, host, slurm_job (``ARRAYJOB_TASK`` or the job id; None outside
+        SLURM), what, since (UTC, ISO 8601).
+
+    Examples
+    --------
+    >>> r = own_record("task")
+    >>> r["pid"] == os.getpid() and r["what"] == "task"
+    True
+    """
     job = os.environ.get("SLURM_JOB_ID")
     array, task = os.environ.get("SLURM_ARRAY_JOB_ID"), os.environ.get("SLURM_ARRAY_TASK_ID")
     return {"pid": os.getpid(), "host": socket.gethostname(),
@@ -129,13 +208,40 @@ def _busy(exc):
 
 
 class RunLock:
-    """The exclusive lock on ``path`` (a lock file; :func:`lock_path` of a
-    dump), taken by :meth:`acquire` (or ``with``): non-blocking, it raises
-    :class:`RunBusy` naming the holder when another process holds it, and
-    touches nothing then. Re-entrant within a process (counted).
-    ``what`` names the holder's role in its record ("study", "task", "scene" ...).
-    After :meth:`acquire`, :attr:`took_over` is the record of a holder that
-    died without releasing (a stale lock), or None."""
+    """The exclusive lock on a lock file, taken by :meth:`acquire` (or
+    ``with``): non-blocking, it raises :class:`RunBusy` naming the holder
+    when another process holds it, and touches nothing then. Re-entrant
+    within a process (counted).
+
+    Parameters
+    ----------
+    path : str
+        The lock file (:func:`lock_path` of a dump); made when missing.
+    what : str
+        The holder's role in its record ("study", "task", "scene" ...).
+    subject : str, optional
+        How a refusal names the run (default :func:`describe_lock`).
+
+    Attributes
+    ----------
+    path : str
+        The lock file, absolute.
+    took_over : dict or None
+        After :meth:`acquire`: the record of a holder that died without
+        releasing (a stale lock), or None.
+    acquired : bool
+        True while this object holds the lock.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> folder = tempfile.mkdtemp()
+    >>> with RunLock(os.path.join(folder, "run.lock"), "scene") as lock:
+    ...     holds(lock.path), lock.took_over
+    (True, None)
+    >>> holds(os.path.join(folder, "run.lock"))
+    False
+    """
 
     def __init__(self, path, what="run", subject=None):
         self.path, self.what, self.subject = os.path.abspath(path), what, subject
@@ -143,9 +249,17 @@ class RunLock:
 
     @property
     def key(self):
+        """The lock file's real path (the registry's key)."""
         return os.path.realpath(self.path)
 
     def acquire(self):
+        """Take the lock now, or raise :class:`RunBusy`.
+
+        Returns
+        -------
+        RunLock
+            ``self``.
+        """
         held = _held.get(self.key)
         if held is not None:
             held[1] += 1
@@ -169,6 +283,13 @@ class RunLock:
         return self
 
     def release(self):
+        """Give the lock back (its record emptied) once this process's last
+        holder of it releases; a second call does nothing.
+
+        Returns
+        -------
+        None
+        """
         if not self.acquired:
             return
         self.acquired = False
@@ -193,20 +314,60 @@ class RunLock:
         self.release()
 
     def environment(self):
-        """{INHERITED: ...}: what a child process gets to know that this
-        process holds the lock for it (:func:`inherited`)."""
+        """What a child process gets to know that this process holds the
+        lock for it (:func:`inherited`).
+
+        Returns
+        -------
+        dict
+            ``{INHERITED: JSON {"path": lock file, "pid": this process}}``,
+            to add to the child's environment.
+        """
         return {INHERITED: json.dumps({"path": self.key, "pid": os.getpid()})}
 
 
 def holds(path):
-    """True when this process holds the lock ``path``."""
+    """Whether this process holds a lock.
+
+    Parameters
+    ----------
+    path : str
+        The lock file.
+
+    Returns
+    -------
+    bool
+        True when this process holds it (:class:`RunLock`).
+
+    Examples
+    --------
+    >>> holds("/nonexistent/run.lock")
+    False
+    """
     return os.path.realpath(path) in _held
 
 
 def inherited(path, environ=None):
-    """True when the environment says the parent process holds the lock
-    ``path`` for us, and it does: the variable names this lock file and the
-    parent's pid, and the lock file's record names that pid (its holder)."""
+    """Whether the parent process holds the lock for us.
+
+    Parameters
+    ----------
+    path : str
+        The lock file.
+    environ : dict, optional
+        The environment to read (default ``os.environ``).
+
+    Returns
+    -------
+    bool
+        True when :data:`INHERITED` names this lock file and the parent's
+        pid, and the lock file's record names that pid as its holder.
+
+    Examples
+    --------
+    >>> inherited("/nonexistent/run.lock", environ={})
+    False
+    """
     raw = (os.environ if environ is None else environ).get(INHERITED)
     if not raw:
         return False
@@ -221,10 +382,26 @@ def inherited(path, environ=None):
 
 
 def holder(path):
-    """The record of the process that holds the lock ``path`` now (dict;
-    ``{}`` when its record is not written yet), or None when nobody holds
-    it (no file, or a free lock: a stale record is not a holder). This
-    process's own locks are answered from its registry."""
+    """Who holds a lock now, without taking it (``F_GETLK``).
+
+    Parameters
+    ----------
+    path : str
+        The lock file.
+
+    Returns
+    -------
+    dict or None
+        The holder's record (``{}`` when it has not written it yet), or
+        None when nobody holds it (no file, or a free lock: a stale record
+        is not a holder). This process's own locks are answered from its
+        registry.
+
+    Examples
+    --------
+    >>> holder("/nonexistent/run.lock") is None
+    True
+    """
     key = os.path.realpath(path)
     if key in _held:
         return dict(_held[key][2])
@@ -241,5 +418,21 @@ def holder(path):
 
 
 def run_holder(dump):
-    """:func:`holder` of the run that writes ``dump``."""
+    """Who writes a run now.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    dict or None
+        :func:`holder` of its :func:`lock_path`.
+
+    Examples
+    --------
+    >>> run_holder("/nonexistent/run.h5") is None
+    True
+    """
     return holder(lock_path(dump))

@@ -45,11 +45,24 @@ MAX_RESUMES = 2
 
 @dataclass(frozen=True)
 class RunFiles:
-    """The files of the run that writes ``dump`` (``STEM.h5``)."""
+    """The files of the run that writes a dump (its properties are paths).
+
+    Attributes
+    ----------
+    dump : str
+        The dump, ``STEM.h5``.
+
+    Examples
+    --------
+    >>> f = RunFiles("runs/s/run.h5")
+    >>> f.checkpoint, f.attempts
+    ('runs/s/run.ckpt', 'runs/s/run.attempts.json')
+    """
     dump: str
 
     @property
     def stem(self):
+        """The dump's path without ``.h5``."""
         return os.path.splitext(self.dump)[0]
 
     @property
@@ -64,10 +77,12 @@ class RunFiles:
 
     @property
     def log_csv(self):
+        """The scene's log of the run (CSV rows)."""
         return self.stem + ".log.csv"
 
     @property
     def info(self):
+        """The finished run's summary (JSON)."""
         return self.stem + ".info.json"
 
     @property
@@ -81,14 +96,38 @@ class RunFiles:
         return self.stem + ".attempts.json"
 
     def written_by_an_attempt(self):
-        """Every file an attempt writes, removed when a run starts afresh
-        (logs and the attempts record are kept)."""
+        """Every file an attempt writes, removed when a run starts afresh.
+
+        Returns
+        -------
+        list of str
+            The dump, its parts, the checkpoints, the CSV log, the info and
+            progress records (the logs, the attempts record and the lock
+            are not among them: they are kept).
+        """
         ck = self.checkpoint
         return [self.dump, self.parts, ck, ck + ".prev", ck + ".tmp", self.log_csv, self.info, self.progress]
 
 
 def complete(dump):
-    """True when ``dump`` is a finished, packed dump (attribute complete=1)."""
+    """Whether a dump is finished.
+
+    Parameters
+    ----------
+    dump : str
+        The dump.
+
+    Returns
+    -------
+    bool
+        True when it is a readable HDF5 file with ``complete = 1`` (whether
+        it adds up is :meth:`postproc.schema.DumpReader.verify`'s).
+
+    Examples
+    --------
+    >>> complete("/nonexistent/run.h5")
+    False
+    """
     if not os.path.exists(dump):
         return False
     import h5py
@@ -101,16 +140,47 @@ def complete(dump):
 
 
 def has_checkpoint(dump):
-    """True when the run writing ``dump`` left a checkpoint (STEM.ckpt or
-    STEM.ckpt.prev) to resume from."""
+    """Whether a run left a checkpoint to resume from.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    bool
+        True when ``STEM.ckpt`` or ``STEM.ckpt.prev`` exists.
+
+    Examples
+    --------
+    >>> has_checkpoint("/nonexistent/run.h5")
+    False
+    """
     ck = RunFiles(dump).checkpoint
     return os.path.exists(ck) or os.path.exists(ck + ".prev")
 
 
 def checkpoint_position(dump):
-    """(step, stage) of the newest checkpoint of the run writing ``dump``
-    whose header reads (:func:`yade_scripts.checkpoint.header`; the payload
-    is checked only when the run resumes), or None."""
+    """Where a run would resume.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    tuple of (int, str) or None
+        (step, stage) of the newest checkpoint whose header reads
+        (:func:`yade_scripts.checkpoint.header`; the payload is checked only
+        when the run resumes), or None.
+
+    Examples
+    --------
+    >>> checkpoint_position("/nonexistent/run.h5") is None
+    True
+    """
     from . import checkpoint
 
     for path in checkpoint.candidates(RunFiles(dump).checkpoint):
@@ -123,9 +193,27 @@ def checkpoint_position(dump):
 
 
 def clear_attempt(dump):
-    """Remove what an unfinished attempt at ``dump`` left (its dump, parts,
-    checkpoints, STEM.log.csv, STEM.info.json, progress record); its logs
-    and its attempts record are kept."""
+    """Remove what an unfinished attempt left (:meth:`RunFiles.written_by_an_attempt`);
+    its logs, attempts record and lock are kept. Call it holding the run's
+    lock (:mod:`yade_scripts.runlock`).
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> open(os.path.join(d, "run.log.csv"), "w").close()
+    >>> clear_attempt(os.path.join(d, "run.h5")); os.listdir(d)
+    []
+    """
     for p in RunFiles(dump).written_by_an_attempt():
         if os.path.isdir(p):
             shutil.rmtree(p, ignore_errors=True)
@@ -136,25 +224,57 @@ def clear_attempt(dump):
 # ------------------------------------------------------------ the rule
 @dataclass(frozen=True)
 class Verdict:
-    """What comes after an attempt: ``action`` is "done" (the dump is
-    complete), "resume" (start it again: it resumes from its checkpoint, or
-    starts afresh when there is none) or "failed"; ``reason`` is one line."""
+    """What comes after an attempt (:func:`judge`).
+
+    Attributes
+    ----------
+    action : str
+        "done" (the dump is complete), "resume" (start it again: it resumes
+        from its checkpoint, or starts afresh when there is none) or "failed".
+    reason : str
+        One line.
+    """
     action: str
     reason: str
 
 
 def judge(code, dump, resumes=0, requested=False, max_resumes=MAX_RESUMES):
-    """The rule for the attempt at ``dump`` that ended with exit ``code``.
+    """The one rule for what follows an attempt.
 
-    resumes : how many times the run was already resumed after a crash;
-    requested : True when whatever started the attempt asked it to stop
-    (SIGTERM at a scheduler's time limit, or to resume it on more cores).
+    0 with a complete dump is done (without one it failed); 2 (invalid
+    parameters), 3 (a blow-up, ``max_steps``) and 4 (another writer) failed;
+    a stop that was asked for resumes (from its checkpoint, or afresh when
+    it came before its first one); any other end is a crash, resumed from
+    its checkpoint, or started afresh when it had none, while ``resumes <
+    max_resumes``, else failed.
 
-    0 with a complete dump is done (without one it failed); 3 (a blow-up,
-    ``max_steps``) and 2 (invalid parameters) failed; a stop that was asked
-    for resumes (from its checkpoint, or afresh when it was stopped before
-    its first one); any other end is a crash, resumed from its checkpoint
-    while ``resumes < max_resumes``, else failed."""
+    Parameters
+    ----------
+    code : int
+        The attempt's exit code (negative: killed by that signal).
+    dump : str
+        The run's dump.
+    resumes : int
+        How many times the run was already started again after a crash.
+    requested : bool
+        True when whatever started the attempt asked it to stop (SIGTERM at
+        a scheduler's time limit, or to resume it on more cores).
+    max_resumes : int
+        Crashes started again at most.
+
+    Returns
+    -------
+    Verdict
+
+    Examples
+    --------
+    >>> judge(3, "/nonexistent/run.h5").action
+    'failed'
+    >>> judge(-9, "/nonexistent/run.h5", resumes=0).reason
+    'crashed (exit -9) before its first checkpoint: it starts afresh (retry 1 of at most 2)'
+    >>> judge(75, "/nonexistent/run.h5", requested=True).action
+    'resume'
+    """
     if code == EXIT_DONE:
         if complete(dump):
             return Verdict("done", "complete")
@@ -185,8 +305,25 @@ def judge(code, dump, resumes=0, requested=False, max_resumes=MAX_RESUMES):
 
 # ------------------------------------------------------------ the record
 def read_attempts(dump):
-    """The attempts recorded for the run writing ``dump`` (list of dicts,
-    oldest first; [] when none is recorded or the record is unreadable)."""
+    """The attempts recorded for a run (``STEM.attempts.json``).
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    list of dict
+        Oldest first: attempt, start, end, threads, exit, requested,
+        action, reason, log, host (and slurm_job, job_start, requeued in a
+        SLURM task); [] when none is recorded or the record is unreadable.
+
+    Examples
+    --------
+    >>> read_attempts("/nonexistent/run.h5")
+    []
+    """
     try:
         with open(RunFiles(dump).attempts) as fh:
             data = json.load(fh)
@@ -205,16 +342,54 @@ def _write_attempts(dump, rows):
 
 
 def record_attempt(dump, **entry):
-    """Append one attempt (``entry``: exit, action, reason, threads, ...,
-    with ``end`` set to now, UTC) to the run's record, atomically."""
+    """Append one ended attempt to the run's record, atomically.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+    **entry
+        exit, action, reason, threads ...; ``end`` is set to now (UTC).
+
+    Returns
+    -------
+    list of dict
+        The record as written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> dump = os.path.join(tempfile.mkdtemp(), "run.h5")
+    >>> [r["exit"] for r in record_attempt(dump, exit=0, action="done")]
+    [0]
+    """
     return _write_attempts(dump, read_attempts(dump) + [{**entry, "end": now_utc()}])
 
 
 def start_attempt(dump, **entry):
     """Record an attempt as it starts (``"action": "running"``, no end), so
     that an attempt killed with its launcher (a node failure, SIGKILL)
-    still has its number and a record (:func:`reclaim_killed`). Returns its
-    number (1, 2, ...: one more than the attempts recorded)."""
+    still has its number and a record (:func:`reclaim_killed`).
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+    **entry
+        start, threads, log, host ...
+
+    Returns
+    -------
+    int
+        Its number: one more than the attempts recorded (1, 2, ...).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> dump = os.path.join(tempfile.mkdtemp(), "run.h5")
+    >>> start_attempt(dump, threads=1), start_attempt(dump, threads=2)
+    (1, 2)
+    """
     rows = read_attempts(dump)
     number = len(rows) + 1
     _write_attempts(dump, rows + [{"attempt": number, **entry, "action": "running", "end": None}])
@@ -222,9 +397,31 @@ def start_attempt(dump, **entry):
 
 
 def end_attempt(dump, number, **entry):
-    """Complete the record of attempt ``number`` (:func:`start_attempt`)
-    with how it ended (``entry``; ``end`` is now); appended when it was
-    not recorded at its start."""
+    """Complete the record of an attempt with how it ended.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+    number : int
+        The attempt's number (:func:`start_attempt`); appended when it was
+        not recorded at its start.
+    **entry
+        exit, action, reason, seconds ...; ``end`` is set to now (UTC).
+
+    Returns
+    -------
+    list of dict
+        The record as written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> dump = os.path.join(tempfile.mkdtemp(), "run.h5")
+    >>> k = start_attempt(dump)
+    >>> [(r["attempt"], r["action"]) for r in end_attempt(dump, k, exit=0, action="done")]
+    [(1, 'done')]
+    """
     rows = read_attempts(dump)
     for k, row in enumerate(rows):
         if row.get("attempt") == number and row.get("action") == "running":
@@ -240,9 +437,27 @@ KILLED = ("killed with its launcher, no end recorded (a node failure, SIGKILL, o
 
 def reclaim_killed(dump):
     """Mark every attempt still recorded as running as killed
-    (:data:`KILLED`): call it holding the run's lock
-    (:mod:`yade_scripts.runlock`), when no attempt of the run can be
-    running. Returns the numbers of the attempts marked."""
+    (:data:`KILLED`). Call it holding the run's lock
+    (:mod:`yade_scripts.runlock`), when no attempt of the run can be running.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    list of int
+        The numbers of the attempts marked.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> dump = os.path.join(tempfile.mkdtemp(), "run.h5")
+    >>> k = start_attempt(dump)          # its launcher then dies with it
+    >>> reclaim_killed(dump), read_attempts(dump)[0]["action"]
+    ([1], 'killed')
+    """
     rows = read_attempts(dump)
     killed = [r.get("attempt") for r in rows if r.get("action") == "running"]
     if killed:
@@ -252,8 +467,27 @@ def reclaim_killed(dump):
 
 
 def mark_requeued(dump, note):
-    """Note on the newest attempt that its task requeued itself
-    (``"requeued": note``); :func:`task_requeues` counts them."""
+    """Note on the newest attempt that its SLURM task requeued itself.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+    note : str
+        e.g. "requeue 2 of at most 10", stored as ``"requeued"``.
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> dump = os.path.join(tempfile.mkdtemp(), "run.h5")
+    >>> end_attempt(dump, start_attempt(dump), exit=75, action="resume") and None
+    >>> mark_requeued(dump, "requeue 1 of at most 10"); task_requeues(dump)
+    1
+    """
     rows = read_attempts(dump)
     if rows:
         rows[-1] = {**rows[-1], "requeued": note}
@@ -261,24 +495,61 @@ def mark_requeued(dump, note):
 
 
 def task_requeues(dump):
-    """How many times the run's SLURM task requeued itself (attempts with
-    ``requeued``): a node failure or a preemption, which SLURM requeues on
-    its own, is not among them."""
+    """How many times the run's SLURM task requeued itself.
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    int
+        The attempts marked ``requeued`` (:func:`mark_requeued`): a node
+        failure or a preemption, which SLURM requeues on its own, is not
+        among them.
+
+    Examples
+    --------
+    >>> task_requeues("/nonexistent/run.h5")
+    0
+    """
     return sum(1 for r in read_attempts(dump) if r.get("requeued"))
 
 
 def now_utc():
+    """The time now.
+
+    Returns
+    -------
+    str
+        UTC, ISO 8601 to the second (``2026-11-27T16:25:53Z``).
+
+    Examples
+    --------
+    >>> len(now_utc()), now_utc().endswith("Z")
+    (20, True)
+    """
     return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
 
 
 # ------------------------------------------------------------ the state
 @dataclass(frozen=True)
 class RunState:
-    """What a run folder says about one run. ``state`` is one of
-    "complete", "running", "resumable", "failed", "unfinished", "not
-    started"; ``detail`` is one line; ``step`` the checkpoint's step
-    (resumable, and running when it has one); ``holder`` the lock record
-    of the process that runs it (running)."""
+    """What a run folder says about one run (:func:`state_of`).
+
+    Attributes
+    ----------
+    state : str
+        "complete", "running", "resumable", "failed", "unfinished" or "not
+        started".
+    detail : str
+        One line.
+    step : int or None
+        The checkpoint's step (resumable, and running when it has one).
+    holder : dict or None
+        The lock record of the process that runs it (running).
+    """
     state: str
     detail: str
     step: int | None = None
@@ -286,18 +557,34 @@ class RunState:
 
     @property
     def finished(self):
+        """True for a complete run."""
         return self.state == "complete"
 
 
 def state_of(dump):
-    """The :class:`RunState` of the run writing ``dump``, from its files:
-    a complete dump; a process holding the run's lock (running: named,
-    :mod:`yade_scripts.runlock`); a checkpoint (resumable at its step); the
-    last recorded attempt failed (its reason); files of an attempt without
-    either (unfinished: killed before its first checkpoint, it starts
-    afresh); nothing (not started). Only a dump whose ``complete`` flag is
-    set is complete here; whether it adds up is checked when it is read
-    (:class:`postproc.schema.DumpReader`)."""
+    """What a run's files say about it, in this order: a complete dump; a
+    process holding the run's lock (running: named,
+    :mod:`yade_scripts.runlock`; never this process); a checkpoint
+    (resumable at its step); the last recorded attempt failed (its reason);
+    files of an attempt without either (unfinished: killed before its first
+    checkpoint, it starts afresh); nothing (not started). Only a dump whose
+    ``complete`` flag is set is complete here; whether it adds up is checked
+    when it is read (:class:`postproc.schema.DumpReader`).
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump.
+
+    Returns
+    -------
+    RunState
+
+    Examples
+    --------
+    >>> state_of("/nonexistent/run.h5")
+    RunState(state='not started', detail='not started', step=None, holder=None)
+    """
     from .runlock import describe, holds, lock_path, run_holder
 
     if complete(dump):
