@@ -122,10 +122,37 @@ PRESETS["matched"] = {"common": {}, "polyhedra": {"compaction_friction": 0.58},
 
 
 def resolve(preset, sample, overrides=None):
-    """The full, checked parameter dict of a preset for one sample: the
+    """The full, checked parameters of a preset for one sample: the
     defaults, the sample's (:data:`SAMPLE_DEFAULTS`), the preset's common
-    changes, its changes for ``sample``, then ``overrides`` (dict of name ->
-    value or string). Raises :class:`ConfigError`."""
+    changes, its changes for ``sample``, then ``overrides``.
+
+    Parameters
+    ----------
+    preset : str
+        One of :data:`PRESETS` ("tiny", "small", "default", "intermediate",
+        "paper" ...).
+    sample : {"polyhedra", "spheres"}
+        S1 or S2.
+    overrides : dict, optional
+        name -> value (or its text, as ``--set`` gives it), applied last.
+
+    Returns
+    -------
+    dict
+        Every scene parameter (:mod:`yade_scripts.parameters`), checked by
+        name, type and range; raises
+        :class:`~yade_scripts.parameters.ConfigError` (one line) otherwise.
+
+    Examples
+    --------
+    >>> p = resolve("default", "polyhedra", {"seed": 2})
+    >>> p["n_particles"], p["kappa"], p["friction"], p["seed"]
+    (1000, 3000.0, 0.5, 2)
+    >>> resolve("default", "cubes")
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: sample must be one of ('polyhedra', 'spheres'), got 'cubes'
+    """
     if preset not in PRESETS:
         raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")
     if sample not in SAMPLES:

@@ -165,7 +165,33 @@ def estimate(params, kernel_path="plugin"):
     polyhedra run's own draw may be up to 1.21 x its reference's); the
     compaction steps grow as (N / 1000)^COMPACTION_N_EXPONENT above 1000
     grains (measured at 5000 for both samples, the time step's growth
-    included). The kernel's speed-up on more threads is not in the model."""
+    included). The kernel's speed-up on more threads is not in the model.
+
+    Parameters
+    ----------
+    params : dict
+        A run's parameters (:func:`yade_scripts.presets.resolve`): sample,
+        n_particles, kappa, inertial_number, compaction_inertial_number,
+        final_strain, safety, placement.
+    kernel_path : {"plugin", "pyrunner"}
+        The polyhedra kernel stepped inside YADE, or from a PyRunner
+        (PYRUNNER_COST x more per contact-step).
+
+    Returns
+    -------
+    dict
+        compaction_steps, shear_steps, steps, contacts, contact_steps,
+        us_per_contact_step (µs on one quiet core), core_hours.
+
+    Examples
+    --------
+    >>> from yade_scripts.presets import resolve
+    >>> round(estimate(resolve("default", "polyhedra"))["core_hours"], 2)
+    0.17
+    >>> e = estimate(resolve("paper", "polyhedra"))
+    >>> round(e["core_hours"]), round(estimate(resolve("paper", "polyhedra"), "pyrunner")["core_hours"])
+    (71, 107)
+    """
     s = params["sample"]
     r = REFERENCE[s]
     # steps per unit of simulated time, relative to r's: 1 / dt, dt = safety x dt_crit ~ kappa^-1/2
