@@ -56,9 +56,33 @@ class LibraryError(ValueError):
 
 def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by="python -m shapes build",
                   extra=None):
-    """Write the list of Polyhedron ``shapes`` atomically (temporary file +
-    rename). name : the library's name (default: the file's stem);
-    extra : optional dict of per-shape datasets (S,) (module docstring)."""
+    """Write a shape library atomically (temporary file + rename).
+
+    Parameters
+    ----------
+    path : str
+        The file to write.
+    shapes : list of shapes.polyhedron.Polyhedron
+        In the normalised frame, d = 1 (:func:`shapes.polyhedron.normalise`).
+    seed : int
+        The generator's seed (-1 for imported stones).
+    recipe, tolerances : dict
+        How the shapes were made and checked (stored as JSON).
+    name : str, optional
+        The library's name (default: the file's stem).
+    created_by : str
+        The command that made it.
+    extra : dict, optional
+        Per-shape datasets, name -> (S,) array (module docstring).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    See :class:`ShapeLibrary`.
+    """
     tmp = str(path) + ".tmp"
     name = name or os.path.splitext(os.path.basename(str(path)))[0]
     with h5py.File(tmp, "w") as f:
@@ -89,8 +113,40 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
 
 
 class ShapeLibrary:
-    """Read-only access to a library file; ``lib[s]`` gives (vertices,
-    triangles, triangle_face) of shape s (d = 1)."""
+    """Read-only access to a library file (module docstring): ``lib[s]``
+    gives shape s, and ``lib.volume``, ``lib.inertia``, ``lib.dims`` ...
+    every dataset of the file, one row per shape.
+
+    Parameters
+    ----------
+    path : str
+        The library (``make shapes`` builds ``shapes/library.h5``;
+        ``python -m shapes import`` makes one from scanned stones). A
+        missing or unreadable file raises :class:`LibraryError` (one line).
+
+    Attributes
+    ----------
+    path : str
+        The file.
+    attrs : dict
+        Its attributes (seed, n_shapes, recipe, tolerances, name, ...).
+    data : dict
+        Its datasets, name -> array.
+
+    Examples
+    --------
+    >>> import itertools, tempfile
+    >>> from shapes.polyhedron import polyhedron_from_points
+    >>> box = polyhedron_from_points(np.array(list(itertools.product((0, 1), (0, 1), (0, 2))), float))
+    >>> path = os.path.join(tempfile.mkdtemp(), "box.h5")
+    >>> write_library(path, [box], seed=0, recipe={}, tolerances={})
+    >>> lib = ShapeLibrary(path)
+    >>> vertices, triangles, faces = lib[0]                 # d = 1: 2 x the largest centre-vertex distance
+    >>> len(lib), vertices.shape, triangles.shape, int(faces.max()) + 1, lib.name
+    (1, (8, 3), (12, 3), 6, 'box')
+    >>> lib.dims[0].round(4)                                 # L >= I >= S along the principal axes
+    array([0.8165, 0.4082, 0.4082])
+    """
 
     def __init__(self, path):
         if not os.path.exists(path):
@@ -108,7 +164,7 @@ class ShapeLibrary:
     @property
     def name(self):
         """The library's name: its ``name`` attribute, else (older files)
-        what built it."""
+        what built it (str)."""
         return str(self.attrs.get("name") or f"generated, seed {self.attrs.get('seed')}")
 
     def __len__(self):

@@ -71,7 +71,7 @@ def test_the_examples_run(module):
 
 #: entry points of the other modules a user calls, held to the same rule one
 #: by one (their modules are not yet all written that way)
-ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve")
+ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve", "shapes.library.ShapeLibrary")
 
 
 @pytest.mark.parametrize("dotted", ENTRY_POINTS)
@@ -79,7 +79,8 @@ def test_entry_points_have_numpydoc_and_a_running_example(dotted):
     module, name = dotted.rsplit(".", 1)
     mod = importlib.import_module(module)
     obj = getattr(mod, name)
-    assert {"Parameters", "Returns", "Examples"} <= sections(obj.__doc__), dotted
+    need = {"Parameters", "Attributes", "Examples"} if inspect.isclass(obj) else {"Parameters", "Returns", "Examples"}
+    assert need <= sections(obj.__doc__), dotted
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS)
     out = io.StringIO()
     tests = [t for t in doctest.DocTestFinder().find(obj, dotted, globs=vars(mod)) if t.examples]
