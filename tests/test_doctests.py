@@ -71,7 +71,8 @@ def test_the_examples_run(module):
 
 #: entry points of the other modules a user calls, held to the same rule one
 #: by one (their modules are not yet all written that way)
-ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve", "shapes.library.ShapeLibrary")
+ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve", "shapes.library.ShapeLibrary",
+                "shapes.engine.ContactEngine")
 
 
 @pytest.mark.parametrize("dotted", ENTRY_POINTS)
