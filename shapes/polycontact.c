@@ -43,7 +43,9 @@
 #define PC_DEGENERATE_NORMAL 1   /* |S_A| ~ 0: normal from the centres (or z) */
 #define PC_WORKSPACE 2           /* workspace overflow (should not happen)    */
 #define PC_HASH 256              /* slots of a cut's crossing-edge table (a power of two) */
-#define PC_PARALLEL_MIN 400      /* pairs + body-wall tests below which a step runs on one thread */
+#define PC_PARALLEL_MIN 400      /* pairs + body-wall tests below which a step runs on one thread
+                                  * (POLYCONTACT_PARALLEL_MIN overrides it when an engine is made:
+                                  * the tests run tiny scenes on the parallel path) */
 
 /* ------------------------------------------------------------------ small vector helpers */
 static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -1323,6 +1325,7 @@ typedef struct {
     double *motion;            /* per body: sum over steps of a bound on any vertex's displacement (m) */
     double *spin;              /* per body: rotation vector of the last step (small angles) */
     int fast;                  /* 1: proofs of separation, culled clipping, shadows on demand; 0: the plain path */
+    int parallel_min;          /* pairs + body-wall tests below which a step runs on one thread */
     int shadows_ready;         /* the touching contacts' shadows belong to the last step */
     int *voffb, *toffb;        /* offsets into rv (vertices) and rn (triangles) per body */
     int have_prev;
@@ -1341,6 +1344,15 @@ typedef struct {
 } engine_t;
 
 void pc_engine_free(engine_t *E);
+
+/* PC_PARALLEL_MIN, or POLYCONTACT_PARALLEL_MIN when it is a number >= 0 */
+static int parallel_min_from_env(void) {
+    const char *s = getenv("POLYCONTACT_PARALLEL_MIN");
+    if (!s || !*s) return PC_PARALLEL_MIN;
+    char *end;
+    long v = strtol(s, &end, 10);
+    return (*end == 0 && v >= 0 && v < 1000000000L) ? (int)v : PC_PARALLEL_MIN;
+}
 
 engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *toff, const int *t,
                         int nb, const int *shape, const double *size, int nw, const int *wall_axis,
@@ -1371,6 +1383,7 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     nthreads = 1;
 #endif
     E->nthreads = nthreads;
+    E->parallel_min = parallel_min_from_env();
     E->R = malloc(sizeof(double) * 9 * nb); E->Rprev = malloc(sizeof(double) * 9 * nb);
     E->x = malloc(sizeof(double) * 3 * nb); E->xprev = malloc(sizeof(double) * 3 * nb);
     E->xbuild = malloc(sizeof(double) * 3 * nb);
@@ -1838,7 +1851,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
     /* Threads only when a step has enough work: a parallel region costs a
      * wake-up and a barrier (about 10-50 us with OMP_WAIT_POLICY=PASSIVE),
      * more than a small scene's whole step. */
-    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
+    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= E->parallel_min;
     pose_all(E, par, 1);
     /* neighbour list: rebuild when a body moved more than skin/2 */
     int need = E->npairs == 0 && E->nbuild == 0;
@@ -1850,7 +1863,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
     if (need) { int e = rebuild(E); if (e) return e; }
     int cnt[PC_NSTAT];
     memset(cnt, 0, sizeof(cnt));
-    par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
+    par = E->nthreads > 1 && (E->npairs + nb * nw) >= E->parallel_min;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(E->nthreads) if (par)
 #endif
@@ -1930,7 +1943,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
 static void ensure_shadows(engine_t *E) {
     if (E->shadows_ready) return;
     int nb = E->nb, nw = E->nw;
-    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= PC_PARALLEL_MIN;
+    int par = E->nthreads > 1 && (E->npairs + nb * nw) >= E->parallel_min;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(E->nthreads) if (par)
 #endif

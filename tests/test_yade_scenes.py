@@ -362,6 +362,54 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
     assert paths[0]["touch_steps"] == paths[1]["touch_steps"] > 0
 
 
+
+def test_the_thread_count_and_its_change_mid_run_leave_the_run_bit_for_bit(tiny_runs, tmp_path):
+    """The pool widens a running S1 from one kernel thread to two (a stop
+    at a checkpoint, a resume on more threads). The tiny S1, with every step
+    forced onto the kernel's parallel path (POLYCONTACT_PARALLEL_MIN=0; a
+    real step goes parallel from 400 pair and wall tests), run on one
+    thread, stopped by SIGTERM mid-run and resumed on two: every dataset of
+    its dump equals, to the bit, the fixture's run on one thread throughout.
+    The kernel sums each body's forces serially in the pair list's order,
+    whatever thread computed a pair."""
+    first = tiny_runs["polyhedra"]
+    d = tmp_path / "switched"
+    d.mkdir()
+    for name in ("triaxial.py", "params.json", "table.txt", "shapes.h5"):
+        if (first / name).exists():
+            shutil.copy(first / name, d / name)
+    shutil.copytree(first / "pkg", d / "pkg", ignore=shutil.ignore_patterns("__pycache__"))
+    _set_params(d, kernel_threads=0)                 # YADE's -j: 1, then 2
+    env = {**yade_env(str(d)), "POLYCONTACT_PARALLEL_MIN": "0"}
+    p = subprocess.Popen([YADE, "-j1", "-n", "-x", "triaxial.py"], cwd=d, env=env, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL)
+    t0 = time.time()
+    while True:            # well into the compaction (the tiny S1 takes ~15 000 steps): the log's rows say
+        try:
+            rows = (d / "run.log.csv").read_text().splitlines()
+            step = int(rows[-1].split(",")[0]) if len(rows) > 1 else 0
+        except (OSError, ValueError):
+            step = 0
+        if step >= 2000 or p.poll() is not None:
+            break
+        assert time.time() - t0 < 300
+        time.sleep(0.05)
+    p.send_signal(signal.SIGTERM)
+    out = p.communicate(timeout=300)[0]
+    assert p.returncode == 75, out[-3000:]
+    again = subprocess.run([YADE, "-j2", "-n", "-x", "triaxial.py"], cwd=d, env=env, capture_output=True,
+                           text=True, timeout=600, stdin=subprocess.DEVNULL)
+    assert again.returncode == 0 and "resumed from run.ckpt" in again.stdout, again.stdout[-3000:]
+    info = json.loads((d / "run.info.json").read_text())
+    assert info["kernel"]["threads"] == 2 and len(info["resumes"]) == 1
+    with h5py.File(first / "run.h5", "r") as fa, h5py.File(d / "run.h5", "r") as fb:
+        names = []
+        fa.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
+        assert len(names) > 20
+        for n in names:
+            assert fa[n].dtype == fb[n].dtype and np.array_equal(fa[n][()], fb[n][()]), n
+
+
 # ------------------------------------------------------------ failures
 def _set_params(folder, **values):
     path = folder / "triaxial.py"
