@@ -496,6 +496,19 @@ def main(argv=None):
         return 1 if failed else 0
     if not args.out:
         ap.error("--out is required (unless --collect)")
+    try:                            # checked before the folder is made: a refused study makes nothing
+        if args.ensemble < 1:
+            raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
+        if args.ensemble > 1 and (args.jobs < 1 or args.job_threads < 1):
+            raise ConfigError(f"--jobs and --job-threads must be >= 1, got {args.jobs} and {args.job_threads}")
+        overrides = parse_overrides(args.set)
+        params = [resolve(args.preset, s, overrides) for s in SAMPLES]
+        # at once: both samples (one seed), or --jobs runs of the largest (ensembles)
+        check_memory(params if args.ensemble == 1 else
+                     [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
+    except ConfigError as exc:
+        print(f"study: error: {exc}", file=sys.stderr)
+        return 2
     try:
         os.makedirs(args.out, exist_ok=True)
         lock = RunLock(os.path.join(args.out, "study.lock"), "study").acquire()
@@ -506,27 +519,18 @@ def main(argv=None):
         print(f"study: error: {args.out}: {exc.strerror or exc}", file=sys.stderr)
         return 2
     try:
-        return _study(args)
+        return _study(args, overrides)
     finally:
         lock.release()
 
 
-def _study(args):
-    """The study of ``main``'s parsed ``args``, its folder's lock held."""
+def _study(args, overrides):
+    """The study of ``main``'s parsed ``args`` (checked), its folder's lock held."""
     try:
-        if args.ensemble < 1:
-            raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
-        overrides = parse_overrides(args.set)
-        params = [resolve(args.preset, s, overrides) for s in SAMPLES]
-        # at once: both samples (one seed), or --jobs runs of the largest (ensembles)
-        check_memory(params if args.ensemble == 1 else
-                     [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
         if args.ensemble == 1:
             codes = run_samples(args.out, args.preset, overrides, args.library)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
-            if args.jobs < 1 or args.job_threads < 1:
-                raise ConfigError(f"--jobs and --job-threads must be >= 1, got {args.jobs} and {args.job_threads}")
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
                                 job_threads={"polyhedra": args.job_threads})
     except ConfigError as exc:
