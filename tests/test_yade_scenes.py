@@ -318,6 +318,17 @@ def test_postproc_reads_both_dumps(tiny_runs, tmp_path):
 
 
 # ------------------------------------------------------------ same seed, same numbers
+def copy_inputs(run, dest, *ignore):
+    """A new run folder ``dest`` with the inputs of the run folder ``run``
+    (scene, parameters, table, shapes, ``pkg/`` without ``ignore``)."""
+    dest.mkdir()
+    for name in ("triaxial.py", "params.json", "table.txt", "shapes.h5"):
+        if (run / name).exists():
+            shutil.copy(run / name, dest / name)
+    shutil.copytree(run / "pkg", dest / "pkg", ignore=shutil.ignore_patterns(*ignore))
+    return dest
+
+
 def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
     """The tiny S1 run (kernel, one thread) run again from a copy of its
     inputs: every snapshot's positions, orientations, wall forces, contact
@@ -330,12 +341,7 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
     from yade_scripts import yadeplugin
 
     first = tiny_runs["polyhedra"]
-    again = tmp_path / "again"
-    again.mkdir()
-    for name in ("triaxial.py", "params.json", "table.txt", "shapes.h5"):
-        if (first / name).exists():
-            shutil.copy(first / name, again / name)
-    shutil.copytree(first / "pkg", again / "pkg", ignore=shutil.ignore_patterns("_build", "__pycache__"))
+    again = copy_inputs(first, tmp_path / "again", "_build", "__pycache__")     # no plugin build: the PyRunner
     res = run_yade(["triaxial.py"], cwd=again, timeout=900)
     assert res.returncode == 0, res.stdout[-3000:] + res.stderr[-2000:]
     with DumpReader(str(first / "run.h5")) as a, DumpReader(str(again / "run.h5")) as b:
@@ -376,12 +382,7 @@ def test_the_thread_count_and_its_change_mid_run_leave_the_run_bit_for_bit(tiny_
     The kernel sums each body's forces serially in the pair list's order,
     whatever thread computed a pair."""
     first = tiny_runs["polyhedra"]
-    d = tmp_path / "switched"
-    d.mkdir()
-    for name in ("triaxial.py", "params.json", "table.txt", "shapes.h5"):
-        if (first / name).exists():
-            shutil.copy(first / name, d / name)
-    shutil.copytree(first / "pkg", d / "pkg", ignore=shutil.ignore_patterns("__pycache__"))
+    d = copy_inputs(first, tmp_path / "switched", "__pycache__")               # the plugin's build kept
     _set_params(d, kernel_threads=0)                 # YADE's -j: 1, then 2
     env = {**yade_env(str(d)), "POLYCONTACT_PARALLEL_MIN": "0"}
     p = subprocess.Popen([YADE, "-j1", "-n", "-x", "triaxial.py"], cwd=d, env=env, stdout=subprocess.PIPE,
