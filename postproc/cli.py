@@ -81,6 +81,31 @@ def main(argv=None):
     sz = sub.add_parser("size-front", help="the study's quantities against the number of grains (several studies)")
     sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
     sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
+    lb = sub.add_parser("leaning-blocks", help="how the scatter of claim 6's leanings scales with the number of "
+                                               "grains, from blocks of each packing (several studies)")
+    lb.add_argument("study", nargs="+", help="study folders of 'make study', any numbers of grains")
+    lb.add_argument("--types", nargs="+", default=["points", "lmgc90"],
+                    help="the counts whose analyses are used (default points lmgc90)")
+    lb.add_argument("--grids", nargs="+", type=int, default=[1, 2, 3, 4],
+                    help="blocks per axis, 1 (the whole packing) included (default 1 2 3 4)")
+    lb.add_argument("--min-grains", type=float, default=25.0,
+                    help="least mean number of grains per block of a grid (default 25)")
+    lb.add_argument("--out", default="runs/leaning-blocks",
+                    help="output folder: blocks.csv, blocks.md, cache/ (default runs/leaning-blocks)")
+    sa = sub.add_parser("size-at-strain", help="the study's quantities by number of grains, compared at the "
+                                               "same axial strain")
+    sa.add_argument("folder", nargs="+", help="folders searched for <sample>-seed<K>/summary.csv (a study, "
+                                              "or the --out of postproc analyze)")
+    sa.add_argument("--sample", default="polyhedra", choices=("polyhedra", "spheres"))
+    sa.add_argument("--bins", type=float, nargs="+", default=[0.04, 0.075, 0.105, 0.145],
+                    help="increasing edges of eps_1 (default 0.04 0.075 0.105 0.145)")
+    sa.add_argument("--out", default="runs/size-at-strain",
+                    help="output folder: size-at-strain.csv and .md (default runs/size-at-strain)")
+    af = sub.add_parser("analysis-front", help="speed against error of the analysis estimators on synthetic "
+                                               "contact sets with known anisotropies")
+    af.add_argument("--out", default="runs/front-analysis",
+                    help="output folder: analysis_front.csv and .png (default runs/front-analysis)")
+    af.add_argument("--reps", type=int, default=40, help="synthetic sets per sample size (default 40)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -123,6 +148,33 @@ def main(argv=None):
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
         print(f"postproc: size front written to {path} (and size-front.png)", file=sys.stderr)
+        return 0
+    if args.cmd == "leaning-blocks":
+        from .study.leaning import write_blocks
+
+        try:
+            text = write_blocks(args.study, args.out, types=args.types, grids=args.grids,
+                                min_grains=args.min_grains)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
+        return 0
+    if args.cmd == "size-at-strain":
+        from .study.sizestrain import write_size_at_strain
+
+        try:
+            text = write_size_at_strain(args.folder, args.out, sample=args.sample, bins=args.bins)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
+        return 0
+    if args.cmd == "analysis-front":
+        from .study.front import ANALYSIS_FRONT_COLUMNS, write_analysis_front
+
+        table = write_analysis_front(args.out, reps=args.reps)
+        print(table[list(ANALYSIS_FRONT_COLUMNS)].to_string(index=False, float_format=lambda x: f"{x:.3g}"))
         return 0
     if args.cmd == "export-vtk":
 

@@ -213,3 +213,27 @@ def test_synthetic_subcommand(tmp_path):
     path = str(tmp_path / "s.h5")
     assert main(["synthetic", path, "--contacts", "500", "--snapshots", "2"]) == 0
     assert main(["analyze", path, "--out", str(tmp_path / "o")]) == 0
+
+
+#: the subcommands of the study's own analyses (postproc.study), each with its --help
+STUDY_COMMANDS = ("leaning-blocks", "size-at-strain", "analysis-front")
+
+
+@pytest.mark.parametrize("cmd", STUDY_COMMANDS)
+def test_study_subcommand_help(cmd, capsys):
+    with pytest.raises(SystemExit) as exc:
+        main([cmd, "--help"])
+    assert exc.value.code == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"usage: postproc {cmd}") and "--out" in out
+
+
+def test_analysis_front_subcommand(tmp_path, capsys):
+    """A small front (2 sets per size, the default sizes): the CSV, the
+    figure and the printed table."""
+    out = tmp_path / "af"
+    assert main(["analysis-front", "--out", str(out), "--reps", "2"]) == 0
+    table = pd.read_csv(out / "analysis_front.csv")
+    assert set(table["estimator"]) == {"tensors", "fit-6", "fit-9", "fit-18", "fit-36"}
+    assert (table["rms_max"] > 0).all() and (out / "analysis_front.png").stat().st_size > 0
+    assert "rms_max" in capsys.readouterr().out

@@ -1,15 +1,9 @@
-"""benchmarks/leaning_blocks.py: block leanings and the scaling fit, checked
-on hand-built contact sets with exact values."""
-import importlib.util
-import os
-
+"""postproc.study.leaning (``postproc leaning-blocks``): block leanings and
+the scaling fit, checked on hand-built contact sets with exact values."""
 import numpy as np
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-spec = importlib.util.spec_from_file_location("leaning_blocks", os.path.join(ROOT, "benchmarks", "leaning_blocks.py"))
-lb = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(lb)
+from postproc.study import leaning as lb
 
 
 def contacts():
@@ -41,3 +35,16 @@ def test_slope_recovers_an_exact_power_law():
     b, lo, hi = lb.slope(pts)
     assert b == pytest.approx(-0.5) and lo <= -0.5 <= hi
     assert np.isnan(lb.slope(pts[:2])[0])
+
+
+def test_the_command_says_what_is_missing_in_one_line(tmp_path, capsys):
+    """``postproc leaning-blocks`` on a folder without a study, and with a
+    grid list that leaves out the whole packing: exit 2, one line each."""
+    from postproc.cli import main
+
+    assert main(["leaning-blocks", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no complete S1 run" in err
+    assert main(["leaning-blocks", str(tmp_path), "--grids", "2", "3"]) == 2
+    assert "include 1" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()

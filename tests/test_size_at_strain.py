@@ -1,23 +1,21 @@
-"""benchmarks/size_at_strain.py: per-seed bin means and the seeds' mean and
-standard deviation, checked on hand-made summaries with exact values."""
-import importlib.util
+"""postproc.study.sizestrain (``postproc size-at-strain``): per-seed bin
+means and the seeds' mean and standard deviation, checked on hand-made
+summaries with exact values, through the command line."""
 import os
 
 import numpy as np
 import pandas as pd
 import pytest
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-spec = importlib.util.spec_from_file_location("size_at_strain", os.path.join(ROOT, "benchmarks", "size_at_strain.py"))
-sas = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(sas)
+from postproc.cli import main
+from postproc.study.sizestrain import QUANTITIES
 
 
 def write(folder, n, values, eps=(0.0, 0.05, 0.06, 0.09, 0.2)):
     """A summary.csv: an isotropic snapshot, then shear snapshots at eps with q/p = values."""
     os.makedirs(folder)
     d = pd.DataFrame({"stage": ["isotropic"] + ["shear"] * (len(eps) - 1), "eps_1": eps, "n_particles": n})
-    for q in sas.QUANTITIES:
+    for q in QUANTITIES:
         d[q] = 0.0
     d["q_over_p"] = values
     d.to_csv(os.path.join(folder, "summary.csv"), index=False)
@@ -39,7 +37,7 @@ def sizes(tmp_path):
 def test_bins_seeds_and_tables(sizes):
     tmp_path = sizes
     out = tmp_path / "out"
-    assert sas.main([str(tmp_path / "a"), str(tmp_path / "b"), "--bins", "0.04", "0.075", "0.1",
+    assert main(["size-at-strain", str(tmp_path / "a"), str(tmp_path / "b"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
     per = pd.read_csv(out / "size-at-strain.csv")
     assert len(per) == 6 and set(per["N"]) == {1000, 5000}
@@ -52,14 +50,14 @@ def test_bins_seeds_and_tables(sizes):
 
 
 def test_bad_input_is_one_line(tmp_path, capsys):
-    assert sas.main([str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert main(["size-at-strain", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "no polyhedra-seed<K>/summary.csv under it" in capsys.readouterr().err
     (tmp_path / "x" / "polyhedra-seed1").mkdir(parents=True)
     (tmp_path / "x" / "polyhedra-seed1" / "summary.csv").write_text("step,eps_1\n1,0.1\n")
-    assert sas.main([str(tmp_path / "x"), "--out", str(tmp_path / "o")]) == 2
+    assert main(["size-at-strain", str(tmp_path / "x"), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "not a postproc analyze summary" in err
-    assert sas.main([str(tmp_path / "x"), "--bins", "0.1", "0.05"]) == 2
+    assert main(["size-at-strain", str(tmp_path / "x"), "--bins", "0.1", "0.05"]) == 2
 
 
 def test_difference_is_welch_over_the_seeds(sizes):
@@ -69,7 +67,7 @@ def test_difference_is_welch_over_the_seeds(sizes):
 
     tmp_path = sizes
     out = tmp_path / "out"
-    assert sas.main([str(tmp_path / "a"), str(tmp_path / "c"), "--bins", "0.04", "0.075", "0.1",
+    assert main(["size-at-strain", str(tmp_path / "a"), str(tmp_path / "c"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
     x, y = np.array([0.10, 0.14]), np.array([0.35, 0.37])       # each seed's mean over the bin
     v1, v2 = x.var(ddof=1) / 2, y.var(ddof=1) / 2

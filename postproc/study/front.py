@@ -32,7 +32,7 @@ from .report import REFERENCE, comparison_table
 from ..angular import angular_functions, fit_harmonics
 from ..errors import InputError
 from ..fabric import anisotropies
-from ..plots import plot_front, plot_front_trends
+from ..plots import plot_analysis_front, plot_front, plot_front_trends
 from ..schema import DumpReader
 from ..statistics import difference, Estimate, plateau_estimate, plateau_estimate as pe, steady_indices
 from ..synthetic import harmonic_contacts
@@ -486,3 +486,36 @@ def analysis_front(sizes=(100, 300, 1000, 3000, 10000), bins=(6, 9, 18, 36), rep
             row["rms_max"] = max(row["rms_" + k] for k in keys)
             rows.append(row)
     return pd.DataFrame(rows)
+
+
+#: the columns of the analysis front that ``postproc analysis-front`` prints
+ANALYSIS_FRONT_COLUMNS = ("estimator", "n", "seconds", "rms_a", "rms_a_l", "rms_a_n", "rms_a_t", "rms_max",
+                          "bias_a_n", "bias_a_t")
+
+
+def write_analysis_front(out="runs/front-analysis", reps=40):
+    """The analysis front (:func:`analysis_front`, its default sizes, bins
+    and truth (a, a_l, a_n, a_t) = (0.3, 0.1, 0.5, 0.2)) written to a
+    folder: ``analysis_front.csv`` (every column) and ``analysis_front.png``
+    (:func:`postproc.plots.plot_analysis_front`). ``make front`` runs it as
+    ``postproc analysis-front``.
+
+    Parameters
+    ----------
+    out : str
+        Output folder (made if missing).
+    reps : int
+        Synthetic sets per sample size.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The table of :func:`analysis_front`: per estimator and number of
+        contacts n, the seconds per set and the RMS error and bias of each
+        anisotropy (dimensionless).
+    """
+    os.makedirs(out, exist_ok=True)
+    table = analysis_front(reps=reps)
+    table.to_csv(os.path.join(out, "analysis_front.csv"), index=False)
+    plot_analysis_front(table, os.path.join(out, "analysis_front.png"))
+    return table

@@ -2,8 +2,10 @@
 axial strain: for runs that have not reached their steady state yet (a
 5000-grain study under way), or to see where along the shear two sizes part.
 
-    python benchmarks/size_at_strain.py FOLDER [FOLDER ...] [--sample polyhedra] \
+    postproc size-at-strain FOLDER [FOLDER ...] [--sample polyhedra] \
         [--bins 0.04 0.075 0.105 0.145] [--out runs/size-at-strain]
+
+(:func:`write_size_at_strain`.)
 
 Each FOLDER is searched (recursively) for the per-seed analyses of one
 sample: folders named ``...<sample>-seed<K>`` (a study's
@@ -22,25 +24,48 @@ bins are of eps_1 (axial strain, compression positive), not eps_q. Writes
 OUT/size-at-strain.csv (one row per seed and bin) and OUT/size-at-strain.md
 (one table per quantity: rows N, columns the bins).
 """
-import argparse
+from __future__ import annotations
+
 import glob
 import os
 import re
-import sys
 
 import numpy as np
 import pandas as pd
 
-from postproc.statistics import difference, plateau_estimate
+from ..errors import InputError
+from ..statistics import difference, plateau_estimate
 
 QUANTITIES = ("q_over_p", "a", "a_l", "a_n", "a_t", "sff_residual", "z", "ct_frac_VF", "ct_frac_EE",
               "ct_frac_FF", "ct_frac_simple", "ct_frac_double")
 
 
 def per_seed_bins(paths, bins, quantities=QUANTITIES):
-    """One row per (summary.csv, bin): N, seed folder, bin, snapshots, and
-    the mean of each quantity over that seed's shear snapshots in the bin.
-    ``bins`` (B+1,) increasing eps_1 edges."""
+    """Each seed's mean of each quantity over its shear snapshots in each
+    bin of eps_1.
+
+    Parameters
+    ----------
+    paths : list of str
+        summary.csv files of ``postproc analyze``, one per seed.
+    bins : ndarray, shape (B + 1,)
+        Increasing edges of eps_1 (axial strain, compression positive,
+        dimensionless); bin [lo, hi).
+    quantities : sequence of str
+        Summary columns to average.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per (summary.csv, bin) holding a shear snapshot: ``N`` (the
+        summary's n_particles), ``seed`` (the summary's folder name),
+        ``bin`` ("lo-hi"), ``snapshots``, and the mean of each quantity.
+
+    Raises
+    ------
+    ValueError
+        A summary lacks a column (not a ``postproc analyze`` summary).
+    """
     rows = []
     for path in paths:
         d = pd.read_csv(path)
@@ -58,8 +83,23 @@ def per_seed_bins(paths, bins, quantities=QUANTITIES):
 
 
 def differences(per_seed, q):
-    """{(N1, N2, bin): Estimate of N2's mean minus N1's} for consecutive N
-    (Welch's interval over the seeds' bin means, postproc.statistics)."""
+    """Between consecutive numbers of grains, the difference of one
+    quantity's seed means per bin.
+
+    Parameters
+    ----------
+    per_seed : pandas.DataFrame
+        The rows of :func:`per_seed_bins`.
+    q : str
+        The quantity (a column of ``per_seed``).
+
+    Returns
+    -------
+    dict
+        {(N1, N2, bin): :class:`postproc.statistics.Estimate` of N2's mean
+        minus N1's}, Welch's 95 % interval over the seeds' bin means, for
+        consecutive N with two seeds or more each.
+    """
     ns = sorted(per_seed["N"].unique())
     out = {}
     for n1, n2 in zip(ns[:-1], ns[1:]):
@@ -71,9 +111,22 @@ def differences(per_seed, q):
 
 
 def tables(per_seed, quantities=QUANTITIES):
-    """Markdown: per quantity, rows N, columns the bins, 'mean ± sd (n)' over
-    seeds; then a row per pair of consecutive N (two seeds or more each):
-    the difference with its 95 % Welch interval."""
+    """The tables of size-at-strain.md.
+
+    Parameters
+    ----------
+    per_seed : pandas.DataFrame
+        The rows of :func:`per_seed_bins`.
+    quantities : sequence of str
+        One table each.
+
+    Returns
+    -------
+    str
+        Markdown: per quantity, rows N, columns the bins, 'mean ± sd (n)'
+        over seeds; then a row per pair of consecutive N (two seeds or more
+        each): the difference with its 95 % Welch interval.
+    """
     out = []
     for q in quantities:
         cell = per_seed.groupby(["N", "bin"])[q].agg(
@@ -91,45 +144,72 @@ def tables(per_seed, quantities=QUANTITIES):
 
 
 def find_summaries(folder, sample):
+    """The per-seed summaries of one sample under a folder.
+
+    Parameters
+    ----------
+    folder : str
+        Searched recursively.
+    sample : str
+        ``polyhedra`` or ``spheres``.
+
+    Returns
+    -------
+    list of str
+        Sorted paths of every ``.../<sample>-seed<K>/summary.csv`` (another
+        count's analysis, ``...-seed<K>-lmgc90``, is left out).
+    """
     pat = re.compile(rf"{sample}-seed\d+$")
     return sorted(p for p in glob.glob(os.path.join(folder, "**", "summary.csv"), recursive=True)
                   if pat.search(os.path.basename(os.path.dirname(p))))
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("folders", nargs="+")
-    ap.add_argument("--sample", default="polyhedra", choices=("polyhedra", "spheres"))
-    ap.add_argument("--bins", type=float, nargs="+", default=[0.04, 0.075, 0.105, 0.145])
-    ap.add_argument("--out", default="runs/size-at-strain")
-    args = ap.parse_args(argv)
-    bins = np.asarray(args.bins)
+def write_size_at_strain(folders, out="runs/size-at-strain", sample="polyhedra",
+                         bins=(0.04, 0.075, 0.105, 0.145)):
+    """The quantities of one sample by number of grains and bin of eps_1:
+    writes OUT/size-at-strain.csv (:func:`per_seed_bins`) and
+    OUT/size-at-strain.md (:func:`tables`).
+
+    Parameters
+    ----------
+    folders : list of str
+        Each searched for per-seed analyses (:func:`find_summaries`).
+    out : str
+        Output folder.
+    sample : str
+        ``polyhedra`` or ``spheres``.
+    bins : sequence of float
+        Two or more increasing edges of eps_1.
+
+    Returns
+    -------
+    str
+        The tables (size-at-strain.md without its title).
+
+    Raises
+    ------
+    InputError
+        Bad bins, a folder without summaries, a summary that is not one of
+        ``postproc analyze``, or no shear snapshot in the bins.
+    """
+    bins = np.asarray(bins, float)
     if len(bins) < 2 or np.any(np.diff(bins) <= 0):
-        print("size_at_strain: --bins must be two or more increasing strains", file=sys.stderr)
-        return 2
+        raise InputError("--bins must be two or more increasing strains")
     paths = []
-    for f in args.folders:
-        found = find_summaries(f, args.sample)
+    for f in folders:
+        found = find_summaries(f, sample)
         if not found:
-            print(f"size_at_strain: {f}: no {args.sample}-seed<K>/summary.csv under it", file=sys.stderr)
-            return 2
+            raise InputError(f"{f}: no {sample}-seed<K>/summary.csv under it")
         paths += found
     try:
         per_seed = per_seed_bins(paths, bins)
     except (ValueError, OSError, pd.errors.ParserError) as exc:
-        print(f"size_at_strain: {exc}", file=sys.stderr)
-        return 2
+        raise InputError(str(exc)) from None
     if per_seed.empty:
-        print("size_at_strain: no shear snapshot falls in the bins", file=sys.stderr)
-        return 2
-    os.makedirs(args.out, exist_ok=True)
-    per_seed.to_csv(os.path.join(args.out, "size-at-strain.csv"), index=False)
+        raise InputError("no shear snapshot falls in the bins")
+    os.makedirs(out, exist_ok=True)
+    per_seed.to_csv(os.path.join(out, "size-at-strain.csv"), index=False)
     text = tables(per_seed)
-    with open(os.path.join(args.out, "size-at-strain.md"), "w") as fh:
-        fh.write(f"# {args.sample}: the quantities at the same eps_1, by number of grains\n\n{text}")
-    print(text)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+    with open(os.path.join(out, "size-at-strain.md"), "w") as fh:
+        fh.write(f"# {sample}: the quantities at the same eps_1, by number of grains\n\n{text}")
+    return text

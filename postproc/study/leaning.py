@@ -1,8 +1,10 @@
 """Does the scatter of claim 6's leanings fall as N^(-1/2)? Block averaging
 inside the packings of one or more studies.
 
-    python benchmarks/leaning_blocks.py STUDY [STUDY ...] [--types points lmgc90] \
+    postproc leaning-blocks STUDY [STUDY ...] [--types points lmgc90] \
         [--grids 1 2 3 4] [--min-grains 25] [--out runs/leaning-blocks]
+
+(:func:`write_blocks`; ``make size-front`` runs it on its three studies.)
 
 A few seeds per size cannot say how the seed-to-seed scatter of a leaning
 scales with the number of grains N (the size front's F-intervals span two
@@ -26,8 +28,8 @@ EE) is, as for the whole packing (:func:`postproc.pertype.class_statistics`,
 ``fabric_a``), the mean of (5/4)(3 u^2 - 1) over its k contacts in a
 snapshot (u the cosine of the branch vector with the compression axis z),
 then averaged over the window's snapshots. At g = 1 this is the study's own
-seed leaning, which the script checks snapshot by snapshot (to 1e-9) before
-using anything else.
+seed leaning, which :func:`window_contacts` checks snapshot by snapshot (to
+1e-9) before using anything else.
 
 Per count, type, size and grid with at least 2 seeds and ``--min-grains``
 grains per block, :func:`postproc.statistics.block_components` splits the
@@ -51,7 +53,6 @@ nothing.
 """
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 
@@ -59,22 +60,35 @@ import numpy as np
 import pandas as pd
 from scipy.stats import t as student
 
-from postproc.classify import classifier_for
-from postproc.contactset import resolve
-from postproc.coordination import force_bearing
-from postproc.errors import InputError
-from postproc.pertype import axial_leaning, class_statistics
-from postproc.pipeline import open_source
-from postproc.statistics import block_components, seeds_needed, steady_indices
-from postproc.study.report import discover
+from ..classify import classifier_for
+from ..contactset import resolve
+from ..coordination import force_bearing
+from ..errors import InputError
+from ..pertype import axial_leaning, class_statistics
+from ..pipeline import open_source
+from ..statistics import block_components, seeds_needed, steady_indices
+from .report import discover
 
 TYPES = ("VF", "EE")
 AXIS = 2                       # the compression axis, z, as in the study's analyses
 
 
 def summaries_of(run):
-    """{count: summary.csv path} of one study run: its primary analysis
-    under its own count and every other count it has."""
+    """The summaries of one study run, by contact count.
+
+    Parameters
+    ----------
+    run : dict
+        One run of :func:`postproc.study.report.discover` (its ``analysis``
+        folder and its ``counts``: {count: folder}).
+
+    Returns
+    -------
+    dict
+        {count (str, the summary's ``ct_method``): path of its summary.csv}:
+        the primary analysis under its own count and every other count the
+        run has; a folder without a summary.csv is left out.
+    """
     out = {}
     for folder in [run.get("analysis"), *(run.get("counts") or {}).values()]:
         path = os.path.join(folder, "summary.csv") if folder else None
@@ -86,13 +100,38 @@ def summaries_of(run):
 
 def window_contacts(dump, summary_path, cache):
     """The force-bearing particle-particle contacts of the steady window of
-    one run under one count: dict of arrays ``frac`` (C, 3) the contact's
-    place in [0, 1]^3 (the midpoint of the two centres over the range of
-    the centres), ``label`` (C,) type, ``g`` (C,) (5/4)(3 u^2 - 1), ``snap``
-    (C,) the snapshot's index in the window, and ``n_particles``. Checks each
-    snapshot's VF and EE leaning against the summary's ``ct_fabric_*``. The
-    cache is used only while the summary's window (its steps and leanings)
-    is the one it was made from."""
+    one run under one count.
+
+    Checks each snapshot's VF and EE leaning against the summary's
+    ``ct_fabric_*`` (to 1e-9). The cache is used only while the summary's
+    window (its steps and leanings) is the one it was made from.
+
+    Parameters
+    ----------
+    dump : str
+        The run's RUN.h5 dump.
+    summary_path : str
+        summary.csv of that dump's analysis under one count (its
+        ``ct_method`` and ``ct_threshold`` are the count and tolerance used).
+    cache : str
+        .npz file written after a classification and read instead of one.
+
+    Returns
+    -------
+    dict
+        Arrays over the window's C contacts: ``frac`` (C, 3) the contact's
+        place in [0, 1]^3 (the midpoint of the two centres over the range of
+        the centres, dimensionless), ``label`` (C,) type, ``g`` (C,)
+        (5/4)(3 u^2 - 1), ``snap`` (C,) the snapshot's index in the window;
+        and ``n_particles`` (0-d), ``steps`` (S,) and ``lean`` (S, 2) the
+        window's steps and the summary's VF and EE leanings.
+
+    Raises
+    ------
+    InputError
+        A snapshot cannot be read, a leaning differs from the summary's, or
+        a snapshot of the window is not in the dump.
+    """
     df = pd.read_csv(summary_path, dtype={"snapshot": str})
     rows = df.iloc[steady_indices(df["eps_q"], df["stage"])]
     want = {int(s): i for i, s in enumerate(rows["step"])}
@@ -111,7 +150,7 @@ def window_contacts(dump, summary_path, cache):
         classifier = classifier_for(shapes, method, tolerance=tol)
         for snap in snaps:
             if isinstance(snap, Exception):
-                raise SystemExit(f"leaning_blocks: {dump}: {snap}")
+                raise InputError(f"{dump}: {snap}")
             k = want.get(int(snap.step))
             if k is None or snap.stage != "shear":
                 continue
@@ -124,7 +163,7 @@ def window_contacts(dump, summary_path, cache):
                 ref = float(rows[f"ct_fabric_{t}"].iloc[k])
                 got = st[t]["fabric_a"] if t in st else np.nan
                 if not (np.isclose(got, ref, rtol=0, atol=1e-9) or (np.isnan(got) and np.isnan(ref))):
-                    raise SystemExit(f"leaning_blocks: {dump} step {snap.step}: {method} {t} leaning {got:.12g} "
+                    raise InputError(f"{dump} step {snap.step}: {method} {t} leaning {got:.12g} "
                                      f"against the summary's {ref:.12g}: not the analysis the study made")
             centres = snap.positions
             lo, hi = centres.min(axis=0), centres.max(axis=0)
@@ -137,7 +176,7 @@ def window_contacts(dump, summary_path, cache):
     finally:
         close()
     if len(seen) != len(want):
-        raise SystemExit(f"leaning_blocks: {dump}: {len(want) - len(seen)} of the {len(want)} steady-window "
+        raise InputError(f"{dump}: {len(want) - len(seen)} of the {len(want)} steady-window "
                          f"snapshots of {summary_path} are not in the dump")
     out = {k: np.concatenate(v) for k, v in parts.items()}
     out["n_particles"] = np.array(len(centres))
@@ -148,9 +187,24 @@ def window_contacts(dump, summary_path, cache):
 
 
 def block_values(c, g):
-    """(len(TYPES), g^3) each type's leaning per block (the window's mean of
-    the per-snapshot block means; NaN where a block never holds the type)
-    and the mean number of grains per block."""
+    """Each type's leaning per block of a g x g x g grid.
+
+    Parameters
+    ----------
+    c : dict
+        The contacts of :func:`window_contacts` (``frac``, ``label``, ``g``,
+        ``snap``, ``n_particles``).
+    g : int
+        Blocks per axis (1: the whole packing).
+
+    Returns
+    -------
+    values : ndarray, shape (len(TYPES), g**3)
+        The window's mean of the per-snapshot block means of
+        (5/4)(3 u^2 - 1); NaN where a block never holds the type.
+    grains : float
+        The mean number of grains per block, n_particles / g^3.
+    """
     cell = np.clip((c["frac"] * g).astype(int), 0, g - 1)
     block = (cell[:, 0] * g + cell[:, 1]) * g + cell[:, 2]
     S, B = int(c["snap"].max()) + 1, g ** 3
@@ -168,7 +222,21 @@ def block_values(c, g):
 
 
 def slope(points):
-    """Weighted least squares of log(local) on log(n): (slope, lo, hi), 95 %."""
+    """Weighted least squares of log(local) on log(n).
+
+    Parameters
+    ----------
+    points : list of (float, float, float)
+        (grains per block n, local sd, its degrees of freedom), one per
+        (size, grid); each weighted by 1 / var(log sd) = 2 dof.
+
+    Returns
+    -------
+    tuple of float
+        (slope, lo, hi): the slope and its 95 % Student's t interval, the
+        standard error scaled by the misfit when it exceeds 1; NaN for
+        fewer than 3 points.
+    """
     x = np.log([p[0] for p in points])
     y = np.log([p[1] for p in points])
     w = 2.0 * np.array([p[2] for p in points], float)        # 1 / var(log s) = 2 dof
@@ -183,52 +251,75 @@ def slope(points):
     return float(beta[1]), float(beta[1] - h), float(beta[1] + h)
 
 
-def fmt(x, d=3):
+def _fmt(x, d=3):
+    """x to d decimals, or a dash when missing or not finite."""
     return "–" if x is None or not np.isfinite(x) else f"{x:.{d}f}"
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("studies", nargs="+")
-    ap.add_argument("--types", nargs="+", default=["points", "lmgc90"])
-    ap.add_argument("--grids", nargs="+", type=int, default=[1, 2, 3, 4])
-    ap.add_argument("--min-grains", type=float, default=25.0)
-    ap.add_argument("--out", default="runs/leaning-blocks")
-    args = ap.parse_args()
-    if any(g < 1 for g in args.grids) or 1 not in args.grids:
-        raise SystemExit("leaning_blocks: --grids must be positive integers and include 1 (the whole packing)")
+def write_blocks(studies, out="runs/leaning-blocks", types=("points", "lmgc90"), grids=(1, 2, 3, 4),
+                 min_grains=25.0):
+    """The block leanings of one or more studies, tabulated (see the module
+    docstring): writes OUT/blocks.csv, OUT/blocks.md and OUT/cache/*.npz.
+
+    Parameters
+    ----------
+    studies : list of str
+        ``make study`` folders (each with its manifest.json), any numbers of
+        grains.
+    out : str
+        Output folder.
+    types : sequence of str
+        The counts to use (``points``, ``lmgc90``): each run's analysis
+        under that count; a run without it is left out (said on stderr).
+    grids : sequence of int
+        Blocks per axis g (positive, 1 included: the whole packing).
+    min_grains : float
+        A grid g > 1 is used only with at least this many grains per block.
+
+    Returns
+    -------
+    str
+        The text of blocks.md: one row per count, type, size and grid, then
+        the slope of log(local sd) on log(grains per block) per count and
+        type.
+
+    Raises
+    ------
+    InputError
+        Bad grids, a study without a complete S1 run, no run with the
+        counts asked for, or a dump that is not the study's analysis.
+    """
+    if any(g < 1 for g in grids) or 1 not in grids:
+        raise InputError("--grids must be positive integers and include 1 (the whole packing)")
     runs = []                      # (N, count, seed label, contacts)
-    for study in args.studies:
+    for study in studies:
         try:
             found = discover(study)
         except (OSError, ValueError) as exc:
-            raise SystemExit(f"leaning_blocks: {study}: {exc}")
+            raise InputError(f"{study}: {exc}")
         ok = [r for r in found.get("polyhedra", []) if r.get("status") == "ok"]
         if not ok:
-            raise SystemExit(f"leaning_blocks: {study}: no complete S1 run")
+            raise InputError(f"{study}: no complete S1 run")
         for r in ok:
             have = summaries_of(r)
-            for count in args.types:
+            for count in types:
                 if count not in have:
-                    print(f"leaning_blocks: {study} {r['label']}: no {count} analysis, left out", file=sys.stderr)
+                    print(f"leaning-blocks: {study} {r['label']}: no {count} analysis, left out", file=sys.stderr)
                     continue
                 name = f"{os.path.basename(os.path.normpath(study))}-{r['label'].replace(' ', '')}-{count}"
-                print(f"leaning_blocks: {study} {r['label']} ({count})", file=sys.stderr, flush=True)
-                try:
-                    c = window_contacts(r["dump"], have[count], os.path.join(args.out, "cache", name + ".npz"))
-                except InputError as exc:
-                    raise SystemExit(f"leaning_blocks: {r['dump']}: {exc}")
+                print(f"leaning-blocks: {study} {r['label']} ({count})", file=sys.stderr, flush=True)
+                c = window_contacts(r["dump"], have[count], os.path.join(out, "cache", name + ".npz"))
                 runs.append((int(c["n_particles"]), count, f"{study}:{r['label']}", c))
     if not runs:
-        raise SystemExit("leaning_blocks: no run with the counts asked for")
+        raise InputError("no run with the counts asked for")
     rows = []
-    for count in args.types:
+    for count in types:
         for N in sorted({n for n, k, _, _ in runs if k == count}):
             group = [c for n, k, _, c in runs if k == count and n == N]
-            for g in sorted(args.grids):
+            for g in sorted(grids):
                 vals = [block_values(c, g) for c in group]
                 n_grains = float(np.mean([v[1] for v in vals]))
-                if g > 1 and n_grains < args.min_grains:
+                if g > 1 and n_grains < min_grains:
                     continue
                 for j, t in enumerate(TYPES):
                     V = np.array([v[0][j] for v in vals])
@@ -245,8 +336,8 @@ def main():
                                     "position_p": bc.position_p, "whole": bc.whole})
                     rows.append(row)
     tab = pd.DataFrame(rows)
-    os.makedirs(args.out, exist_ok=True)
-    tab.to_csv(os.path.join(args.out, "blocks.csv"), index=False)
+    os.makedirs(out, exist_ok=True)
+    tab.to_csv(os.path.join(out, "blocks.csv"), index=False)
     lines = ["| count | type | N | seeds | g | grains per block | local sd [95 %] | local × √n | packing sd (p) | "
              "position sd (p) | predicted whole sd | seeds' sd | mean | seeds needed |", "|" + "---|" * 14]
     fits = ["", "| count | type | slope of log(local) on log(n) [95 %] | points |", "|---|---|---|---|"]
@@ -259,18 +350,14 @@ def main():
                     pts.append((r["grains_per_block"], r["local"], r["local_dof"]))
                 need = seeds_needed(whole["mean"], r["whole"]) if np.isfinite(r["whole"]) and whole["mean"] else None
                 lines.append(f"| {count} | {t} | {N} | {int(r['seeds'])} | {int(r['grid'])} | "
-                             f"{r['grains_per_block']:.0f} | {fmt(r['local'])} [{fmt(r['local_lo'])}, "
-                             f"{fmt(r['local_hi'])}] | {fmt(r['local_sqrt_n'], 2)} | {fmt(r['packing'])} "
-                             f"({fmt(r['packing_p'], 2)}) | {fmt(r['position'])} ({fmt(r['position_p'], 2)}) | "
-                             f"{fmt(r['whole'])} | {fmt(whole['seed_sd'])} | {whole['mean']:+.3f} | "
+                             f"{r['grains_per_block']:.0f} | {_fmt(r['local'])} [{_fmt(r['local_lo'])}, "
+                             f"{_fmt(r['local_hi'])}] | {_fmt(r['local_sqrt_n'], 2)} | {_fmt(r['packing'])} "
+                             f"({_fmt(r['packing_p'], 2)}) | {_fmt(r['position'])} ({_fmt(r['position_p'], 2)}) | "
+                             f"{_fmt(r['whole'])} | {_fmt(whole['seed_sd'])} | {whole['mean']:+.3f} | "
                              f"{need if need else '–'} |")
         b, lo, hi = slope(pts)
-        fits.append(f"| {count} | {t} | {fmt(b, 2)} [{fmt(lo, 2)}, {fmt(hi, 2)}] | {len(pts)} |")
+        fits.append(f"| {count} | {t} | {_fmt(b, 2)} [{_fmt(lo, 2)}, {_fmt(hi, 2)}] | {len(pts)} |")
     text = "\n".join(lines + fits) + "\n"
-    with open(os.path.join(args.out, "blocks.md"), "w") as fh:
+    with open(os.path.join(out, "blocks.md"), "w") as fh:
         fh.write(text)
-    print(text)
-
-
-if __name__ == "__main__":
-    main()
+    return text
