@@ -1,7 +1,7 @@
 """How the polyhedra's time step shrinks with the number of grains: the
 sample's most limiting grain, drawn from the library.
 
-    python benchmarks/timestep_draws.py [--library runs/shapes/library.h5] \
+    python -m yade_scripts.timestep_draws [--library runs/shapes/library.h5] \
         [--n 200 1000 5000 36933] [--seeds 1 2 3]
 
 The scene (``yade_scripts/triaxial.py``) sets dt = safety x min over its
@@ -12,7 +12,7 @@ x(s, d) x a constant. N grains draw their shapes uniformly from the
 library's L shapes and their sizes by the exact class counts
 (:func:`shapes.sizes.class_counts`), so the largest x of a sample has an
 exact distribution: P(max <= x) = prod over classes of (the fraction of
-shapes with x(s, d_c) <= x)^(n_c). The script prints, for each N, the
+shapes with x(s, d_c) <= x)^(n_c) (:func:`expected_rate`). The command prints, for each N, the
 expected 1/dt relative to that at 1000 grains (the shear's steps go as
 1/dt at a fixed strain rate), the library's limit (every sample holding
 the most limiting shape in the smallest class) and the chance that N grains
@@ -23,21 +23,34 @@ when a run's dt is the library's smallest.
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from shapes import sizes  # noqa: E402
-from shapes.library import ShapeLibrary  # noqa: E402
-from yade_scripts import timestep  # noqa: E402
-from yade_scripts.parameters import PARAMETERS  # noqa: E402
+from shapes import sizes
+from shapes.library import ShapeLibrary
+from yade_scripts import timestep
+from yade_scripts.parameters import PARAMETERS
 
 
 def shape_rates(lib, tangential_ratio):
-    """(L,) x(s, d = 1): sqrt(k / m_eff) of each library shape up to a
-    common constant, as the scene computes k and m_eff."""
+    """Each library shape's rate x(s, d = 1) = sqrt(k / m_eff), up to a
+    common constant, as the scene computes k and m_eff.
+
+    Parameters
+    ----------
+    lib : shapes.library.ShapeLibrary
+        The L shapes (at d = 1, unit density).
+    tangential_ratio : float
+        The scene's ``tangential_ratio``: k is the largest face area, or
+        this times the library's mean face area when that is larger.
+
+    Returns
+    -------
+    ndarray, shape (L,)
+        x(s, 1); at diameter d the rate is x(s, 1) / sqrt(d), and 1/dt is
+        proportional to the sample's largest rate.
+    """
     faces = []
     for s in range(len(lib)):
         v, t, _ = lib[s]
@@ -49,8 +62,22 @@ def shape_rates(lib, tangential_ratio):
 
 
 def expected_rate(x1, n):
-    """E[max x over the n grains], x(s, d) = x1(s) / sqrt(d): exact order
-    statistics over the class counts of n grains."""
+    """The expected largest rate of n grains: exact order statistics over
+    the class counts of n grains, each grain's shape drawn uniformly.
+
+    Parameters
+    ----------
+    x1 : ndarray, shape (L,)
+        Each shape's rate at d = 1 (:func:`shape_rates`); x(s, d) =
+        x1(s) / sqrt(d).
+    n : int
+        Grains in the sample (sizes by :func:`shapes.sizes.class_counts`).
+
+    Returns
+    -------
+    float
+        E[max x over the n grains], in the units of ``x1``.
+    """
     per_class = [(np.sort(x1 / np.sqrt(d)), c) for d, c in zip(sizes.CLASS_DIAMETERS, sizes.class_counts(n))]
     grid = np.unique(np.concatenate([x for x, _ in per_class]))
     cdf = np.ones_like(grid)
@@ -59,16 +86,30 @@ def expected_rate(x1, n):
     return float(np.diff(np.concatenate([[0.0], cdf])) @ grid)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def main(argv=None):
+    """The command: the table of expected 1/dt against N and the seeds'
+    draws, printed.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        0, or 2 when the library cannot be read.
+    """
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.timestep_draws", description=__doc__.splitlines()[0])
     ap.add_argument("--library", default="runs/shapes/library.h5")
     ap.add_argument("--n", nargs="+", type=int, default=[200, 1000, 5000, 36933])
     ap.add_argument("--seeds", nargs="*", type=int, default=[1, 2, 3])
-    args = ap.parse_args()
+    args = ap.parse_args(argv)
     try:
         lib = ShapeLibrary(args.library)
     except (OSError, ValueError, KeyError) as exc:
-        raise SystemExit(f"timestep_draws: {args.library}: {exc}")
+        print(f"timestep_draws: error: {args.library}: {exc}", file=sys.stderr)
+        return 2
     ratio = next(p.default for p in PARAMETERS if p.name == "tangential_ratio")
     x1 = shape_rates(lib, ratio)
     small = np.sqrt(sizes.CLASS_DIAMETERS[0])
@@ -88,7 +129,8 @@ def main():
             shape_of = rng.integers(len(lib), size=n)
             holds = bool(np.any((shape_of == best) & (d == sizes.CLASS_DIAMETERS[0])))
             print(f"N {n} seed {seed}: {'holds' if holds else 'does not hold'} the most limiting shape")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
