@@ -369,9 +369,6 @@ def test_the_same_seed_gives_the_same_run_bit_for_bit(tiny_runs, tmp_path):
 
 
 
-@pytest.mark.xfail(reason="under pytest the stopped YADE aborts at exit (double free, -6) and the comparison "
-                   "fails; by hand on the same scene the switched run equals the one-thread run (75 datasets): "
-                   "not yet found", strict=False)
 def test_the_thread_count_and_its_change_mid_run_leave_the_run_bit_for_bit(tiny_runs, tmp_path):
     """The pool widens a running S1 from one kernel thread to two (a stop
     at a checkpoint, a resume on more threads). The tiny S1, with every step
@@ -400,10 +397,10 @@ def test_the_thread_count_and_its_change_mid_run_leave_the_run_bit_for_bit(tiny_
         time.sleep(0.05)
     p.send_signal(signal.SIGTERM)
     out = p.communicate(timeout=300)[0]
-    # stopped with its checkpoint; YADE then sometimes aborts on its way out ("double free or
-    # corruption", exit -6, seen here after the stop: a known defect, not yet found), which
-    # the launchers' rule resumes all the same (a stop asked for, with a checkpoint)
-    assert "run again in this folder to resume (exit 75)" in out and p.returncode in (75, -6), out[-3000:]
+    # stopped with its checkpoint, and out cleanly: a process that saved or loaded a scene
+    # with the plugin loaded used to abort at exit (double free, -6; the plugin no longer
+    # registers its class with Boost.Serialization)
+    assert "run again in this folder to resume (exit 75)" in out and p.returncode == 75, out[-3000:]
     again = subprocess.run([YADE, "-j2", "-n", "-x", "triaxial.py"], cwd=d, env=env, capture_output=True,
                            text=True, timeout=600, stdin=subprocess.DEVNULL)
     assert again.returncode == 0 and "resumed from run.ckpt" in again.stdout, again.stdout[-3000:]

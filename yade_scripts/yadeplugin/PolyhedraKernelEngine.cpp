@@ -197,7 +197,7 @@ public:
 
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(PolyhedraKernelEngine, GlobalEngine,
-		"Polyhedra contacts of the compiled kernel (shapes/polycontact.c) inside YADE's step: reads the poses of :yref:`ids` and the positions of :yref:`walls`, steps the kernel that :yref:`bind` names, adds the contact forces and torques. Place it between ForceResetter and NewtonIntegrator; yade_scripts.kernel_contacts.KernelContacts builds and binds it.",
+		"Polyhedra contacts of the compiled kernel (shapes/polycontact.c) inside YADE's step: reads the poses of :yref:`ids` and the positions of :yref:`walls`, steps the kernel that :yref:`bind` names, adds the contact forces and torques. Place it between ForceResetter and NewtonIntegrator; yade_scripts.kernel_contacts.KernelContacts builds and binds it. It is not saved with the scene (O.save raises unregistered class): checkpoints hold its PyRunner form.",
 		((vector<int>, ids, , , "Body ids of the polyhedra, in the kernel's row order."))
 		((vector<int>, walls, , , "Body ids of the six walls (x-, x+, y-, y+, z-, z+), or none."))
 		((int, error, 0, (Attr::readonly | Attr::noSave), "0 after a good step; else why the last step stopped before adding forces: the kernel's code (-2 positions not finite, -4 workspace overflow, other: out of memory), -10 not bound, -11 a body id that is not a body of the scene, -12 bad wall positions."))
@@ -212,8 +212,23 @@ public:
 	);
 	// clang-format on
 };
-REGISTER_SERIALIZABLE(PolyhedraKernelEngine);
-
-YADE_PLUGIN((PolyhedraKernelEngine));
+// Registered with YADE's class factory (so that YADE's Python knows the
+// class), but not with Boost.Serialization as REGISTER_SERIALIZABLE and
+// YADE_PLUGIN would: a second copy of the serialization registry's entries
+// for Serializable, Engine and GlobalEngine, made in this library, was
+// freed twice at exit by any process that had saved or loaded a scene
+// ("double free or corruption", exit -6, after the run had ended well). The
+// engine is never saved: a checkpoint swaps in its PyRunner form first
+// (KernelContacts.portable, yade_scripts/kernel_contacts.py), and O.save of a scene that holds it
+// raises "unregistered class".
+REGISTER_FACTORABLE(PolyhedraKernelEngine);
 
 } // namespace yade
+
+namespace {
+__attribute__((constructor)) void registerThisPluginClasses_PolyhedraKernelEngine(void)
+{
+	const char* info[] = { __FILE__, "PolyhedraKernelEngine", NULL };
+	::yade::ClassFactory::instance().registerPluginClasses(info);
+}
+} // namespace
