@@ -106,6 +106,14 @@ def main(argv=None):
     af.add_argument("--out", default="runs/front-analysis",
                     help="output folder: analysis_front.csv and .png (default runs/front-analysis)")
     af.add_argument("--reps", type=int, default=40, help="synthetic sets per sample size (default 40)")
+    c6 = sub.add_parser("claim6-criteria", help="claim 6 on one study, decided with each contact-type criterion "
+                                                "(and, with --tolerance, the leanings' stability)")
+    c6.add_argument("study", help="study folder written by 'make study' (holds manifest.json); the analyses and "
+                                  "claim6.md go to STUDY/claim6")
+    c6.add_argument("--types", nargs="+", default=["points", "commonplane"],
+                    help="the criteria, as for analyze --types (default points commonplane)")
+    c6.add_argument("--tolerance", nargs="+", type=float, default=[None],
+                    help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -169,6 +177,16 @@ def main(argv=None):
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
         print(text)
+        return 0
+    if args.cmd == "claim6-criteria":
+        from .study.claim6 import write_claim6
+
+        try:
+            text = write_claim6(args.study, args.types, args.tolerance)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text, flush=True)
         return 0
     if args.cmd == "analysis-front":
         from .study.front import ANALYSIS_FRONT_COLUMNS, write_analysis_front

@@ -141,3 +141,54 @@ def test_report_states_claim6_by_count(dump, tmp_path):
     assert table["factor"].tolist() == [0.5, 1.0, 2.0] * 2
     assert "## Claim 6 by contact count" in md
     assert sum(line.startswith("| lmgc90 | 1 |") for line in md.splitlines()) == 3
+
+
+def fast_analyses(mp):
+    """Analyses without their figures and code hash (``mp`` a
+    pytest.MonkeyPatch): the same numbers in a fraction of the time."""
+    from postproc import pipeline, provenance
+
+    for name in ("plot_qp_sff", "plot_anisotropies", "plot_polar", "plot_force_pdf", "plot_networks",
+                 "plot_contact_types", "plot_footprint"):
+        mp.setattr(pipeline.plots, name, lambda *args, **kw: None)
+    mp.setattr(provenance, "code_hash", lambda: "tests")
+
+
+@pytest.fixture(scope="module")
+def tiny_study(dump, tmp_path_factory):
+    """A study folder of one S1 run (the 7-snapshot dump) analysed by the
+    point count, as ``make study`` leaves it (without its other counts)."""
+    study = tmp_path_factory.mktemp("tiny-study")
+    ana = study / "analysis"
+    with pytest.MonkeyPatch.context() as mp:
+        fast_analyses(mp)
+        analyze_path(dump, str(ana), AnalysisOptions(errors=False), progress=False)
+    manifest = {"polyhedra": [{"label": "seed 1", "dump": dump, "analysis": str(ana), "info": None, "status": "ok",
+                               "counts": {}}]}
+    (study / "manifest.json").write_text(json.dumps(manifest))
+    return str(study)
+
+
+def test_claim6_criteria_command(tiny_study, monkeypatch, capsys):
+    """``postproc claim6-criteria`` on a tiny study with the point count at
+    its own tolerance (read from the study's analysis) and at half and
+    twice it (analysed into STUDY/claim6): a verdict row each, the
+    stability test and its figure; a folder without a study: exit 2."""
+    from postproc.cli import main
+
+    fast_analyses(monkeypatch)
+    assert main(["claim6-criteria", tiny_study, "--types", "points", "--tolerance", "0.05", "0.2"]) == 0
+    out = os.path.join(tiny_study, "claim6")
+    assert sorted(os.listdir(out)) == ["claim6.md", "points-tolerance.png", "seed1-points-tol0.05",
+                                       "seed1-points-tol0.2"]
+    md = open(os.path.join(out, "claim6.md")).read()
+    rows = [line for line in md.splitlines() if line.startswith("| points")]
+    assert [r.split(" | ")[0] for r in rows[:3]] == ["| points", "| points-tol0.05", "| points-tol0.2"]
+    assert all(r.split(" | ")[1] == "1" for r in rows[:3])
+    assert "Stability of the leanings (points" in md and "| 0.05 |" in md and "| 0.2 |" in md
+    own = pd.read_csv(os.path.join(tiny_study, "analysis", "summary.csv"))
+    vf = own["ct_fabric_VF"].to_numpy(float)[steady_indices(own["eps_q"], own["stage"])].mean()
+    assert f"| seed 1 | nan | {vf:+.3f} |" in md
+    assert "Leanings per seed (points-tol0.2" in capsys.readouterr().out
+    assert main(["claim6-criteria", out]) == 2
+    assert "no usable S1 run" in capsys.readouterr().err

@@ -17,7 +17,8 @@ LAYERS = [
                  "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
-               "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain"}),
+               "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
+               "study.claim6"}),
     ("interface", {"many", "cli"}),
 ]
 LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}

@@ -1,9 +1,14 @@
 """postproc.study.leaning (``postproc leaning-blocks``): block leanings and
 the scaling fit, checked on hand-built contact sets with exact values."""
+import os
+
 import numpy as np
+import pandas as pd
 import pytest
 
+from postproc.statistics import steady_indices
 from postproc.study import leaning as lb
+from test_claim6_counts import dump, tiny_study  # noqa: F401  (fixtures: a tiny study)
 
 
 def contacts():
@@ -48,3 +53,27 @@ def test_the_command_says_what_is_missing_in_one_line(tmp_path, capsys):
     assert main(["leaning-blocks", str(tmp_path), "--grids", "2", "3"]) == 2
     assert "include 1" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+def test_the_command_on_a_tiny_study(tiny_study, tmp_path, capsys):
+    """``postproc leaning-blocks`` on one 64-grain run: at g = 1 each
+    type's leaning is the study's own (the window mean of its summary's
+    ct_fabric_*), at g = 2 the blocks' rows are there, the run's contacts
+    are cached; a count the study did not analyse leaves no run: exit 2."""
+    from postproc.cli import main
+
+    out = tmp_path / "blocks"
+    assert main(["leaning-blocks", tiny_study, "--types", "points", "--grids", "1", "2", "--min-grains", "1",
+                 "--out", str(out)]) == 0
+    tab = pd.read_csv(out / "blocks.csv")
+    assert sorted(zip(tab["type"], tab["grid"])) == [("EE", 1), ("EE", 2), ("VF", 1), ("VF", 2)]
+    own = pd.read_csv(os.path.join(tiny_study, "analysis", "summary.csv"))
+    window = steady_indices(own["eps_q"], own["stage"])
+    for t in ("VF", "EE"):
+        whole = tab[(tab["type"] == t) & (tab["grid"] == 1)].iloc[0]
+        assert whole["N"] == 64 and whole["seeds"] == 1
+        assert whole["mean"] == pytest.approx(np.nanmean(own[f"ct_fabric_{t}"].to_numpy(float)[window]), abs=1e-9)
+    assert len(os.listdir(out / "cache")) == 1
+    assert "| points | VF | 64 | 1 | 2 |" in capsys.readouterr().out
+    assert main(["leaning-blocks", tiny_study, "--types", "lmgc90", "--out", str(out)]) == 2
+    assert "no run with the counts asked for" in capsys.readouterr().err

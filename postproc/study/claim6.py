@@ -1,7 +1,9 @@
 """Claim 6 (face-face contacts strong and axial, vertex-face and edge-edge
 weak and lateral) on one study, decided with each contact-type criterion.
 
-    python benchmarks/claim6_criteria.py STUDY [--types points commonplane] [--tolerance T ...]
+    postproc claim6-criteria STUDY [--types points commonplane] [--tolerance T ...]
+
+(:func:`write_claim6`.)
 
 STUDY is a ``make study`` folder (its ``manifest.json``). Each usable S1
 dump is analysed with every criterion that its study analysis did not use
@@ -32,7 +34,6 @@ STUDY/claim6/<criterion>-tolerance.png
 """
 from __future__ import annotations
 
-import argparse
 import json
 import os
 
@@ -40,14 +41,14 @@ import numpy as np
 import pandas as pd
 from scipy.stats import linregress, t
 
-from postproc.commonplane import DEFAULT_NEIGHBOR
-from postproc.contactpoints import DEFAULT_ALPHA
-from postproc.errors import InputError
-from postproc.pipeline import AnalysisOptions, analyze_path
-from postproc.plots import plot_leanings_by_tolerance
-from postproc.statistics import plateau_estimate, seed_scatter, seeds_needed, steady_indices
-from postproc.study.claims import evaluate
-from postproc.study.report import run_summaries, usable_runs, discover
+from ..commonplane import DEFAULT_NEIGHBOR
+from ..contactpoints import DEFAULT_ALPHA
+from ..errors import InputError
+from ..pipeline import AnalysisOptions, analyze_path
+from ..plots import plot_leanings_by_tolerance
+from ..statistics import plateau_estimate, seed_scatter, seeds_needed, steady_indices
+from .claims import evaluate
+from .report import run_summaries, usable_runs, discover
 
 NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each criterion's own tolerance
 STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
@@ -55,33 +56,57 @@ LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
 CRITERION = {"points": "our contact-point count", "commonplane": "the earlier band count on a common plane",
              "lmgc90": "LMGC90's own count"}
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("study")
-    ap.add_argument("--types", nargs="+", default=["points", "commonplane"])
-    ap.add_argument("--tolerance", nargs="+", type=float, default=[None],
-                    help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
-    args = ap.parse_args()
-    try:
-        for types in args.types:
-            for tol in args.tolerance:
-                AnalysisOptions(types=types, tolerance=tol).check()
-    except InputError as exc:
-        raise SystemExit(f"claim6: {exc}")
-    runs = discover(args.study)
+
+def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
+    """Claim 6 decided with each criterion on one study (see the module
+    docstring): analyses into STUDY/claim6/, the tables in
+    STUDY/claim6/claim6.md and, with tolerances, the figures
+    STUDY/claim6/<criterion>-tolerance.png. Prints each criterion's verdict
+    as it is reached.
+
+    Parameters
+    ----------
+    study : str
+        A ``make study`` folder (its manifest.json).
+    criteria : sequence of str
+        The criteria (``postproc analyze --types``), one row each.
+    tolerances : sequence of float or None
+        The criterion's tolerance (points: alpha, units of V/area;
+        commonplane: tau, units of the centre-to-extreme-vertex distance);
+        ``(None,)``: each criterion's own. Several values: one row each,
+        beside the criterion's own as the nominal row.
+
+    Returns
+    -------
+    str
+        The stability tables (with tolerances) and the per-seed leanings and
+        their scatter per criterion, as printed at the end (claim6.md also
+        holds the table of verdicts first).
+
+    Raises
+    ------
+    InputError
+        A criterion or tolerance ``postproc analyze`` refuses, or no usable
+        S1 run in the study.
+    """
+    tolerances = list(tolerances)
+    for types in criteria:
+        for tol in tolerances:
+            AnalysisOptions(types=types, tolerance=tol).check()
+    runs = discover(study)
     s1, s2 = usable_runs(runs, "polyhedra"), usable_runs(runs, "spheres")
     if not s1:
-        raise SystemExit(f"claim6: no usable S1 run in {args.study}")
+        raise InputError(f"no usable S1 run in {study}")
     s2_frames = run_summaries({"spheres": s2}).get("spheres", [])
-    out = os.path.join(args.study, "claim6")
+    out = os.path.join(study, "claim6")
     os.makedirs(out, exist_ok=True)
     lines = ["| criterion | S1 seeds | contacts (steady window) | verdict | numbers |", "|---|---|---|---|---|"]
     scatter = []
     own = [pd.read_csv(os.path.join(r["analysis"], "summary.csv")) for r in s1]
     band = []
-    for types in args.types:
+    for types in criteria:
         rows = []
-        for tol in _tolerances(types, args.tolerance):
+        for tol in _tolerances(types, tolerances):
             name = types if tol is None else f"{types}-tol{tol:g}"
             frames = []
             for r, summary in zip(s1, own):
@@ -112,7 +137,7 @@ def main():
                     unit="(tau x the radius)" if types == "commonplane" else "(alpha x V/area)")
     with open(os.path.join(out, "claim6.md"), "w") as fh:
         fh.write("\n".join(lines + band + scatter) + "\n")
-    print("\n".join(band + scatter), flush=True)
+    return "\n".join(band + scatter)
 
 
 def _tolerances(types, asked):
@@ -192,7 +217,3 @@ def _scatter_lines(types, runs, series, seed_means):
         out.append(f"| {c[-2:]} | {means.mean():+.3f} | {sc.between:.3f} | {sc.within:.3f} | "
                    f"{sc.persistent:.3f} | {need if need else 'n/a'} | {slope} |")
     return out
-
-
-if __name__ == "__main__":
-    main()
