@@ -72,7 +72,23 @@ def test_the_examples_run(module):
 #: entry points of the other modules a user calls, held to the same rule one
 #: by one (their modules are not yet all written that way)
 SHAPES_ENTRY_POINTS = ("shapes.library.ShapeLibrary", "shapes.engine.ContactEngine")
-YADE_ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve")
+YADE_ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve",
+                     "yade_scripts.generate.generate", "yade_scripts.pool.Job", "yade_scripts.pool.run_pool",
+                     "yade_scripts.runstate.judge", "yade_scripts.study.run_samples", "yade_scripts.study.collect",
+                     "yade_scripts.parameters.Parameter", "yade_scripts.parameters.coerce",
+                     "yade_scripts.parameters.check", "yade_scripts.parameters.changed",
+                     "yade_scripts.servo.wall_stresses", "yade_scripts.servo.servo_rates",
+                     "yade_scripts.servo.wall_velocities", "yade_scripts.timestep.inertial_strain_rate",
+                     "yade_scripts.timestep.rotational_mass", "yade_scripts.timestep.critical_time_step",
+                     "yade_scripts.host.host_info", "yade_scripts.host.cpu_from_cpuinfo",
+                     "yade_scripts.resources.memory_mb", "yade_scripts.resources.check_memory",
+                     "yade_scripts.slurm.write_slurm", "yade_scripts.slurm.submit", "yade_scripts.slurm.queue_states",
+                     "yade_scripts.slurm.record_job", "yade_scripts.slurm.recorded_jobs",
+                     "yade_scripts.slurm.time_seconds", "yade_scripts.slurm.check_options",
+                     "yade_scripts.batch.TableLine", "yade_scripts.batch.table_lines", "yade_scripts.batch.read_table",
+                     "yade_scripts.batch.dump_of", "yade_scripts.batch.run_batch", "yade_scripts.front.run_front",
+                     "yade_scripts.front.write_table", "yade_scripts.yadeplugin.status",
+                     "yade_scripts.yadeplugin.build", "yade_scripts.yadeplugin.environment")
 ENTRY_POINTS = SHAPES_ENTRY_POINTS + YADE_ENTRY_POINTS
 
 

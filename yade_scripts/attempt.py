@@ -54,6 +54,7 @@ class Resumed:
 
     @property
     def step(self):
+        """The step (YADE's iteration) the checkpoint was written at (int)."""
         return int(self.meta["step"])
 
     @property

@@ -29,10 +29,40 @@ from .runstate import EXIT_BUSY, EXIT_TERM
 
 @dataclass(frozen=True)
 class TableLine:
-    """One run line of a table: ``number`` (its line in the file, from 1 with
-    the header), ``task`` (its place among the run lines, from 1: a SLURM
-    array task id), ``row`` ({column: raw text}), ``error`` (None, or one
-    line naming the file, line and parameter that is wrong)."""
+    """One run line of a run folder's table (:func:`table_lines`).
+
+    Parameters
+    ----------
+    number : int
+        Its line in the file, from 1 with the header (what
+        ``YADE_BATCH=table.txt:LINE`` names).
+    task : int
+        Its place among the run lines, from 1: its SLURM array task id.
+    row : dict
+        column -> the value's raw text (strings keep their quotes).
+    error : str or None
+        None, or one line naming the file, the line and the parameter that
+        is wrong.
+
+    Attributes
+    ----------
+    number : int
+        As given.
+    task : int
+        As given.
+    row : dict
+        As given.
+    error : str or None
+        As given.
+    description : str
+        The ``description`` column (``line<number>`` without one).
+
+    Examples
+    --------
+    >>> t = TableLine(2, 1, {"description": "spheres-seed1", "seed": "1", "out": "'spheres-seed1.h5'"})
+    >>> t.description, t.error
+    ('spheres-seed1', None)
+    """
     number: int
     task: int
     row: dict
@@ -40,17 +70,51 @@ class TableLine:
 
     @property
     def description(self):
+        """The ``description`` column, or ``line<number>`` when there is none."""
         return self.row.get("description", f"line{self.number}")
 
 
 def table_lines(folder):
-    """Every run line of ``folder/table.txt`` (:class:`TableLine`), each
-    checked: as many values as columns; every column but ``description`` a
-    scene parameter (a misspelt one is named with the closest known one)
-    and every value a Python literal of its type and range (yade-batch
-    evaluates the values as Python); descriptions and dumps not repeated.
-    Raises :class:`ConfigError` (one line) only when the table is missing or
-    empty."""
+    """Every run line of a run folder's table, each checked.
+
+    A line is checked for as many values as columns; every column but
+    ``description`` a scene parameter (a misspelt one is named with the
+    closest known one) and every value a Python literal of its type and
+    range (yade-batch evaluates the values as Python); descriptions and
+    dumps not repeated. A bad line does not stop the others: its
+    ``error`` says what is wrong. Blank lines and lines starting with
+    ``#`` are skipped.
+
+    Parameters
+    ----------
+    folder : str
+        The run folder, holding ``table.txt``.
+
+    Returns
+    -------
+    list of TableLine
+        In file order.
+
+    Raises
+    ------
+    ConfigError
+        One line, only when the table is missing or empty.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> with open(os.path.join(d, "table.txt"), "w") as fh:
+    ...     _ = fh.write("description kappa out\\n"
+    ...                  "k300 300.0 'k300.h5'\\n"
+    ...                  "k1e4 1e4 'k1e4.h5'\\n"
+    ...                  "bad -5.0 'bad.h5'\\n")
+    >>> lines = table_lines(d)
+    >>> [(t.number, t.task, t.description) for t in lines]
+    [(2, 1, 'k300'), (3, 2, 'k1e4'), (4, 3, 'bad')]
+    >>> lines[2].error
+    '.../table.txt line 4: kappa = -5.0 is outside [1, 1e+09]'
+    """
     path = os.path.join(folder, "table.txt")
     try:
         with open(path) as fh:
@@ -100,9 +164,40 @@ def table_lines(folder):
 
 
 def read_table(folder):
-    """[(file line number, {column: raw value})] of the folder's table.txt;
-    the first bad line (:func:`table_lines`) raises :class:`ConfigError`
-    naming the line, before any run starts."""
+    """The run lines of a run folder's table, refused at the first bad one
+    (:func:`table_lines`), before any run starts.
+
+    Parameters
+    ----------
+    folder : str
+        The run folder, holding ``table.txt``.
+
+    Returns
+    -------
+    list of (int, dict)
+        (the line's number in the file, {column: raw text}) per run line.
+
+    Raises
+    ------
+    ConfigError
+        One line naming the first bad line and its problem, or a table
+        that is missing or empty.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> with open(os.path.join(d, "table.txt"), "w") as fh:
+    ...     _ = fh.write("description seed out\\nspheres-seed1 1 'spheres-seed1.h5'\\n")
+    >>> read_table(d)
+    [(2, {'description': 'spheres-seed1', 'seed': '1', 'out': "'spheres-seed1.h5'"})]
+    >>> with open(os.path.join(d, "table.txt"), "a") as fh:
+    ...     _ = fh.write("spheres-seed2 1.5 'spheres-seed2.h5'\\n")
+    >>> read_table(d)
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: .../table.txt line 3: seed = 1.5 is not an integer
+    """
     rows = table_lines(folder)
     for t in rows:
         if t.error:
@@ -111,22 +206,91 @@ def read_table(folder):
 
 
 def dump_of(folder, row):
-    """Path of the dump a table row writes (its ``out`` column, unquoted)."""
+    """The dump a table row writes.
+
+    Parameters
+    ----------
+    folder : str
+        The run folder.
+    row : dict
+        The row's {column: raw text}.
+
+    Returns
+    -------
+    str
+        ``folder`` joined with the row's ``out`` column, unquoted
+        (``run.h5`` without one).
+
+    Examples
+    --------
+    >>> dump_of("runs/t1", {"description": "spheres-seed1", "out": "'spheres-seed1.h5'"})
+    'runs/t1/spheres-seed1.h5'
+    """
     return os.path.join(folder, row.get("out", "'run.h5'").strip("'\""))
 
 
 def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_threads=1, only=None):
-    """Run the unfinished lines of ``folder/table.txt`` (all, or those whose
-    description is in ``only``), ``jobs`` at a time in table order, through
-    :func:`yade_scripts.pool.run_pool`: complete dumps are not run again, a
-    checkpointed line resumes, a crashed one is resumed as the pool's rule
-    says.
+    """Run the unfinished lines of a run folder's table, ``jobs`` at a
+    time in table order, through :func:`yade_scripts.pool.run_pool`:
+    complete dumps are not run again, a checkpointed line resumes, a
+    crashed one is resumed as the pool's rule says. The table is checked
+    first (:func:`read_table`): a bad line stops everything before any run
+    starts.
 
-    Returns {description: exit status} for the lines run or asked for (0
-    for lines complete or done). ``attempts`` (a dict), when given,
-    receives {description: [exit status of each attempt]} for the lines
-    run. ``job_threads``: YADE threads (``yade -jN``, the polyhedra kernel's
-    OpenMP threads) of each job."""
+    Parameters
+    ----------
+    folder : str
+        A generated run folder (:func:`yade_scripts.generate.generate`).
+    jobs : int
+        Cores of the schedule (the runs at a time, on one thread each).
+    tag : str
+        In front of every message.
+    echo : callable
+        Takes each message (one line).
+    attempts : dict, optional
+        Receives {description: [exit status of each attempt]} for the
+        lines run.
+    job_threads : int
+        YADE threads (``yade -jN``, the polyhedra kernel's OpenMP threads)
+        of each job.
+    only : list of str, optional
+        The descriptions of the lines to run (default: all).
+
+    Returns
+    -------
+    dict
+        description -> status of :func:`yade_scripts.pool.run_pool` for
+        the lines asked for: 0 complete (now or already), else the exit
+        code or the reason.
+
+    Raises
+    ------
+    ConfigError
+        A bad table line, a description of ``only`` the table lacks, or no
+        ``yade`` on the PATH.
+    yade_scripts.runlock.RunBusy
+        Another process writes one of the runs; nothing was touched.
+
+    Examples
+    --------
+    A folder whose only line has a complete dump (here an empty one,
+    closed by :class:`postproc.schema.DumpWriter`, standing in for a
+    finished run): nothing is started, but ``yade`` must be on the PATH.
+
+    >>> import os, tempfile
+    >>> from postproc.schema import DumpWriter
+    >>> from yade_scripts.generate import generate
+    >>> out = os.path.join(tempfile.mkdtemp(), "t1")
+    >>> _ = generate(out, "tiny", "spheres", seeds=[1])
+    >>> DumpWriter(os.path.join(out, "spheres-seed1.h5"), "spheres", {}).close()
+    >>> run_batch(out, tag="t1")
+    [t1] spheres-seed1 already complete, not run again
+    {'spheres-seed1': 0}
+    >>> run_batch(out, only=["spheres-seed9"])
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: .../t1/table.txt has no line spheres-seed9
+    """
     from .pool import Job, run_pool
 
     rows = read_table(folder)
@@ -143,6 +307,22 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
 
 
 def main(argv=None):
+    """``python -m yade_scripts.batch FOLDER [--jobs N] [--job-threads T]
+    [--only DESC ...]``: :func:`run_batch` from the command line.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 every line asked for complete; 1 a line not
+        finished (failed); 2 invalid options, folder or table; 4 another
+        process writes a run; 75 stopped by SIGTERM or Ctrl-C (run the
+        same command again to resume).
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.batch",
                                  description="Run the unfinished lines of a run folder's table.txt.")
     ap.add_argument("folder")

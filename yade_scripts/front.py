@@ -148,8 +148,9 @@ LOW_DETAIL = {"v_min": 8, "v_max": 12}
 
 
 def low_detail_library(path, n=200, seed=0):
-    """A library of grains with 8-12 vertices (mean 10), else the standard
-    recipe: the "shape detail" axis of the front."""
+    """Write a library of grains with 8-12 vertices (mean 10), else the
+    standard recipe: the "shape detail" axis of the front (``shapes-low.h5``
+    of the ``smoke`` and ``quick`` plans)."""
     from shapes.generate import Recipe, generate_library
     from shapes.library import write_library
 
@@ -159,7 +160,41 @@ def low_detail_library(path, n=200, seed=0):
 
 
 def write_table(folder, sample, lines):
-    """The run folder's table: one line per point, its overrides as columns."""
+    """Write a plan's lines for one sample as the run folder's
+    ``table.txt``: one line per point, its overrides as columns.
+
+    Parameters
+    ----------
+    folder : str
+        The run folder (it exists).
+    sample : {"polyhedra", "spheres"}
+        The sample, in front of each description and dump name.
+    lines : list of (str, dict)
+        (description, {parameter: value}) per point, as in :data:`PLANS`.
+        Every line must give every column that one line gives, but
+        ``library`` (default ``shapes.h5``).
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    ConfigError
+        A line without a value for a column, or a value that is not valid
+        (:func:`yade_scripts.parameters.coerce`).
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> write_table(d, "spheres", [("ref", {"kappa": 300.0, "inertial_number": 5e-3}),
+    ...                            ("fast", {"kappa": "150", "inertial_number": 1e-2})])
+    >>> print(open(os.path.join(d, "table.txt")).read(), end="")
+    description inertial_number kappa library out
+    spheres-ref 0.005 300.0 'shapes.h5' 'spheres-ref.h5'
+    spheres-fast 0.01 150.0 'shapes.h5' 'spheres-fast.h5'
+    """
     keys = sorted({k for _, o in lines for k in o} | {"library"})
     with open(os.path.join(folder, "table.txt"), "w") as fh:
         fh.write(" ".join(["description"] + keys + ["out"]) + "\n")
@@ -191,8 +226,61 @@ FRONT_SAMPLES = SAMPLES[::-1]
 
 
 def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
-    """Generate, run (:func:`yade_scripts.batch.run_batch`), analyse;
-    returns {sample: {description: status}}."""
+    """Run a sweep: for each sample, generate its run folder ``OUT/<sample>``
+    on the plan's preset (unless it is there), write the plan's lines as its
+    table (:func:`write_table`), run the unfinished lines
+    (:func:`yade_scripts.batch.run_batch`) and analyse each complete dump
+    that has no analysis yet into ``analysis-<description>/``
+    (:func:`yade_scripts.study.analyse_dump`, without standard errors). A
+    complete dump made with parameters other than its line's is reported
+    and not analysed (status "stale dump"). The plan goes to
+    ``OUT/front-plan.json``; the front's tables and figures are
+    :func:`postproc.study.front.write_front`'s (``main`` calls it).
+
+    Parameters
+    ----------
+    out : str
+        The sweep's folder.
+    plan : str
+        One of :data:`PLANS` ("default", "kernel", "timestep", "facepair",
+        "quick", "smoke").
+    jobs : int
+        Cores of each sample's schedule (runs at a time, one thread each).
+    library : str, optional
+        The polyhedra's shape library (default
+        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+    samples : sequence of str
+        The samples to run, in this order (default: spheres, the cheap one,
+        first).
+
+    Returns
+    -------
+    dict
+        sample -> {description: status}: 0 complete, else the exit code or
+        the reason (:func:`yade_scripts.pool.run_pool`), or "stale dump".
+
+    Raises
+    ------
+    ConfigError
+        An unknown plan, a bad table line, or no ``yade`` on the PATH.
+
+    Examples
+    --------
+    The ``timestep`` plan sweeps the polyhedra's time step only: for the
+    spheres it makes the folder and an empty table, and runs nothing (but
+    ``yade`` must be on the PATH).
+
+    >>> import json, os, tempfile
+    >>> out = tempfile.mkdtemp()
+    >>> run_front(out, "timestep", samples=("spheres",))
+    {'spheres': {}}
+    >>> sorted(os.listdir(out)), json.load(open(os.path.join(out, "front-plan.json")))["preset"]
+    (['front-plan.json', 'spheres'], 'default')
+    >>> run_front(out, "fastest")
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: unknown plan 'fastest'; choose from ['default', 'facepair', ...]
+    """
     from .batch import dump_of, read_table, run_batch
     from .study import analyse_dump
 
@@ -231,6 +319,21 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
 
 
 def main(argv=None):
+    """``python -m yade_scripts.front --plan PLAN --out OUT [--jobs N]``:
+    :func:`run_front`, then :func:`postproc.study.front.write_front`, whose
+    table it prints.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 every run done; 1 a run failed (or its dump is
+        stale); 2 invalid options.
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.front", description=__doc__.splitlines()[0])
     ap.add_argument("--plan", default=DEFAULT_PLAN, help=f"one of {sorted(PLANS)} (default {DEFAULT_PLAN})")
     ap.add_argument("--out", required=True)

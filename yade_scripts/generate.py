@@ -48,6 +48,31 @@ def render_scene(params):
 
 
 def parse_overrides(items):
+    """The overrides of ``--set NAME=VALUE`` options: {NAME: VALUE text}.
+
+    Parameters
+    ----------
+    items : list of str or None
+        The options' values, as argparse gives them (None: none given).
+
+    Returns
+    -------
+    dict
+        name -> value text, both stripped; the values are checked later
+        (:func:`yade_scripts.parameters.coerce`).
+
+    Raises
+    ------
+    ConfigError
+        An item without ``=``.
+
+    Examples
+    --------
+    >>> parse_overrides(["kappa=1000", " seed = 4"])
+    {'kappa': '1000', 'seed': '4'}
+    >>> parse_overrides(None)
+    {}
+    """
     out = {}
     for item in items or []:
         if "=" not in item:
@@ -58,7 +83,72 @@ def parse_overrides(items):
 
 
 def generate(out, preset, sample, overrides=None, seeds=None, library=None):
-    """Create the run folder ``out``; returns the resolved parameters."""
+    """Create the run folder ``out``: everything one sample's runs need, so
+    that the folder can be moved and run again.
+
+    It holds ``triaxial.py`` (the scene, its parameter block set to the
+    resolved parameters), ``pkg/`` (:func:`copy_packages`), ``params.json``
+    (the preset's name and the parameters), ``table.txt`` (a yade-batch
+    table, one line per seed, :func:`write_seed_table`) and, for
+    polyhedra, the shape library under the name of the ``library``
+    parameter (``shapes.h5``). Nothing is run: ``cd out && yade -x
+    triaxial.py`` runs the scene's own parameters,
+    ``python -m yade_scripts.batch out`` every line of the table.
+
+    Parameters
+    ----------
+    out : str
+        The folder to make (its parents too); it must not hold a
+        ``triaxial.py`` already.
+    preset : str
+        A preset of :data:`yade_scripts.presets.PRESETS` ("tiny", "default"
+        ...).
+    sample : {"polyhedra", "spheres"}
+        S1 or S2.
+    overrides : dict, optional
+        name -> value (or its text, as ``--set`` gives it), applied last
+        (:func:`yade_scripts.presets.resolve`).
+    seeds : list of int, optional
+        One table line per seed (default: the resolved ``seed``, 1 unless
+        overridden).
+    library : str, optional
+        The polyhedra's shape library (an HDF5 file of
+        :mod:`shapes.library`; default :data:`DEFAULT_LIBRARY`, which
+        ``make shapes`` builds); not read for spheres.
+
+    Returns
+    -------
+    dict
+        The resolved, checked parameters the scene runs with (those of
+        ``params.json`` but for ``preset``).
+
+    Raises
+    ------
+    ConfigError
+        One line, before anything is written: an invalid preset, sample or
+        override, a folder that holds a run already, or a missing shape
+        library.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> out = os.path.join(tempfile.mkdtemp(), "t1")
+    >>> p = generate(out, "tiny", "spheres", {"kappa": "300"}, seeds=[1, 2])
+    >>> p["n_particles"], p["kappa"], p["sigma0"]          # 40 spheres, kappa set, sigma0 in Pa
+    (40, 300.0, 10000.0)
+    >>> sorted(os.listdir(out)), sorted(os.listdir(os.path.join(out, "pkg")))
+    (['params.json', 'pkg', 'table.txt', 'triaxial.py'], ['postproc', 'shapes', 'yade_scripts'])
+    >>> print(open(os.path.join(out, "table.txt")).read(), end="")
+    description seed out
+    spheres-seed1 1 'spheres-seed1.h5'
+    spheres-seed2 2 'spheres-seed2.h5'
+    >>> "    kappa=300.0," in open(os.path.join(out, "triaxial.py")).read()
+    True
+    >>> generate(out, "tiny", "spheres")
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: .../t1 already holds a run; choose another --out
+    """
     params = resolve(preset, sample, overrides)
     if os.path.exists(os.path.join(out, "triaxial.py")):
         raise ConfigError(f"{out} already holds a run; choose another --out")
@@ -101,6 +191,20 @@ def write_seed_table(out, sample, seeds):
 
 
 def main(argv=None):
+    """``python -m yade_scripts.generate``: make a run folder
+    (:func:`generate`) and, with ``--slurm``, its SLURM array script
+    (:func:`yade_scripts.slurm.write_slurm`); prints how to run it.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 made, 2 refused (one line on stderr).
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.generate", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
     ap.add_argument("--sample", required=True, choices=SAMPLES)

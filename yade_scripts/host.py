@@ -21,10 +21,32 @@ SIMD_FLAGS = ("sse4_2", "avx", "avx2", "fma", "avx512f", "avx512dq", "avx512vl",
 
 
 def cpu_from_cpuinfo(text):
-    """(model, sorted SIMD_FLAGS present) from the text of /proc/cpuinfo,
-    its first processor block: model is "NAME (family F, model M, stepping
-    S)" (a virtual machine's name alone can hide the generation), with the
-    parts it does not give left out; ("", []) when it gives none."""
+    """The CPU's model and vector extensions, from the text of
+    /proc/cpuinfo (its first processor block).
+
+    Parameters
+    ----------
+    text : str
+        The text of /proc/cpuinfo.
+
+    Returns
+    -------
+    model : str
+        "NAME (family F, model M, stepping S)" (a virtual machine's name
+        alone can hide the generation), the parts the text does not give
+        left out; "" when it gives none.
+    flags : list of str
+        The :data:`SIMD_FLAGS` among the block's ``flags``, sorted.
+
+    Examples
+    --------
+    >>> text = ("processor : 0\\nmodel name : Intel Xeon\\ncpu family : 6\\nmodel : 85\\n"
+    ...         "stepping : 7\\nflags : fpu sse4_2 avx avx2 fma\\n\\nprocessor : 1\\n")
+    >>> cpu_from_cpuinfo(text)
+    ('Intel Xeon (family 6, model 85, stepping 7)', ['avx', 'avx2', 'fma', 'sse4_2'])
+    >>> cpu_from_cpuinfo("")
+    ('', [])
+    """
     first = text.split("\n\n", 1)[0]
     fields = {}
     for line in first.splitlines():
@@ -40,8 +62,23 @@ def cpu_from_cpuinfo(text):
 
 def numpy_simd():
     """numpy's version and the SIMD extensions its dispatch found on this
-    CPU (sorted names; [] when numpy does not say), or (None, []) without
-    numpy."""
+    CPU.
+
+    Returns
+    -------
+    version : str or None
+        numpy's version; None without numpy.
+    extensions : list of str
+        The extensions numpy's dispatch found (sorted names, e.g. "AVX2",
+        "FMA3"); [] when numpy does not say or is missing.
+
+    Examples
+    --------
+    >>> import numpy
+    >>> version, extensions = numpy_simd()
+    >>> version == numpy.__version__, isinstance(extensions, list)
+    (True, True)
+    """
     try:
         import numpy as np
     except ImportError:
@@ -58,11 +95,33 @@ def numpy_simd():
 
 
 def host_info(cpuinfo_path="/proc/cpuinfo"):
-    """Dict of the host facts a run's numbers can depend on: ``hostname``,
-    ``machine``, ``cpu`` (model name), ``cpu_flags`` (SIMD_FLAGS present),
-    ``numpy`` (version), ``numpy_simd`` (extensions numpy dispatches to),
-    ``libc`` ("glibc 2.36"), ``python``. A fact that cannot be read is
-    an empty string or list, never an error."""
+    """The facts of this host that a run's numbers can depend on, as the
+    scene stores them in ``run.info.json`` (``"host"``).
+
+    Parameters
+    ----------
+    cpuinfo_path : str
+        Where to read the CPU's model and flags (:func:`cpu_from_cpuinfo`).
+
+    Returns
+    -------
+    dict
+        ``hostname``, ``machine`` (e.g. "x86_64"), ``cpu`` (model name),
+        ``cpu_flags`` (the :data:`SIMD_FLAGS` present), ``numpy``
+        (version), ``numpy_simd`` (the extensions numpy dispatches to),
+        ``libc`` (e.g. "glibc 2.36"), ``python`` (version). A fact that
+        cannot be read is an empty string or list, never an error.
+
+    Examples
+    --------
+    >>> info = host_info()
+    >>> sorted(info)
+    ['cpu', 'cpu_flags', 'hostname', 'libc', 'machine', 'numpy', 'numpy_simd', 'python']
+    >>> info["python"] == platform.python_version()
+    True
+    >>> host_info("/nonexistent/cpuinfo")["cpu"], host_info("/nonexistent/cpuinfo")["cpu_flags"]
+    ('', [])
+    """
     try:
         with open(cpuinfo_path) as fh:
             model, flags = cpu_from_cpuinfo(fh.read())

@@ -118,10 +118,12 @@ class KernelContacts:
 
     @seconds.setter
     def seconds(self, s):
+        """Set the three times from a dict like the getter's (a resumed run)."""
         self._counters[:3] = [s["read"], s["kernel"], s["apply"]]
 
     @property
     def calls(self):
+        """Steps the kernel was called for (either path)."""
         return int(self._counters[3])
 
     @property
@@ -134,6 +136,7 @@ class KernelContacts:
         return {"seconds": self.seconds, "calls": self.calls, "touch_steps": self.touch_steps}
 
     def set_counters(self, c):
+        """Put back the counters :meth:`counters` returned (a resumed run)."""
         self.seconds = c["seconds"]
         self._counters[3:] = [int(c["calls"]), int(c["touch_steps"])]
 
@@ -338,6 +341,8 @@ class KernelContacts:
         return self.engine.unbalanced()
 
     def memory_bytes(self):
+        """Bytes the compiled kernel's engine holds now (its own count,
+        :meth:`shapes.engine.ContactEngine.memory_bytes`)."""
         return self.engine.memory_bytes()
 
     def contacts(self):

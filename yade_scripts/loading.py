@@ -105,7 +105,10 @@ class TriaxialLoading:
     # ------------------------------------------------------------ shear
     def strains(self, L):
         """(3,) logarithmic strains ln(L0 / L) since the isotropic state
-        (zeros before it)."""
+        (zeros before it): the paper's cumulative strains, e.g. eps_1 =
+        integral from H0 to H of dH'/H' (Azema, Radjai & Saussine 2009,
+        "Shear strength"), with the sign turned so that compression is
+        positive."""
         return np.log(self.L0 / L) if self.H0 else np.zeros(3)
 
     def shear_velocities(self, sig, L):
@@ -146,7 +149,12 @@ class TriaxialLoading:
         self.interaction_steps += n_interactions * steps
 
     def log_row(self, step, time, sig, L, phi, unbalanced, n_interactions, n_contacts, steps_per_second):
-        """One row of OUT.log.csv (columns :data:`LOG_HEADER`)."""
+        """One row of OUT.log.csv (columns :data:`LOG_HEADER`). Its
+        ``q_over_p`` is the walls': (s1 - s3) / (s1 + 2 s3) with s1 the
+        axial (z) wall stress and s3 the mean of the lateral ones, i.e. the
+        paper's q = (sigma1 - sigma3) / 3 over p = (sigma1 + 2 sigma3) / 3
+        (Azema, Radjai & Saussine 2009, "Shear strength"); NaN before any
+        wall is touched."""
         eps = self.strains(L)
         s1, s3 = sig[2], 0.5 * (sig[0] + sig[1])
         qp = (s1 - s3) / (s1 + 2 * s3) if s1 + 2 * s3 != 0 else float("nan")     # no wall touched yet

@@ -35,6 +35,49 @@ class ConfigError(ValueError):
 
 
 class Parameter(NamedTuple):
+    """One scene parameter: a row of :data:`PARAMETERS`.
+
+    Parameters
+    ----------
+    name : str
+        The name the scene, the presets, ``--set NAME=VALUE`` and the
+        columns of a run folder's ``table.txt`` all use.
+    type : type
+        ``str``, ``int``, ``float`` or ``bool``: what :func:`coerce` makes
+        of a value.
+    allowed : tuple or None
+        ``(lo, hi)``, both included, for a number; the choices for a
+        string; None: any value of the type.
+    default : object
+        Its value in the default preset's polyhedra sample (S1), which a
+        preset keeps unless it lists the parameter.
+    doc : str
+        One line: what it sets, with its unit (SI: Pa, m, m/s, s, kg/m^3;
+        kappa, inertial numbers, strains and friction coefficients are
+        dimensionless).
+
+    Attributes
+    ----------
+    name : str
+        As given.
+    type : type
+        As given.
+    allowed : tuple or None
+        As given.
+    default : object
+        As given.
+    doc : str
+        As given; :func:`render_block` writes it as the comment of the
+        parameter's line in the scene.
+
+    Examples
+    --------
+    >>> p = next(q for q in PARAMETERS if q.name == "sigma0")
+    >>> p.type.__name__, p.allowed, p.default
+    ('float', (0.001, 1000000000000.0), 10000.0)
+    >>> p.doc
+    'Pa, confining stress'
+    """
     name: str
     type: type
     allowed: tuple | None   # (lo, hi) for numbers, the choices for strings, None: any
@@ -111,10 +154,44 @@ SCHEMA = {p.name: (p.type, p.allowed) for p in PARAMETERS}
 
 
 def coerce(key, value):
-    """Check one parameter against :data:`SCHEMA`; returns the typed value.
-    Raises :class:`ConfigError` with one line naming the parameter and the
-    problem (unknown name, with the closest known one; wrong type; out of
-    range)."""
+    """One parameter's value, typed and checked against :data:`SCHEMA`.
+
+    Parameters
+    ----------
+    key : str
+        The parameter's name.
+    value : object
+        Its value, or its text as ``--set`` or a table column gives it
+        (``"300"``). A bool takes ``true``, ``1``, ``yes`` or ``false``,
+        ``0``, ``no`` (any case); an int takes a whole number written as a
+        float (``"1e3"``).
+
+    Returns
+    -------
+    object
+        The value as the parameter's type: a number within its range
+        ``[lo, hi]`` (NaN refused), a string among its choices.
+
+    Raises
+    ------
+    ConfigError
+        One line naming the parameter and the problem: an unknown name
+        (with the closest known one), a value that is not of its type, or
+        one out of range.
+
+    Examples
+    --------
+    >>> coerce("kappa", "300"), coerce("n_particles", "1e3"), coerce("resume", "no")
+    (300.0, 1000, False)
+    >>> coerce("kapa", 300)
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: unknown parameter 'kapa' (did you mean 'kappa'?)
+    >>> coerce("friction", -0.1)
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: friction = -0.1 is outside [0, 10]
+    """
     if key not in SCHEMA:
         close = difflib.get_close_matches(key, SCHEMA, n=1)
         hint = f" (did you mean {close[0]!r}?)" if close else ""
@@ -146,9 +223,41 @@ def coerce(key, value):
 
 
 def check(params):
-    """The full, typed parameter dict from ``params`` (name -> value or
-    string) over :data:`DEFAULTS`, with the checks that involve two
-    parameters. Raises :class:`ConfigError`."""
+    """The full, typed parameters of one scene, checked.
+
+    ``params`` over :data:`DEFAULTS`, every value through :func:`coerce`,
+    then the checks that involve several parameters: polyhedra placed as
+    grains (``placement = "grains"``) need ``contact_engine = "kernel"``;
+    ``dump_strain`` is at most ``final_strain``; and the grains fit their
+    initial box (``initial_fraction`` at most the :data:`PLACEMENT_LIMIT`
+    of the placement, and a box wider and higher than the largest grain,
+    :data:`D_MAX`).
+
+    Parameters
+    ----------
+    params : dict
+        name -> value (or its text); a name not given takes its default.
+
+    Returns
+    -------
+    dict
+        Every parameter of :data:`PARAMETERS`, typed, in their order.
+
+    Raises
+    ------
+    ConfigError
+        One line naming the parameter(s) and the problem.
+
+    Examples
+    --------
+    >>> p = check({"sample": "spheres", "n_particles": "40"})
+    >>> p["n_particles"], p["sigma0"], p["initial_fraction"]
+    (40, 10000.0, 0.25)
+    >>> check({"initial_fraction": 0.32})
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: initial_fraction = 0.32: random sequential addition of the grains with ...
+    """
     p = {k: coerce(k, v) for k, v in {**DEFAULTS, **params}.items()}
     if p["placement"] == "grains" and p["sample"] == "polyhedra" and p["contact_engine"] != "kernel":
         raise ConfigError("placement 'grains' needs contact_engine 'kernel' (YADE re-hulls its Polyhedra in "
@@ -181,17 +290,39 @@ def _check_box(p):
 
 
 def changed(recorded, wanted, names=None):
-    """The names (sorted) whose value in ``wanted`` differs from the one in
-    ``recorded``: a run is reused only when this is empty (the study's run
-    folders against their ``params.json``, a sweep's finished dumps against
-    their table line). recorded : dict of what a run was made with (from
-    JSON); wanted : dict of what is asked for now, a parameter's value given
-    as it would be set (checked with :func:`coerce`, so ``"300"`` equals
-    300.0); names : the names compared (default: every name of either).
-    Values are compared as JSON gives them back (tuples as lists). A
-    parameter of the table missing from ``recorded`` counts as its default:
-    a parameter added later has a default that does what the scene did
-    before it existed, so older runs are not set aside for it."""
+    """The parameters whose value asked for now differs from the one a run
+    was made with: a run is reused only when there are none (the study's
+    run folders against their ``params.json``, a sweep's finished dumps
+    against their table line).
+
+    Values are compared as :func:`coerce` types them (so ``"300"`` equals
+    300.0; a value that is not valid is compared as it is) and as JSON
+    gives them back (tuples as lists). A parameter of the table missing
+    from ``recorded`` counts as its default: a parameter added later has a
+    default that does what the scene did before it existed, so older runs
+    are not set aside for it.
+
+    Parameters
+    ----------
+    recorded : dict
+        What the run was made with (read from JSON).
+    wanted : dict
+        What is asked for now, each value as it would be set.
+    names : iterable of str, optional
+        The names compared (default: every name of either dict).
+
+    Returns
+    -------
+    list of str
+        The names that differ or are in only one of the two, sorted.
+
+    Examples
+    --------
+    >>> changed({"kappa": 300.0, "seed": 1}, {"kappa": "300", "seed": 2})
+    ['seed']
+    >>> changed({}, {"kappa": 3000.0})      # missing: the default, 3000
+    []
+    """
     def norm(k, v):
         if k in SCHEMA and v is not None:
             try:

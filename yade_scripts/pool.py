@@ -110,16 +110,60 @@ def yade_env(folder=None):
 
 @dataclass
 class Job:
-    """One run: ``folder`` (a generated run folder), ``line`` (its line in
-    table.txt, or None: the scene's own parameters), ``description``,
-    ``dump`` (path of the dump it writes), ``cost`` (estimated core-seconds:
-    the order), ``widen`` (True when more threads speed it up), ``tag`` (the
-    sample, for the messages), ``threads`` (threads it starts on), ``log``
-    (default ``triaxial.py.<description>.log`` in the folder, as yade-batch
-    names it), ``echo_all`` (relay every line of the scene), ``table`` (the
-    table ``line`` is in, default the folder's ``table.txt``). After the
-    pool: ``exits`` the exit codes of its attempts (stops asked for left
-    out), ``verdict`` the rule's last :class:`~yade_scripts.runstate.Verdict`."""
+    """One run for :func:`run_pool`.
+
+    Parameters
+    ----------
+    folder : str
+        The generated run folder; YADE runs its ``triaxial.py`` there.
+    line : int or None
+        The run's line in the table (its line number in the file, header
+        included, as yade-batch counts), or None: the scene's own
+        parameters.
+    description : str
+        The run's name (a table line's ``description``); unique in a pool.
+    dump : str
+        The dump the run writes (``STEM.h5``; its companions,
+        :class:`~yade_scripts.runstate.RunFiles`, beside it).
+    cost : float
+        Estimated core-seconds (:func:`yade_scripts.slurm.estimate`): the
+        larger, the earlier the job starts.
+    widen : bool
+        True when more threads speed it up (polyhedra on the compiled
+        kernel): it may be stopped and resumed on cores that free up.
+    tag : str
+        The sample (or a sweep's name), in front of its messages.
+    threads : int
+        YADE threads (``yade -jN``) it starts on.
+    log : str
+        The log every attempt appends to (default
+        ``triaxial.py.<description>.log`` in ``folder``, as yade-batch
+        names it).
+    echo_all : bool
+        Relay every line of the scene (else the newest one every
+        :data:`PROGRESS_SECONDS`).
+    table : str
+        The table ``line`` is in (default ``table.txt``, relative to
+        ``folder``).
+
+    Attributes
+    ----------
+    exits : list of int
+        After the pool: the exit code of each attempt, stops asked for
+        left out.
+    verdict : yade_scripts.runstate.Verdict or None
+        After the pool: the rule's word on its last attempt (None when it
+        did not run).
+    name : str
+        ``[tag] description`` (``[tag]`` when they are the same), as the
+        messages name it.
+
+    Examples
+    --------
+    >>> job = Job("runs/t1", 2, "spheres-seed1", "runs/t1/spheres-seed1.h5", tag="spheres")
+    >>> job.name, job.log
+    ('[spheres] spheres-seed1', 'runs/t1/triaxial.py.spheres-seed1.log')
+    """
     folder: str
     line: int | None
     description: str
@@ -299,21 +343,91 @@ def _catch_stop_signals(flag):
 
 def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
              max_resumes=MAX_RESUMES, after=None):
-    """Run ``jobs`` (:class:`Job`) on ``cores`` cores (module docstring).
+    """Run jobs on a fixed number of cores, each to its end: the one loop
+    every launcher uses (the module docstring gives the schedule).
 
-    Returns {description: status}: 0 done or complete already; the exit
-    code of a failed run; "no complete dump" when it exited 0 without one;
-    "stopped" when ``stopping()`` stopped it (resumable) or it never
-    started. Each job's ``exits`` lists the exit codes of its attempts
-    (stops asked for left out) and ``verdict`` the rule's last word.
-    ``record``: JSON file of every attempt and the schedule's
-    :func:`summary`, rewritten as the schedule goes. ``note``: {key:
-    value} added to each attempt's header and record (a SLURM job id).
-    ``yade``: the executable (default: yade on the PATH). ``after``:
-    job -> command (argv list) or None, the work after each complete job
-    (module docstring). Without ``stopping``, the pool's own SIGTERM or
-    SIGINT stops it (the module docstring; from the main thread, where
-    Python sets signal handlers)."""
+    First it takes the lock of every job's run, all or none
+    (:func:`hold_runs`), and marks attempts that a dead launcher left as
+    running as killed. A job whose dump is complete is not run; one with a
+    checkpoint resumes; any other starts afresh (what an unfinished attempt
+    left is removed). Each attempt is ``YADE -j THREADS -n -x triaxial.py``
+    in the job's folder (with ``YADE_BATCH=TABLE:LINE`` for a table line),
+    its output appended to the job's log, and is recorded in the run's
+    ``STEM.attempts.json``; after it ends,
+    :func:`yade_scripts.runstate.judge` decides: done, resumed or failed.
+
+    Parameters
+    ----------
+    jobs : list of Job
+        The runs; their descriptions must differ.
+    cores : int
+        Cores to fill (>= 1): the sum of the running jobs' threads and of
+        the work after runs stays within it, but a job that alone needs
+        more starts when nothing else runs.
+    record : str, optional
+        A JSON file of every attempt (job, start and end in s from the
+        pool's start, threads, exit) and the schedule's :func:`summary`,
+        rewritten as the schedule goes.
+    echo : callable
+        Takes each message (one line, the job's name in front).
+    yade : str, optional
+        The executable (default: ``yade`` on the PATH).
+    stopping : callable, optional
+        Returns True once the pool is to stop: every running job gets
+        SIGTERM (it writes a checkpoint and exits 75), nothing more starts.
+        Without it the pool's own SIGTERM or SIGINT stops it so (the
+        handlers are installed while it runs, from the main thread).
+    note : dict, optional
+        key -> value added to each attempt's header line and record (a
+        SLURM job id).
+    max_resumes : int
+        Crashes of a run started again at most
+        (:data:`~yade_scripts.runstate.MAX_RESUMES`).
+    after : callable, optional
+        job -> command (argv list) or None: the work after each complete
+        job, run on a free core (its output in ``STEM.after.log``).
+
+    Returns
+    -------
+    dict
+        description -> status: 0 done or complete already; the exit code
+        of a failed run; "no complete dump" when it exited 0 without one;
+        "stopped" when ``stopping()`` (or the pool's signal) stopped it,
+        resumable, or it never started. Each job's ``exits`` then lists the
+        exit codes of its attempts (stops asked for left out) and
+        ``verdict`` the rule's last word.
+
+    Raises
+    ------
+    ConfigError
+        ``cores < 1``, or no ``yade`` executable.
+    yade_scripts.runlock.RunBusy
+        Another process holds the lock of one of the runs (one line naming
+        it); nothing was touched.
+
+    Examples
+    --------
+    A job whose dump is complete is not run again; the other runs here on
+    the trivial command ``true`` in place of YADE: it exits 0 without
+    writing a dump, which the rule calls a failure.
+
+    >>> import os, shutil, tempfile
+    >>> from postproc.schema import DumpWriter
+    >>> d = tempfile.mkdtemp()
+    >>> DumpWriter(os.path.join(d, "a.h5"), "spheres", {}).close()   # a complete (empty) dump
+    >>> jobs = [Job(d, None, "a", os.path.join(d, "a.h5"), tag="a"),
+    ...         Job(d, None, "b", os.path.join(d, "b.h5"), tag="b")]
+    >>> run_pool(jobs, cores=1, yade=shutil.which("true"))
+    [a] already complete, not run again
+    [b] started on 1 thread(s)
+    [b] FAILED (exit 0 without a complete dump; see .../triaxial.py.b.log)
+    {'a': 0, 'b': 'no complete dump'}
+    >>> jobs[1].exits, jobs[1].verdict.action
+    ([0], 'failed')
+    >>> from yade_scripts.runstate import read_attempts
+    >>> [(r["attempt"], r["exit"], r["action"]) for r in read_attempts(os.path.join(d, "b.h5"))]
+    [(1, 0, 'failed')]
+    """
     if stopping is not None or threading.current_thread() is not threading.main_thread():
         return _run_pool(jobs, cores, record, echo, yade, stopping or (lambda: False), note, max_resumes, after,
                          own_session=False)
@@ -344,6 +458,17 @@ def hold_runs(jobs, what="launcher"):
 
 
 def release_runs(locks):
+    """Give back the locks :func:`hold_runs` took.
+
+    Parameters
+    ----------
+    locks : dict
+        description -> :class:`~yade_scripts.runlock.RunLock`.
+
+    Returns
+    -------
+    None
+    """
     for lock in locks.values():
         lock.release()
 

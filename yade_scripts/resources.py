@@ -21,14 +21,44 @@ MEMORY_PER_GRAIN_MB = 0.057
 
 
 def memory_mb(params):
-    """Peak resident memory (MB) of one run with these parameters (model of
-    the module docstring)."""
+    """The peak resident memory of one run: MEMORY_BASE_MB +
+    MEMORY_PER_GRAIN_MB x N (274 MB + 57 kB per grain, the model of the
+    module docstring, measured on the default S1 and used for both samples).
+
+    Parameters
+    ----------
+    params : dict
+        A run's parameters (:func:`yade_scripts.presets.resolve`); only
+        ``n_particles`` is read.
+
+    Returns
+    -------
+    float
+        MB.
+
+    Examples
+    --------
+    >>> from yade_scripts.presets import resolve
+    >>> round(memory_mb(resolve("default", "polyhedra")), 1), round(memory_mb({"n_particles": 36933}))
+    (331.0, 2379)
+    """
     return MEMORY_BASE_MB + MEMORY_PER_GRAIN_MB * int(params["n_particles"])
 
 
 def machine_memory_mb():
-    """The machine's total memory (MB), from /proc/meminfo or sysconf; None
-    when unknown."""
+    """The machine's total memory.
+
+    Returns
+    -------
+    float or None
+        MB (2^20 bytes), from ``MemTotal`` of /proc/meminfo, else from
+        sysconf; None when neither tells.
+
+    Examples
+    --------
+    >>> machine_memory_mb() > 0
+    True
+    """
     try:
         with open("/proc/meminfo") as fh:
             for line in fh:
@@ -43,9 +73,37 @@ def machine_memory_mb():
 
 
 def check_memory(runs, memory_total_mb=None):
-    """Raise :class:`ConfigError` (one line) when the runs started at once,
-    ``runs`` = [checked parameter dicts], need more memory than
-    ``memory_total_mb`` (default: this machine's)."""
+    """Refuse runs that together need more memory than the machine has,
+    before any of them starts (the sum of :func:`memory_mb`).
+
+    Parameters
+    ----------
+    runs : list of dict
+        The checked parameters of the runs that go at once.
+    memory_total_mb : float, optional
+        MB available (default: this machine's, :func:`machine_memory_mb`;
+        nothing is refused when that is unknown).
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    ConfigError
+        One line: how much the runs need, the largest of them, and the
+        memory there is.
+
+    Examples
+    --------
+    >>> from yade_scripts.presets import resolve
+    >>> s1 = resolve("default", "polyhedra")
+    >>> check_memory([s1, s1], memory_total_mb=1024)          # 662 MB of 1 GB
+    >>> check_memory([s1] * 4, memory_total_mb=1024)
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: 4 run(s) at once need about 1.3 GB of memory (the largest, ...
+    """
     total = machine_memory_mb() if memory_total_mb is None else memory_total_mb
     need = sum(memory_mb(p) for p in runs)
     if total is not None and runs and need > total:

@@ -223,8 +223,29 @@ _TIME = re.compile(r"(?:(\d+)-)?(\d+)(?::(\d+))?(?::(\d+))?")
 
 
 def time_seconds(text):
-    """Seconds of a SLURM time limit (``MM``, ``MM:SS``, ``HH:MM:SS``,
-    ``D-HH``, ``D-HH:MM``, ``D-HH:MM:SS``); ValueError when it is none."""
+    """The seconds of a SLURM time limit.
+
+    Parameters
+    ----------
+    text : str
+        ``MM``, ``MM:SS``, ``HH:MM:SS``, ``D-HH``, ``D-HH:MM`` or
+        ``D-HH:MM:SS``, as ``sbatch --time`` takes it.
+
+    Returns
+    -------
+    int
+        s.
+
+    Raises
+    ------
+    ValueError
+        When ``text`` is none of these.
+
+    Examples
+    --------
+    >>> time_seconds("90"), time_seconds("1:30:00"), time_seconds("2-12"), time_seconds("7-00:00:00")
+    (5400, 5400, 216000, 604800)
+    """
     m = _TIME.fullmatch(text.strip())
     if not m:
         raise ValueError(f"{text!r} is not a SLURM time (like 24:00:00 or 7-00:00:00)")
@@ -239,8 +260,33 @@ def time_seconds(text):
 
 
 def check_options(cpus=2, time="24:00:00", partition=None, requeues=None, signal_seconds=DEFAULT_SIGNAL_SECONDS):
-    """Raise ConfigError (one line) unless the options of :func:`write_slurm`
-    make a valid array script."""
+    """Refuse options of :func:`write_slurm` that do not make a valid array
+    script (``generate --slurm`` checks them before it makes the folder).
+
+    Parameters
+    ----------
+    cpus, time, partition, requeues, signal_seconds
+        As :func:`write_slurm` takes them (``requeues`` None: the default).
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    ConfigError
+        One line: a time that is not a SLURM time, fewer than one core,
+        negative requeues, a warning signal not within the time limit, or
+        a partition name with characters SLURM does not allow.
+
+    Examples
+    --------
+    >>> check_options(cpus=8, time="7-00:00:00")
+    >>> check_options(time="0:04:00")
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: --slurm-signal 300 s must be ... less than the time limit 0:04:00 (240 s)
+    """
     from .parameters import ConfigError
 
     try:
@@ -258,13 +304,59 @@ def check_options(cpus=2, time="24:00:00", partition=None, requeues=None, signal
 
 def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requeues=None,
                 signal_seconds=DEFAULT_SIGNAL_SECONDS):
-    """Write ``folder/slurm.sh`` for the run lines of its table (checked
-    first: a bad line raises ConfigError naming it). Returns its path.
+    """Write ``folder/slurm.sh``: a SLURM job array with one task per run
+    line of the folder's table (the module docstring says what a task
+    does). The options and the table are checked first; the script's
+    comments give the cost of one line by :func:`estimate`.
 
-    cpus : cores per task (YADE's ``-j``: the polyhedra kernel's threads);
-    time : the time limit of one job; requeues : requeues of a task at most
-    (default :data:`yade_scripts.task.DEFAULT_REQUEUES`); signal_seconds :
-    SIGUSR1 this long before the time limit."""
+    Parameters
+    ----------
+    folder : str
+        A generated run folder (``table.txt``, ``triaxial.py``,
+        ``params.json``, ``pkg/``); its absolute path, which the script
+        holds, may not contain spaces.
+    cpus : int
+        Cores per task (``--cpus-per-task``; the task runs YADE with as
+        many threads: the polyhedra kernel's).
+    time : str
+        The time limit of one job (``--time``, a SLURM time).
+    partition : str, optional
+        The SLURM partition (default: the cluster's).
+    name : str, optional
+        The job's name (default: the folder's name).
+    requeues : int, optional
+        Requeues of a task at most, each after a time limit (default
+        :data:`yade_scripts.task.DEFAULT_REQUEUES`).
+    signal_seconds : int
+        s: SIGUSR1 this long before the time limit (``--signal=B:USR1@S``),
+        so that YADE writes its checkpoint and the task requeues itself.
+
+    Returns
+    -------
+    str
+        The script's path (executable).
+
+    Raises
+    ------
+    ConfigError
+        One line: invalid options (:func:`check_options`), a path with
+        spaces, a bad or missing table line, or a table without run lines.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from yade_scripts.generate import generate
+    >>> out = os.path.join(tempfile.mkdtemp(), "s2")
+    >>> _ = generate(out, "tiny", "spheres", seeds=[1, 2, 3])
+    >>> path = write_slurm(out, cpus=4, time="2:00:00")
+    >>> print("\\n".join(open(path).read().splitlines()[:6]))
+    #!/bin/bash
+    #SBATCH --job-name=s2
+    #SBATCH --array=1-3
+    #SBATCH --cpus-per-task=4
+    #SBATCH --time=2:00:00
+    #SBATCH --signal=B:USR1@300
+    """
     from .batch import read_table
     from .parameters import ConfigError
     from .task import DEFAULT_REQUEUES
@@ -341,8 +433,24 @@ ON_A_NODE = {"RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "RESIZING", "S
 
 
 def recorded_jobs(folder):
-    """The array job ids recorded for the run folder ``folder`` (list of
-    str, oldest first; [] when none)."""
+    """The array job ids recorded for a run folder (:func:`record_job`).
+
+    Parameters
+    ----------
+    folder : str
+        The run folder.
+
+    Returns
+    -------
+    list of str
+        Oldest first; [] when none is recorded or the record is unreadable.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> recorded_jobs(tempfile.mkdtemp())
+    []
+    """
     try:
         with open(os.path.join(folder, JOBS_FILE)) as fh:
             rows = json.load(fh)
@@ -352,10 +460,33 @@ def recorded_jobs(folder):
 
 
 def record_job(folder, job, how):
-    """Add the array job id ``job`` to ``folder``'s record of submissions
-    (JOBS_FILE), once; ``how`` says who recorded it ("submit", or "task"
-    for a task that found its array unrecorded: an ``sbatch`` by hand).
-    Written atomically; a folder that cannot be written is left alone."""
+    """Add an array job id to a run folder's record of submissions
+    (:data:`JOBS_FILE`), once, so that ``--collect`` can ask SLURM about
+    its tasks. Written atomically; a folder that cannot be written is left
+    alone.
+
+    Parameters
+    ----------
+    folder : str
+        The run folder.
+    job : str or int
+        The array job id.
+    how : str
+        Who recorded it: "submit" (:func:`submit`), or "task" for a task
+        that found its array unrecorded (an ``sbatch`` by hand).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> record_job(d, 41, "submit"); record_job(d, "41", "task"); record_job(d, 42, "task")
+    >>> recorded_jobs(d)
+    ['41', '42']
+    """
     import time as _time
 
     path = os.path.join(folder, JOBS_FILE)
@@ -379,10 +510,41 @@ def record_job(folder, job, how):
 
 
 def submit(folder, array=None, sbatch_args=()):
-    """``sbatch --parsable [--array=ARRAY] FOLDER/slurm.sh``, its job id
-    recorded (:func:`record_job`) so that ``--collect`` can ask SLURM which
-    lines are pending or running. Returns the job id; raises ConfigError
-    (one line) when sbatch is missing or refuses."""
+    """Submit a run folder's array: ``sbatch --parsable [--array=ARRAY]
+    FOLDER/slurm.sh``, its job id recorded (:func:`record_job`) so that
+    ``--collect`` can ask SLURM which lines are pending or running.
+
+    Parameters
+    ----------
+    folder : str
+        A run folder with its ``slurm.sh`` (:func:`write_slurm`).
+    array : str, optional
+        The tasks (table lines) to submit, e.g. "2,5" (default: all).
+    sbatch_args : sequence of str
+        More options for ``sbatch``, before the script.
+
+    Returns
+    -------
+    str
+        The array's job id.
+
+    Raises
+    ------
+    ConfigError
+        One line: no ``slurm.sh``, no ``sbatch`` on the PATH, or sbatch's
+        refusal.
+
+    Examples
+    --------
+    (A real submission needs a SLURM cluster; a folder without its script
+    is refused before sbatch is called.)
+
+    >>> import tempfile
+    >>> submit(tempfile.mkdtemp())
+    Traceback (most recent call last):
+        ...
+    yade_scripts.parameters.ConfigError: ...: no slurm.sh (generate --slurm, or python -m yade_scripts.slurm FOLDER)
+    """
     import subprocess
 
     from .parameters import ConfigError
@@ -403,11 +565,30 @@ def submit(folder, array=None, sbatch_args=()):
 
 
 def queue_states(folder):
-    """{task: (job id, state, reason)} of ``folder``'s array tasks that SLURM
-    has in its queue or on a node now (``squeue -r``): the jobs recorded at
-    submission or by their tasks (:func:`recorded_jobs`), and any job whose
-    batch script is ``folder/slurm.sh`` (an ``sbatch`` by hand whose tasks
-    have not started). {} without squeue; raises nothing."""
+    """The tasks of a run folder's arrays that SLURM has in its queue or on
+    a node now (``squeue -r``): those of the jobs recorded at submission or
+    by their tasks (:func:`recorded_jobs`), and of any job whose batch
+    script is ``folder/slurm.sh`` (an ``sbatch`` by hand whose tasks have
+    not started).
+
+    Parameters
+    ----------
+    folder : str
+        The run folder.
+
+    Returns
+    -------
+    dict
+        task (int, the table's run line) -> (job id, state, reason) as
+        squeue gives them; {} without squeue or when it fails. Raises
+        nothing.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> queue_states(tempfile.mkdtemp())        # no job of this folder is queued
+    {}
+    """
     import subprocess
 
     exe = shutil.which("squeue")
@@ -433,7 +614,9 @@ def queue_states(folder):
 
 
 def queue_detail(job, state, reason):
-    """The words ``--collect`` says of a task in SLURM's queue."""
+    """The words ``--collect`` says of a task in SLURM's queue
+    (:func:`queue_states`): "running: ..." for a state on a node, else
+    "pending: ..." with the reason."""
     if state in ON_A_NODE:
         return f"running: SLURM job {job}, {state}"
     why = f", {reason}" if reason and reason not in ("None", "(null)") else ""
@@ -459,6 +642,21 @@ def options_of(args, prefix="slurm_"):
 
 
 def main(argv=None):
+    """``python -m yade_scripts.slurm FOLDER [options]``: write the folder's
+    ``slurm.sh`` again (:func:`write_slurm`, e.g. for a moved folder), or
+    with ``--submit [--array TASKS]`` submit it (:func:`submit`).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 written or submitted; 2 refused (one line on
+        stderr).
+    """
     from .parameters import ConfigError
 
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.slurm",

@@ -93,12 +93,66 @@ def _need_yade():
 
 
 def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
-    """Generate (if needed) and run one seed of each sample, side by side
-    (:func:`yade_scripts.pool.run_pool`, every job started at once on its
-    own threads, each scene line relayed; the log is the folder's
-    ``yade.log``); returns {sample: status} (0 = done or already done, else
-    the exit code or the reason). A crashed run is resumed from its
-    checkpoint as the pool's rule says."""
+    """Run one seed of each sample side by side: the study of ``python -m
+    yade_scripts.study`` with one seed (``--ensemble 1``).
+
+    Each sample's run folder ``OUT/<sample>`` is generated when it is not
+    there (:func:`yade_scripts.generate.generate`); one made with other
+    parameters is first set aside as ``OUT/<sample>.old-K``, and one that
+    holds a complete dump and its ``run.info.json`` is not run again. The
+    others run at once through :func:`yade_scripts.pool.run_pool`, each on
+    its own threads (polyhedra on the compiled kernel: every core of the
+    machine; otherwise one), every scene line relayed with the sample in
+    front and kept in the folder's ``yade.log``; a crashed run is resumed
+    from its checkpoint as the pool's rule says, and each complete dump is
+    analysed on a free core (:func:`analyse_after`). The report is
+    :func:`analyse_and_report`'s.
+
+    Parameters
+    ----------
+    out : str
+        The study's folder.
+    preset : str
+        A preset of :data:`yade_scripts.presets.PRESETS`.
+    overrides : dict, optional
+        name -> value (or its text), applied to both samples.
+    library : str, optional
+        The polyhedra's shape library (default
+        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+    samples : sequence of str
+        The samples to run (default both, S1 and S2).
+
+    Returns
+    -------
+    dict
+        sample -> status: 0 done (now or already), else the exit code or
+        the reason (:func:`yade_scripts.pool.run_pool`).
+
+    Raises
+    ------
+    ConfigError
+        No ``yade`` on the PATH, or invalid parameters.
+    yade_scripts.runlock.RunBusy
+        Another process writes one of the runs; nothing was touched.
+
+    Examples
+    --------
+    A study whose spheres run is complete (here an empty dump, closed by
+    :class:`postproc.schema.DumpWriter`, standing in for the finished run)
+    does not run it again, and starts nothing; ``yade`` must still be on
+    the PATH.
+
+    >>> import os, tempfile
+    >>> from postproc.schema import DumpWriter
+    >>> from yade_scripts.generate import generate
+    >>> out = tempfile.mkdtemp()
+    >>> _ = generate(os.path.join(out, "spheres"), "tiny", "spheres")
+    >>> DumpWriter(os.path.join(out, "spheres", "run.h5"), "spheres", {}).close()
+    >>> _ = open(os.path.join(out, "spheres", "run.info.json"), "w").write("{}")
+    >>> run_samples(out, "tiny", samples=("spheres",))
+    [spheres] already complete in .../spheres, not run again
+    {'spheres': 0}
+    """
     from .pool import Job, run_pool
 
     _need_yade()
@@ -119,13 +173,55 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None):
-    """Seeds 1..n of each sample on ``jobs`` cores through one schedule
-    (:func:`yade_scripts.pool.run_pool`: longest runs first, the seeds of
-    both samples interleaved, a freed core given to a running polyhedra
-    run once none waits; the schedule and its idle core-time go to
-    ``OUT/schedule.json``). Returns {sample: [(label, dump path, status)]}
-    (status 0 = complete). ``job_threads``: {sample: threads a job starts
-    on} (default one each)."""
+    """Run seeds 1..n of each sample in one schedule: the study of ``make
+    study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
+
+    Each sample gets the run folder ``OUT/<sample>-ensemble`` with a table
+    of the seeds (generated when it is not there; one made with other
+    parameters is first set aside as ``.old-K``; one with the same
+    parameters gets its table written again, for another n). Every seed of
+    every sample is a job of :func:`yade_scripts.pool.run_pool` on ``jobs``
+    cores: longest first by :func:`yade_scripts.slurm.estimate`, the seeds
+    of both samples interleaved, a freed core given to a running polyhedra
+    run on the kernel once none waits; complete dumps are not run again,
+    and each complete dump is analysed on a free core
+    (:func:`analyse_after`). The schedule and its idle core-time go to
+    ``OUT/schedule.json``.
+
+    Parameters
+    ----------
+    out : str
+        The study's folder.
+    preset : str
+        A preset of :data:`yade_scripts.presets.PRESETS`.
+    n : int
+        Seeds per sample (1..n).
+    overrides : dict, optional
+        name -> value (or its text), applied to both samples.
+    library : str, optional
+        The polyhedra's shape library (default
+        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+    jobs : int
+        Cores of the schedule.
+    samples : sequence of str
+        The samples to run (default both).
+    job_threads : dict, optional
+        sample -> YADE threads a job starts on (at most ``jobs``; default
+        one each).
+
+    Returns
+    -------
+    dict
+        sample -> [(label "seed K", dump path, status)], status 0 complete,
+        else the exit code or the reason (:func:`yade_scripts.pool.run_pool`).
+
+    Raises
+    ------
+    ConfigError
+        No ``yade`` on the PATH, or invalid parameters.
+    yade_scripts.runlock.RunBusy
+        Another process writes one of the runs; nothing was touched.
+    """
     from .batch import dump_of, read_table
     from .pool import Job, run_pool
     from .slurm import estimate
@@ -351,24 +447,65 @@ def unusable_samples(out):
 
 def collect(folder):
     """Analyse and report whatever has finished in the generated run folders
-    at or below ``folder`` (each with a ``table.txt``, but for the folders
-    set aside as FOLDER.old-K, :data:`SET_ASIDE`; a line's dump in the
-    line's own folder ``<description>/``, as a SLURM array task writes it,
-    or next to the table, as the study and sweeps do), and say what every
-    other line is: pending or running in SLURM (``squeue`` of the jobs
-    recorded for the folder, :func:`yade_scripts.slurm.queue_states`),
-    running (a process holds its lock, :mod:`yade_scripts.runlock`: a task,
-    a study or a scene, on any node that shares the folder), resumable at
-    step N, failed (why), unfinished, not started, an invalid line
+    at or below ``folder``, and say what every other line is: ``python -m
+    yade_scripts.study --collect DIR``, e.g. after a SLURM array.
+
+    The run folders are ``folder`` itself or those one level below it,
+    each with a ``table.txt`` (but for the folders set aside as
+    ``FOLDER.old-K``, :data:`SET_ASIDE`); a line's dump is in the line's
+    own folder ``<description>/``, as a SLURM array task writes it, or next
+    to the table, as the study and sweeps do. A line that is not finished
+    is named with its state: pending or running in SLURM (``squeue`` of
+    the jobs recorded for the folder,
+    :func:`yade_scripts.slurm.queue_states`), running (a process holds its
+    lock, :mod:`yade_scripts.runlock`: a task, a study or a scene, on any
+    node that shares the folder), resumable at step N, failed (why),
+    unfinished, not started, an invalid line
     (:func:`yade_scripts.batch.table_lines`: named, never blocking the
     other lines or arrays), or a complete dump that does not add up
     (refused, never analysed). Pending and running lines are never in the
-    resubmit command. Writes FOLDER/manifest.json (every line of every
-    table) and FOLDER/report/, also when nothing has finished yet.
+    resubmit command. Writes ``FOLDER/manifest.json`` (every line of every
+    table) and ``FOLDER/report/`` (:func:`analyse_and_report`), also when
+    nothing has finished yet. Nothing is run.
 
-    Returns (runs analysed as {sample: [(label, dump, 0)]}, lines not
-    finished as ["<folder>/<description> (<state>)"], failures of the
-    analysis, {table folder: command that resubmits its unfinished lines})."""
+    Parameters
+    ----------
+    folder : str
+        A generated run folder, or a folder of them.
+
+    Returns
+    -------
+    runs : dict
+        The runs analysed: sample -> [(label, dump, 0)].
+    pending : list of str
+        The lines not finished: "<folder>/<description> (<state>)".
+    failed : list of str
+        The runs whose analysis failed: "<sample> <label>".
+    resubmit : dict
+        table folder -> the command that runs its unfinished lines again
+        (``sbatch --array=...`` where the folder has a ``slurm.sh``, else
+        ``python -m yade_scripts.batch ... --only ...``).
+
+    Raises
+    ------
+    ConfigError
+        ``folder`` is missing or holds no run folder.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from yade_scripts.generate import generate
+    >>> out = os.path.join(tempfile.mkdtemp(), "t1")
+    >>> _ = generate(out, "tiny", "spheres", seeds=[1])
+    >>> runs, pending, failed, resubmit = collect(out)
+    [study] report written to .../t1/report/report.md (and report.html)
+    >>> runs, pending, failed
+    ({}, ['spheres-seed1 (not started)'], [])
+    >>> resubmit[out]
+    'python -m yade_scripts.batch .../t1 --only spheres-seed1'
+    >>> sorted(os.listdir(out))
+    ['manifest.json', 'params.json', 'pkg', 'report', 'table.txt', 'triaxial.py']
+    """
     from .batch import dump_of, table_lines
     from .runstate import state_of
     from .slurm import queue_detail, queue_states
@@ -459,6 +596,28 @@ def collect(folder):
 
 
 def main(argv=None):
+    """``python -m yade_scripts.study``: the study (:func:`run_samples` or
+    :func:`run_ensemble`, then :func:`analyse_and_report`), ``--collect
+    DIR`` (:func:`collect`) or ``--analyse DUMP`` (:func:`analyse_one`).
+    The options and the memory the runs need at once
+    (:func:`yade_scripts.resources.check_memory`) are checked before the
+    folder is made; the study then holds its folder's lock
+    (``OUT/study.lock``).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code (the module docstring): 0 every sample has a usable
+        run; 1 a sample has none (with ``--collect``: an analysis failed;
+        with ``--analyse``: it failed); 2 invalid options; 4 another
+        process writes the folder or one of its runs; 75 stopped (SIGTERM,
+        Ctrl-C: run the same command again to resume).
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.study", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
     ap.add_argument("--out", help="study folder (required unless --collect)")

@@ -69,6 +69,9 @@ DEFAULT_REQUEUES = 10
 
 
 def say(message, err=False):
+    """Print one line of the task, ``task: <message>``, at once (flushed):
+    on stdout, or on stderr with ``err``; SLURM appends both to the task's
+    ``slurm-<job>_<task>.out``."""
     print(f"task: {message}", file=sys.stderr if err else sys.stdout, flush=True)
 
 
@@ -132,8 +135,39 @@ def link_inputs(folder, own, line):
 
 
 def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
-    """Run task ``task`` of the array in ``folder`` (module docstring);
-    returns the exit code."""
+    """Run one task of a SLURM array: table line ``task`` of ``folder``, in
+    its own folder ``FOLDER/<description>/`` (steps 1 to 6 of the module
+    docstring).
+
+    From its start to the end of the process, SIGTERM and SIGUSR1 are the
+    task's (they ask the run to stop); inside a SLURM job it records its
+    array's job id in the folder (:func:`yade_scripts.slurm.record_job`)
+    and leaves its final state as the job's comment. Its lines go to
+    stdout (``task: ...``, the last ``task: FINAL <state>``; on stderr
+    when it failed).
+
+    Parameters
+    ----------
+    folder : str
+        The generated run folder (``table.txt``, ``triaxial.py``,
+        ``params.json``, ``pkg/``), an absolute path.
+    task : int
+        The run line of ``table.txt``, from 1 (a SLURM array task id).
+    requeues : int
+        Requeues of the task by itself at most (its own, counted in the
+        run's attempts record).
+    threads : int, optional
+        YADE threads (default: ``$SLURM_CPUS_PER_TASK``, else 1).
+    echo : callable
+        Takes each message of the pool (one line).
+
+    Returns
+    -------
+    int
+        The exit code: 0 complete (or requeued); 2 invalid line or folder;
+        3 the run failed; 4 another process writes the run; 75 stopped and
+        resumable but not requeued.
+    """
     job_id, restarts = slurm_job()
     threads = threads or int(os.environ.get("SLURM_CPUS_PER_TASK") or 1)
     say(f"task {task} of {folder}, {now_utc()} on {os.uname().nodename}"
@@ -228,6 +262,20 @@ def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, ec
 
 
 def main(argv=None):
+    """``python -m yade_scripts.task FOLDER [--task K] [--requeues N]``:
+    :func:`run_task`, the task K by default ``$SLURM_ARRAY_TASK_ID``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        :func:`run_task`'s exit code; 2 when no task is given and
+        ``SLURM_ARRAY_TASK_ID`` is unset or not a number.
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.task", description=__doc__.splitlines()[0])
     ap.add_argument("folder", help="the generated run folder (table.txt, triaxial.py)")
     ap.add_argument("--task", type=int, help="the run line of table.txt, from 1 (default: $SLURM_ARRAY_TASK_ID)")

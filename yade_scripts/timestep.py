@@ -26,15 +26,72 @@ import numpy as np
 
 
 def inertial_strain_rate(inertial_number, d_mean, density, pressure):
-    """Strain rate (1/s) for inertial number I = rate d sqrt(rho / p)."""
+    """The strain rate of an inertial number: I = rate d sqrt(rho / p), so
+    rate = I / (d sqrt(rho / p)).
+
+    The scene shears at the rate of ``inertial_number`` (the top wall at
+    rate x the height of the isotropic state) and compresses at most at
+    that of ``compaction_inertial_number``. The paper moved its top wall at
+    a constant 1 cm/s instead (Azema, Radjai & Saussine 2009, "Numerical
+    procedures"); its contact dynamics has no stiffness, and here I and
+    kappa set the rate and the stiffness in units of the packing
+    (docs/scenes.md).
+
+    Parameters
+    ----------
+    inertial_number : float
+        I, dimensionless.
+    d_mean : float
+        m, the mean particle diameter.
+    density : float
+        kg/m^3, the particles' density.
+    pressure : float
+        Pa, the confining stress (sigma0).
+
+    Returns
+    -------
+    numpy.float64 or numpy.ndarray
+        1/s, the strain rate (an array when an input is one).
+
+    Examples
+    --------
+    >>> round(float(inertial_strain_rate(5e-3, 0.03325, 2700.0, 1e4)), 4)   # the default S1: d = 3.325 cm, 10 kPa
+    0.2894
+    """
     return inertial_number / (d_mean * np.sqrt(density / pressure))
 
 
 def rotational_mass(volume, inertia, vertices):
-    """min(V, min_k I_k / r_k^2) for a grain at d = 1 and unit density, in
-    its principal frame: I_k (3,) principal moments, r_k the largest distance
-    of a vertex from axis k. Multiplied by rho d^3 it is the effective mass
-    of the fastest rigid-body mode under a contact at the worst lever."""
+    """The effective mass of a grain's fastest rigid-body mode,
+    min(V, min_k I_k / r_k^2), for a grain at d = 1 and unit density.
+
+    A contact at distance r_k from the principal axis k drives the
+    rotation about it with the effective mass I_k / r_k^2; when that is
+    below the mass, rotation is the fastest mode (a flat grain touched at
+    its rim).
+
+    Parameters
+    ----------
+    volume : float
+        The grain's volume at d = 1 (its mass at unit density).
+    inertia : array_like, shape (3,)
+        Its principal moments of inertia at d = 1 and unit density.
+    vertices : array_like, shape (n, 3)
+        Its vertices in its principal frame (centre of mass at the
+        origin); r_k is the largest distance of a vertex from axis k.
+
+    Returns
+    -------
+    float
+        min(V, min_k I_k / r_k^2); multiplied by rho d^3 (kg/m^3, m) it is
+        the effective mass in kg of a grain of diameter d.
+
+    Examples
+    --------
+    >>> cube = [[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]
+    >>> round(rotational_mass(1.0, [1 / 6, 1 / 6, 1 / 6], cube), 4)   # a unit cube: I / r^2 = (1/6) / 0.5
+    0.3333
+    """
     v = np.asarray(vertices, float)
     r2 = np.array([np.max(v[:, 1] ** 2 + v[:, 2] ** 2), np.max(v[:, 0] ** 2 + v[:, 2] ** 2),
                    np.max(v[:, 0] ** 2 + v[:, 1] ** 2)])
@@ -42,11 +99,28 @@ def rotational_mass(volume, inertia, vertices):
 
 
 def critical_time_step(effective_mass, stiffness):
-    """min over particles of sqrt(m_eff / k), in s.
+    """The critical time step of the sample: min over particles of
+    sqrt(m_eff / k) (the scene steps at ``safety`` times it).
 
-    effective_mass (n,) kg: the smaller of the mass and I_k / r_k^2 (see
-    :func:`rotational_mass`); stiffness (n,) N/m: the stiffest contact each
-    particle can have."""
+    Parameters
+    ----------
+    effective_mass : array_like, shape (n,)
+        kg, each particle's effective mass: for a polyhedron the smaller of
+        its mass and min_k I_k / r_k^2 (:func:`rotational_mass`), for a
+        sphere 0.4 m (I / R^2).
+    stiffness : array_like, shape (n,)
+        N/m, the stiffest contact each particle can have.
+
+    Returns
+    -------
+    float
+        s.
+
+    Examples
+    --------
+    >>> critical_time_step([1.0, 2.0], [100.0, 800.0])    # sqrt(2 / 800)
+    0.05
+    """
     m = np.asarray(effective_mass, float)
     k = np.asarray(stiffness, float)
     return float(np.sqrt(np.min(m / k)))

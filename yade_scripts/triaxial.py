@@ -115,6 +115,8 @@ from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED
 
 
 def say(message):
+    """Print one line of the scene, ``triaxial.py: <message>``, at once
+    (the launchers relay the lines with this prefix)."""
     print(f"triaxial.py: {message}", flush=True)
 
 
@@ -339,11 +341,15 @@ def box():
 
 
 def wall_forces():
+    """(6, 3) N: the force on each wall by the particles this step, walls in
+    the dump's order x-, x+, y-, y+, z-, z+."""
     f = O.forces.f
     return np.array([f(w).__getinitargs__() for w in walls])
 
 
 def set_wall_velocities(vel):
+    """Give the six walls the velocities ``vel`` (6, 3) m/s, in the dump's
+    wall order (:func:`yade_scripts.servo.wall_velocities`)."""
     for s, v in zip(wall_states, vel.tolist()):
         s.vel = v
 
@@ -397,6 +403,9 @@ dump_seconds = [0.0]     # wall time of the snapshots (gathering and writing), p
 
 
 def snapshot(stage):
+    """Append a snapshot of the box, the wall forces, the particles and
+    every contact to the dump, as ``stage`` ("isotropic" or "shear"); its
+    time goes to the dump's cost (``dump_seconds``)."""
     t0 = time.perf_counter()
     lo, hi = box()
     writer.write_snapshot(
@@ -463,6 +472,15 @@ progress = Progress(report_seconds)
 
 
 def control():
+    """The controller, run by a PyRunner every step: the loading program
+    (:class:`yade_scripts.loading.TriaxialLoading`) from the wall stresses
+    (compaction to the isotropic state, its snapshot and the switch to
+    shear; then shear, its snapshots and the end), the log row every
+    ``log_every`` steps, the blow-up and ``max_steps`` checks every
+    ``check_every`` steps, and the progress line. It first lets a due
+    checkpoint end the run after this step
+    (:meth:`yade_scripts.attempt.Attempt.end_of_step`) and, on the plugin
+    path, stops the run on an error of the kernel's step."""
     run.end_of_step()
     if KERNEL and kernel.path == "plugin":
         problem = kernel.step_error()

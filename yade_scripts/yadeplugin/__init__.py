@@ -337,10 +337,51 @@ def probe(prefix, timeout=300):
 
 
 def build(here=HERE, quiet=True, lib_dir=None):
-    """Build and probe the plugin for the installed YADE unless done
-    already; returns the status dict (``ok``, ``why``, ``prefix``, ``key``,
-    ``version``). Never raises for a plugin that cannot be built here: the
-    status says why (``ok`` False) and the scenes use the PyRunner path."""
+    """Build and probe the plugin for the installed YADE, unless that was
+    done already (``python -m yade_scripts.yadeplugin build``, which ``make
+    kernel`` runs).
+
+    The installed YADE is found (:func:`find_yade`); its build key hashes
+    the sources, the flags and ``libyade.so``. A kept status for that key
+    is returned as it is (a lookup). Otherwise ``g++`` builds the plugin
+    (about a minute), its vtables are compared with YADE's
+    (:func:`vtable_mismatches`) and the probe scene runs in YADE
+    (:func:`probe`); the result is kept in ``_build/<key>/status.json``.
+    Missing compilers or headers, a timeout or YADE that cannot start are
+    not kept: the next call tries again.
+
+    Parameters
+    ----------
+    here : str
+        The copy of this package whose sources are built (default: this
+        one; a run folder's ``pkg/yade_scripts/yadeplugin`` builds its own).
+    quiet : bool
+        False: say what it does on stderr (``yadeplugin: ...``).
+    lib_dir : str, optional
+        YADE's library folder (default: the one the ``yade`` launcher
+        uses, else ``/usr/lib/*/yade-double``).
+
+    Returns
+    -------
+    dict
+        ``ok`` (bool: the plugin may be used), ``why`` (one line),
+        ``prefix`` (the ``YADE_PREFIX`` of the build, or None), and, when
+        the build key could be made, ``key``, ``version``, ``source_hash``. Never raises
+        for a plugin that cannot be built here: ``ok`` is then False, the
+        status says why and the scenes step the kernel from a PyRunner.
+
+    Examples
+    --------
+    (Building takes a minute and runs YADE; a folder that is not YADE's is
+    refused at once.)
+
+    >>> import tempfile
+    >>> st = build(lib_dir=tempfile.mkdtemp())
+    >>> st["ok"], st["prefix"]
+    (False, None)
+    >>> st["why"]
+    '... holds no py/yade/config.py or libyade.so: not a YADE library folder'
+    """
     def say(msg):
         if not quiet:
             print(f"yadeplugin: {msg}", file=sys.stderr)
@@ -409,8 +450,34 @@ def _read_status(folder):
 
 
 def status(here=HERE, lib_dir=None):
-    """The status of the build for the installed YADE and these sources,
-    without building: ``ok`` False with ``why`` when there is none."""
+    """The status of the plugin's build for the installed YADE and these
+    sources, without building (``python -m yade_scripts.yadeplugin
+    status``).
+
+    Parameters
+    ----------
+    here : str
+        The copy of this package whose build is looked up (default: this
+        one).
+    lib_dir : str, optional
+        YADE's library folder (default: as :func:`build` finds it).
+
+    Returns
+    -------
+    dict
+        The kept status of :func:`build` (``ok``, ``why``, ``prefix`` ...;
+        ``prefix`` the build's ``YADE_PREFIX`` when ``ok``), or ``ok``
+        False with ``why`` when there is no YADE or no build.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> {"ok", "why", "prefix"} <= set(status())
+    True
+    >>> st = status(lib_dir=tempfile.mkdtemp())
+    >>> st["ok"], st["prefix"]
+    (False, None)
+    """
     try:
         yade = find_yade(lib_dir)
         st = _read_status(build_dir(yade, here))
@@ -432,12 +499,37 @@ def run_folder_copy(folder):
 
 
 def environment(env=None, run_folder=None):
-    """``env`` (default os.environ) with ``YADE_PREFIX`` on a ready build of
-    the plugin, unless ``POLYHEDRA_NO_PLUGIN`` is set. With ``run_folder``
-    the build must be of that folder's own copy of the sources (the scene
-    checks the loaded plugin against it): its own build, or this package's
-    when the sources are the same. A copy; ``env`` unchanged when there is
-    no such build (the scene then runs the PyRunner path and says why)."""
+    """The environment of a YADE process, with ``YADE_PREFIX`` on a ready
+    build of the plugin (YADE loads its plugins when it starts): what the
+    launchers (the pool, the SLURM script) give YADE.
+
+    Parameters
+    ----------
+    env : dict, optional
+        The environment to start from (default ``os.environ``); it is not
+        changed.
+    run_folder : str, optional
+        A generated run folder: the build must then be of that folder's
+        own copy of the sources (the scene checks the loaded plugin against
+        it): its own build, or this package's when the sources are the
+        same.
+
+    Returns
+    -------
+    dict
+        A copy of ``env``, with ``YADE_PREFIX`` set when there is such a
+        build and :data:`SKIP_VARIABLE` (``POLYHEDRA_NO_PLUGIN``) is not
+        set; else the copy as it was (the scene then steps the kernel from
+        a PyRunner and says why).
+
+    Examples
+    --------
+    >>> env = {"PATH": "/usr/bin", "POLYHEDRA_NO_PLUGIN": "1"}
+    >>> environment(env)
+    {'PATH': '/usr/bin', 'POLYHEDRA_NO_PLUGIN': '1'}
+    >>> environment(env) is env
+    False
+    """
     env = dict(os.environ if env is None else env)
     if env.get(SKIP_VARIABLE):
         return env

@@ -11,6 +11,21 @@ from . import build, status
 
 
 def main(argv=None):
+    """``python -m yade_scripts.yadeplugin build | status | prefix`` (the
+    module docstring).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``; none:
+        ``status``).
+
+    Returns
+    -------
+    int
+        The exit code: ``build`` 0 either way; ``status`` and ``prefix`` 0
+        when the plugin is ready, else 1; 2 for another command.
+    """
     argv = sys.argv[1:] if argv is None else argv
     cmd = argv[0] if argv else "status"
     if cmd == "build":
