@@ -74,6 +74,20 @@ def _parser():
 
 
 def main(argv=None):
+    """Run ``python -m shapes`` (module docstring).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line after ``python -m shapes`` (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 done; 1 (import) some meshes refused, the library
+        holds the others; 2 nothing written. Bad options exit through
+        argparse (SystemExit, code 2).
+    """
     args = _parser().parse_args(argv)
     return {"build": _build, "import": _import, "report": _report}[args.cmd](args)
 

@@ -135,9 +135,47 @@ def iptr(a):
 
 
 def f64(a, shape=None):
+    """``a`` as a C-contiguous float64 array (a copy only when needed),
+    reshaped to ``shape`` when given: what :func:`dptr` takes.
+
+    Parameters
+    ----------
+    a : array_like
+        The values.
+    shape : tuple of int, optional
+        The shape to give the result.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, C-contiguous.
+
+    Examples
+    --------
+    >>> f64([[1, 2], [3, 4]], shape=(4,))
+    array([1., 2., 3., 4.])
+    """
     a = np.ascontiguousarray(a, dtype=np.float64)
     return a if shape is None else a.reshape(shape)
 
 
 def i32(a):
+    """``a`` as a C-contiguous int32 array (a copy only when needed): what
+    :func:`iptr` takes.
+
+    Parameters
+    ----------
+    a : array_like
+        The values (integers).
+
+    Returns
+    -------
+    numpy.ndarray
+        int32, C-contiguous.
+
+    Examples
+    --------
+    >>> i32([0, 8, 16]).dtype
+    dtype('int32')
+    """
     return np.ascontiguousarray(a, dtype=np.int32)

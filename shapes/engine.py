@@ -168,6 +168,9 @@ class ContactEngine:
         self._no_walls = np.zeros(1)
 
     def close(self):
+        """Free the C engine's memory (also done when the engine is garbage
+        collected). Closing twice does nothing; no other method may be
+        called afterwards (the C side would be handed a null engine)."""
         if getattr(self, "handle", None):
             self.lib.pc_engine_free(self.handle)
             self.handle = None
@@ -228,10 +231,12 @@ class ContactEngine:
 
     @property
     def n_pair_contacts(self):
+        """Touching body pairs after the last step (int)."""
         return self._count("touching_pairs")
 
     @property
     def n_wall_contacts(self):
+        """Body-wall contacts after the last step (int)."""
         return self._count("wall_contacts")
 
     @property
@@ -241,6 +246,7 @@ class ContactEngine:
 
     @property
     def n_rebuilds(self):
+        """Builds of the neighbour list so far, the first included (int)."""
         return self._count("rebuilds")
 
     def unbalanced(self):
@@ -259,6 +265,9 @@ class ContactEngine:
             raise ValueError(f"workspace points must be 16 to the allocated size, got {npts}")
 
     def memory_bytes(self):
+        """The memory the C engine holds now, in bytes (int): its own
+        estimate, the sum of the sizes of its pair list, body and shape
+        arrays, wall records and clipping workspaces."""
         return int(self.lib.pc_engine_memory(self.handle))
 
     def set_history(self, i, j, shear_force):

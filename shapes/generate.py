@@ -42,7 +42,54 @@ from .polyhedron import CREASE_DEG, ShapeError, bend_angles, check_polyhedron, h
 
 @dataclass(frozen=True)
 class Recipe:
-    """Parameters of the grain generator (see the module docstring)."""
+    """Parameters of the grain generator (module docstring): an immutable
+    record, changed with :func:`dataclasses.replace`. The defaults draw the
+    ballast-like grains of ``python -m shapes build``.
+
+    Parameters
+    ----------
+    v_min, v_max : int
+        The range of the vertex count V (default 8 and 37).
+    v_beta : (2,) tuple of float
+        (alpha, beta) of the Beta law B of V = v_min + round((v_max - v_min)
+        B) (default (2.0, 2.83): a mean of 8 + 29 x 2 / 4.83 = 20.0).
+    elongation, flatness : (2,) tuple of float
+        The uniform ranges of the base ellipsoid's I/L and S/I (default
+        (0.55, 0.95) and (0.5, 0.9)).
+    jitter : float
+        Each point is moved radially by a factor drawn uniformly in
+        [1 - jitter, 1 + jitter] (default 0.10).
+    min_separation : float
+        Least distance between two drawn points, relative to twice the
+        largest semi-axis (default 0.09).
+    max_s_over_l : float
+        Grains with a larger S/L are redrawn as near-spherical (default
+        0.8).
+    max_tries : int
+        Draws of one grain before :func:`generate_shape` gives up with
+        ShapeError (default 1000).
+    repair_steps_per_vertex : int
+        Rounds of hull and repair (of a nearly flat edge, or of points
+        dropped inside the hull) allowed per vertex, V x this in all,
+        before the draw is redrawn (default 20).
+
+    Attributes
+    ----------
+    v_min, v_max, v_beta, elongation, flatness
+        The parameters, as given.
+    jitter, min_separation, max_s_over_l, max_tries, repair_steps_per_vertex
+        The parameters, as given.
+
+    Examples
+    --------
+    >>> import dataclasses
+    >>> r = Recipe()
+    >>> round(r.v_min + (r.v_max - r.v_min) * r.v_beta[0] / sum(r.v_beta), 2)   # the mean vertex count
+    20.01
+    >>> few = dataclasses.replace(r, v_min=10, v_max=12)
+    >>> few.as_dict()["v_max"], few.as_dict()["elongation"]
+    (12, (0.55, 0.95))
+    """
 
     v_min: int = 8
     v_max: int = 37
@@ -56,6 +103,14 @@ class Recipe:
     repair_steps_per_vertex: int = 20
 
     def as_dict(self):
+        """The parameters as a dict, name -> value (how a library file
+        stores its recipe, as JSON).
+
+        Returns
+        -------
+        dict
+            One entry per field, in the order of the fields.
+        """
         return asdict(self)
 
 
@@ -94,10 +149,40 @@ def _flat_edge_opposites(v, t, crease):
 
 
 def generate_shape(rng, recipe=Recipe(), rejections=None):
-    """One valid grain (:class:`~shapes.polyhedron.Polyhedron`, d = 1).
+    """One valid ballast-like grain, drawn by the recipe of the module
+    docstring (steps 1-5).
 
-    rng : numpy Generator. rejections : optional Counter, incremented with
-    the reason of every redrawn attempt.
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The source of every random number (the grain depends on its state
+        only).
+    recipe : Recipe
+        The generator's parameters (default ``Recipe()``).
+    rejections : collections.Counter, optional
+        Incremented by one for every redrawn attempt, keyed by its reason
+        (the defect's name, e.g. ``"sliver face"``, or ``"near-spherical"``).
+
+    Returns
+    -------
+    shapes.polyhedron.Polyhedron
+        In the normalised frame, d = 1, with V vertices, every face a
+        triangle (F = 2V - 4).
+
+    Raises
+    ------
+    ShapeError
+        No valid grain in ``recipe.max_tries`` draws.
+
+    Examples
+    --------
+    >>> from collections import Counter
+    >>> rng, why = np.random.default_rng(0), Counter()
+    >>> grains = [generate_shape(rng, Recipe(v_min=10, v_max=10), why) for _ in range(3)]
+    >>> [(g.n_vertices, g.n_faces, round(g.size, 12)) for g in grains]
+    [(10, 16, 1.0), (10, 16, 1.0), (10, 16, 1.0)]
+    >>> dict(why)                           # one draw was redrawn
+    {'sliver face': 1}
     """
     rejections = Counter() if rejections is None else rejections
     target = recipe.v_min + int(round((recipe.v_max - recipe.v_min) * rng.beta(*recipe.v_beta)))
@@ -147,8 +232,37 @@ def _draw_points_more(rng, existing, axes, recipe):
 
 
 def generate_library(n, seed=0, recipe=Recipe()):
-    """``n`` grains from ``seed``; returns (list of Polyhedron, Counter of
-    rejection reasons)."""
+    """``n`` grains drawn by :func:`generate_shape` from one generator
+    seeded with ``seed`` (what ``python -m shapes build`` stores).
+
+    Parameters
+    ----------
+    n : int
+        The number of grains.
+    seed : int
+        Seed of ``numpy.random.default_rng``: the same seed and recipe give
+        the same grains.
+    recipe : Recipe
+        The generator's parameters (default ``Recipe()``).
+
+    Returns
+    -------
+    shapes : list of shapes.polyhedron.Polyhedron
+        The grains, each in its normalised frame (d = 1).
+    rejections : collections.Counter
+        The redrawn attempts, by reason.
+
+    Examples
+    --------
+    >>> shapes, rejections = generate_library(3, seed=0)
+    >>> [s.n_faces == 2 * s.n_vertices - 4 for s in shapes]          # all faces triangles
+    [True, True, True]
+    >>> all(8 <= s.n_vertices <= 37 and abs(s.size - 1) < 1e-12 for s in shapes)
+    True
+    >>> again, _ = generate_library(3, seed=0)
+    >>> all(np.array_equal(a.vertices, b.vertices) for a, b in zip(shapes, again))
+    True
+    """
     rng = np.random.default_rng(seed)
     rejections = Counter()
     shapes = [generate_shape(rng, recipe, rejections) for _ in range(n)]

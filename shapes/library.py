@@ -56,12 +56,15 @@ class LibraryError(ValueError):
 
 def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by="python -m shapes build",
                   extra=None):
-    """Write a shape library atomically (temporary file + rename).
+    """Write a shape library (module docstring) atomically: to
+    ``path + ".tmp"``, then renamed to ``path``, so a reader never sees a
+    half-written file.
 
     Parameters
     ----------
     path : str
-        The file to write.
+        The file to write (its folder must exist); an existing file is
+        replaced.
     shapes : list of shapes.polyhedron.Polyhedron
         In the normalised frame, d = 1 (:func:`shapes.polyhedron.normalise`).
     seed : int
@@ -73,7 +76,8 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
     created_by : str
         The command that made it.
     extra : dict, optional
-        Per-shape datasets, name -> (S,) array (module docstring).
+        Per-shape datasets, name -> (S,) array (module docstring); a
+        dataset without one row per shape raises ValueError.
 
     Returns
     -------
@@ -81,7 +85,20 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
 
     Examples
     --------
-    See :class:`ShapeLibrary`.
+    Two grains with a per-grain dataset, read back with
+    :class:`ShapeLibrary`:
+
+    >>> import tempfile
+    >>> from shapes.generate import generate_library
+    >>> grains, _ = generate_library(2, seed=0)
+    >>> path = os.path.join(tempfile.mkdtemp(), "two.h5")
+    >>> write_library(path, grains, seed=0, recipe={"n": 2}, tolerances={},
+    ...               extra={"source": ["a.stl", "b.stl"], "source_d": np.array([0.04, 0.05])})
+    >>> lib = ShapeLibrary(path)
+    >>> len(lib), lib.name, lib.attrs["seed"], json.loads(lib.attrs["recipe"])
+    (2, 'two', 0, {'n': 2})
+    >>> lib.source_d.tolist(), bool(np.array_equal(lib[1][0], grains[1].vertices))
+    ([0.04, 0.05], True)
     """
     tmp = str(path) + ".tmp"
     name = name or os.path.splitext(os.path.basename(str(path)))[0]

@@ -12,7 +12,8 @@ resampled and each draw is realised by the generator of
    x* = m + (x_i - m + h eps) / sqrt(1 + h^2 / s^2), eps ~ N(0, 1), with m
    and s the target's mean and standard deviation and h = 1.06 s n^(-1/5)
    (Silverman's rule), so that 1000 grains drawn from 50 do not sit on 50
-   points and the mean and variance stay the target's; clipped to
+   points, the mean stays the target's and the variance within a factor
+   (n - 1) / n of it (s is taken with the divisor n - 1); clipped to
    [0.05, 1];
 2. the generator draws a grain with exactly V_i vertices on a base ellipsoid
    of axes (1, e*, e* f*); the jitter of its points moves its measured
@@ -43,8 +44,42 @@ from .polyhedron import ShapeError, check_polyhedron, normalise
 
 
 def smoothed_bootstrap(x, idx, rng):
-    """Silverman's variance-preserving smoothed bootstrap of the sample x
-    (n,) at the drawn indices idx (k,): (k,) values (module docstring)."""
+    """Silverman's variance-preserving smoothed bootstrap of a sample at
+    drawn indices (module docstring, step 1).
+
+    Each value is x* = m + (x[i] - m + h eps) / sqrt(1 + h^2 / s^2), with m
+    and s the sample's mean and standard deviation (divisor n - 1), h =
+    1.06 s n^(-1/5) (Silverman's rule) and eps ~ N(0, 1). Over uniformly
+    drawn indices the values keep the sample's mean, and their variance
+    lies between the sample's variances with divisors n and n - 1.
+
+    Parameters
+    ----------
+    x : (n,) float
+        The sample.
+    idx : (k,) int
+        The drawn indices into ``x`` (e.g. ``rng.integers(n, size=k)``).
+    rng : numpy.random.Generator
+        The source of eps.
+
+    Returns
+    -------
+    (k,) float
+        The smoothed values; all equal to m when the sample is constant
+        (or has one value).
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> x = np.array([0.6, 0.7, 0.8, 0.9])
+    >>> y = smoothed_bootstrap(x, rng.integers(len(x), size=100_000), rng)
+    >>> round(float(y.mean()), 3), round(float(y.std()), 3)     # x: mean 0.75, std 0.112 (divisor n) or 0.129 (n - 1)
+    (0.75, 0.119)
+    >>> len(np.unique(y)) > 4                   # not only the four sample values
+    True
+    >>> smoothed_bootstrap([0.5, 0.5], [0, 1, 1], rng)
+    array([0.5, 0.5, 0.5])
+    """
     x = np.asarray(x, float)
     m, s = x.mean(), x.std(ddof=1) if len(x) > 1 else 0.0
     if s == 0:
@@ -55,12 +90,48 @@ def smoothed_bootstrap(x, idx, rng):
 
 
 def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
-    """``n`` grains whose (elongation, flatness, vertex count) follow the
-    descriptor table ``target`` (dict with arrays ``elongation``,
-    ``flatness``, ``n_vertices``; e.g. :func:`shapes.descriptors.library_descriptors`).
+    """``n`` generated grains whose elongation, flatness and vertex count
+    follow those of a target table (module docstring; what ``python -m
+    shapes build --like`` runs).
 
-    Returns (list of Polyhedron with d = 1, Counter of redrawn grains by
-    reason). Reproducible from ``seed``.
+    Parameters
+    ----------
+    target : dict
+        Arrays ``elongation`` (I/L), ``flatness`` (S/I) and ``n_vertices``,
+        one row per target grain (e.g.
+        :func:`shapes.descriptors.library_descriptors` of a library).
+    n : int
+        The number of grains to draw.
+    seed : int
+        Seed of ``numpy.random.default_rng``: the same seed, target and
+        recipe give the same grains.
+    recipe : shapes.generate.Recipe
+        The generator's other parameters (jitter, spacing, tries); its
+        vertex range, proportions and near-sphere limit are replaced per
+        grain.
+    max_tries : int
+        Attempts per grain (a stretched grain that fails the checks is
+        redrawn) before ShapeError.
+
+    Returns
+    -------
+    shapes : list of shapes.polyhedron.Polyhedron
+        The grains, in their normalised frame (d = 1); grain k has the
+        vertex count of the target grain drawn for it (at least 4) and its
+        smoothed elongation and flatness (to round-off).
+    events : collections.Counter
+        Redrawn attempts by reason (the generator's, and ``"stretched:
+        ..."`` for a stretched grain that failed the checks).
+
+    Examples
+    --------
+    >>> target = {"elongation": [0.5, 0.55, 0.6], "flatness": [0.4, 0.45, 0.5], "n_vertices": [10, 12, 14]}
+    >>> grains, events = generate_like(target, 4, seed=0)
+    >>> [g.n_vertices in (10, 12, 14) for g in grains]
+    [True, True, True, True]
+    >>> e = [g.dims[1] / g.dims[0] for g in grains]
+    >>> bool(0.45 < min(e) and max(e) < 0.65)   # near the target's 0.5-0.6
+    True
     """
     rng = np.random.default_rng(seed)
     e_t = np.asarray(target["elongation"], float)
@@ -89,10 +160,37 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
 
 
 def stretch_to(poly, elongation, flatness):
-    """The grain ``poly`` (a normalised Polyhedron) stretched along its
-    principal axes so that its extents have I/L = elongation and S/I =
-    flatness (module docstring, step 2), checked and normalised again
-    (d = 1). Raises ShapeError when the stretched grain is invalid."""
+    """A grain stretched along its principal axes to a given elongation and
+    flatness (module docstring, step 2).
+
+    Parameters
+    ----------
+    poly : shapes.polyhedron.Polyhedron
+        A grain in its normalised frame (axes along the principal axes).
+    elongation, flatness : float
+        The wanted I/L and S/I of the extents along the principal axes.
+
+    Returns
+    -------
+    shapes.polyhedron.Polyhedron
+        The stretched grain, checked
+        (:func:`shapes.polyhedron.check_polyhedron`) and normalised again
+        (d = 1): its ``dims`` have I/L = elongation and S/I = flatness.
+
+    Raises
+    ------
+    ShapeError
+        When the stretched grain fails the checks (e.g. a sliver face).
+
+    Examples
+    --------
+    >>> from shapes.generate import Recipe, generate_shape
+    >>> grain = generate_shape(np.random.default_rng(1), Recipe(v_min=12, v_max=12))
+    >>> flat = stretch_to(grain, 0.6, 0.5)
+    >>> L, I, S = flat.dims
+    >>> round(float(I / L), 9), round(float(S / I), 9), flat.n_vertices
+    (0.6, 0.5, 12)
+    """
     v = poly.vertices
     ext = v.max(axis=0) - v.min(axis=0)         # along the frame's axes (principal)
     order = np.argsort(-ext)                    # L, I, S axes

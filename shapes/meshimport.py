@@ -86,10 +86,46 @@ class ImportRefused(ValueError):
 
 @dataclass
 class Budget:
-    """The vertex budget of the reduction: ``vertices`` (exactly N, fewer
-    only when the hull has fewer) or ``max_error`` (relative to d_hull, with
-    at most ``max_vertices``). Exactly one of ``vertices`` and ``max_error``
-    is set."""
+    """The vertex budget of the reduction (:func:`reduce_hull`): a vertex
+    count, or an error target with a cap on the count.
+
+    Exactly one of ``vertices`` and ``max_error`` is set; as ``max_error``
+    defaults to ``DEFAULT_MAX_ERROR``, a vertex count is asked for with
+    ``Budget(vertices=N, max_error=None)``. Invalid values raise
+    ValueError.
+
+    Parameters
+    ----------
+    vertices : int or None
+        Reduce to exactly this many vertices (at least 4; fewer only when
+        the hull has fewer).
+    max_error : float or None
+        The error target, relative to d_hull, in [0, 1): the fewest
+        vertices whose hull is within max_error x d_hull of the full hull
+        (Hausdorff distance). Default ``DEFAULT_MAX_ERROR`` (0.02).
+    max_vertices : int
+        At most this many vertices with ``max_error`` (at least 4; default
+        ``DEFAULT_MAX_VERTICES``, 37, the published library's largest
+        count).
+
+    Attributes
+    ----------
+    vertices, max_error, max_vertices
+        The parameters, as given.
+    cap : int
+        The most vertices the reduction may keep.
+
+    Examples
+    --------
+    >>> Budget(), Budget().cap
+    (Budget(vertices=None, max_error=0.02, max_vertices=37), 37)
+    >>> Budget(vertices=12, max_error=None).as_dict()
+    {'vertices': 12, 'max_error': None, 'max_vertices': None}
+    >>> Budget(vertices=12)
+    Traceback (most recent call last):
+    ...
+    ValueError: set exactly one of vertices and max_error
+    """
 
     vertices: int | None = None
     max_error: float | None = DEFAULT_MAX_ERROR
@@ -107,26 +143,88 @@ class Budget:
 
     @property
     def cap(self):
+        """The most vertices the reduction may keep (int): ``vertices``
+        when set, else ``max_vertices``."""
         return self.vertices if self.vertices is not None else self.max_vertices
 
     def as_dict(self):
+        """The budget as stored in an imported library's recipe.
+
+        Returns
+        -------
+        dict
+            ``vertices``, ``max_error`` and ``max_vertices`` (None when a
+            vertex count is set, as it does not apply).
+        """
         return {"vertices": self.vertices, "max_error": self.max_error,
                 "max_vertices": None if self.vertices is not None else self.max_vertices}
 
 
 @dataclass
 class ImportedGrain:
-    """One imported grain: the library polyhedron (d = 1) and what the import
-    measured. Lengths in the mesh's units unless relative.
+    """One imported grain: the library polyhedron (d = 1) and what the
+    import measured (module docstring). Made by :func:`import_mesh`.
+    Lengths are in the mesh's units unless relative.
 
-    source : name (file, ``file#k`` for the k-th piece); mesh_triangles,
-    mesh_vertices : counts after the merge; mesh_volume, hull_volume : units^3;
-    hull_vertices : vertex count of the full hull; d_hull : 2 x largest
-    centre-of-mass-to-vertex distance of the full hull; source_d : d of the
-    reduced grain; convexity_deficit : 1 - V_mesh / V_hull;
-    reduction_hausdorff : Hausdorff distance reduced-full hull / d_hull;
-    reduction_volume_change : V_reduced / V_hull - 1; target_met : False when
-    an error target could not be met within max_vertices; seconds : timings.
+    Parameters
+    ----------
+    polyhedron : shapes.polyhedron.Polyhedron
+        The reduced grain in its normalised frame (d = 1).
+    source : str
+        Its name: the file, or ``file#k`` for the k-th piece of a file.
+    mesh_triangles, mesh_vertices : int
+        The mesh's counts after the merge of duplicate vertices.
+    mesh_volume, hull_volume : float
+        units^3, the volumes enclosed by the mesh and by its convex hull.
+    hull_vertices : int
+        The vertex count of the full hull.
+    d_hull : float
+        units, twice the largest distance from the full hull's centre of
+        mass to its vertices.
+    source_d : float
+        units, d of the reduced grain (twice the largest distance from its
+        centre of mass to its vertices): the grain's size in the file.
+    convexity_deficit : float
+        1 - V_mesh / V_hull (0 for a convex mesh; never below 0).
+    reduction_hausdorff : float
+        The Hausdorff distance between the reduced and the full hull,
+        relative to d_hull.
+    reduction_volume_change : float
+        V_reduced / V_hull - 1 (<= 0).
+    target_met : bool
+        False when an error target was not met (at ``max_vertices``, or
+        where the validity checks forbade the nearer choices).
+    seconds : dict
+        Timings of the steps, s: ``check``, ``hull``, ``reduce`` (wall
+        clock) and the same with ``_cpu`` (process time); :func:`import_paths`
+        adds ``load``.
+
+    Attributes
+    ----------
+    polyhedron, source, mesh_triangles, mesh_vertices
+        The parameters, as given.
+    mesh_volume, hull_volume, hull_vertices, d_hull, source_d
+        The parameters, as given.
+    convexity_deficit, reduction_hausdorff, reduction_volume_change, target_met, seconds
+        The parameters, as given.
+
+    Examples
+    --------
+    A cube of side 2, its triangles split in four, with the centre of its
+    top face pushed in by 0.5 (a concave mesh), reduced to its hull's 8
+    corners:
+
+    >>> import trimesh
+    >>> box = trimesh.creation.box(extents=(2, 2, 2))
+    >>> v, t = trimesh.remesh.subdivide(box.vertices, box.faces)
+    >>> v[np.all(np.isclose(v, [0, 0, 1]), axis=1)] = [0, 0, 0.5]
+    >>> g = import_mesh(v, t, source="dented")
+    >>> g.polyhedron.n_vertices, g.mesh_vertices, g.mesh_triangles, g.hull_vertices
+    (8, 26, 48, 8)
+    >>> round(g.mesh_volume, 9), round(g.hull_volume, 9), round(g.convexity_deficit, 9)
+    (7.5, 8.0, 0.0625)
+    >>> round(g.d_hull, 6), round(g.reduction_hausdorff, 12), g.target_met      # d = 2 sqrt(3)
+    (3.464102, 0.0, True)
     """
 
     polyhedron: Polyhedron
@@ -148,9 +246,43 @@ class ImportedGrain:
 # ---------------------------------------------------------------- reading
 
 def read_mesh(path):
-    """(vertices (V, 3) float64, triangles (T, 3) int64) of a mesh file, as
-    stored (no merge, no repair). Raises ImportRefused for an unknown format,
-    an unreadable file or one without triangles."""
+    """Read a mesh file as it is stored (no merge, no repair), with
+    trimesh's loaders.
+
+    Parameters
+    ----------
+    path : str
+        A ``.stl`` (ASCII or binary), ``.obj``, ``.ply`` or ``.off`` file
+        (the extension decides, in any case). A file of several objects
+        gives one mesh, their transforms applied.
+
+    Returns
+    -------
+    vertices : (V, 3) float64
+        The file's units. An STL file stores each triangle's corners apart
+        (V = 3T): :func:`merge_vertices` joins them.
+    triangles : (T, 3) int64
+        Vertex indices, as the file orders them.
+
+    Raises
+    ------
+    ImportRefused
+        An unknown extension, a file the parser cannot read, no triangles,
+        or faces that are not triangles.
+
+    Examples
+    --------
+    >>> import os, tempfile, trimesh
+    >>> path = os.path.join(tempfile.mkdtemp(), "ball.stl")
+    >>> _ = trimesh.creation.icosphere(subdivisions=1).export(path)
+    >>> v, t = read_mesh(path)
+    >>> v.shape, t.shape, v.dtype, t.dtype
+    ((240, 3), (80, 3), dtype('float64'), dtype('int64'))
+    >>> read_mesh("grain.xyz")
+    Traceback (most recent call last):
+    ...
+    shapes.meshimport.ImportRefused: unknown format '.xyz' (reads .obj, .off, .ply, .stl)
+    """
     import trimesh
 
     ext = os.path.splitext(path)[1].lower()
@@ -187,14 +319,42 @@ def _mix64(x):
 
 def merge_vertices(vertices, triangles):
     """Merge vertices with exactly equal coordinates and drop triangles left
-    with a repeated corner (and vertices no triangle uses). Returns
-    (vertices (V', 3), triangles (T', 3)); the merged vertices come in an
-    order fixed by their coordinates.
+    with a repeated corner (and vertices no triangle uses).
 
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units (-0.0 and 0.0 count as equal).
+    triangles : (T, 3) int
+        Vertex indices.
+
+    Returns
+    -------
+    vertices : (V', 3) float64
+        The distinct vertices used by a triangle, in an order fixed by
+        their coordinates.
+    triangles : (T', 3) int64
+        The triangles without a repeated corner, indices into the merged
+        vertices.
+
+    Notes
+    -----
     A 64-bit hash of the coordinates' bits groups the rows (one sort of V
     keys rather than of V x 3 floats); every row is then compared with its
     group's representative, and a hash collision falls back to numpy's exact
     row unique, so the result is exact either way.
+
+    Examples
+    --------
+    A cube stored as an STL stores it, each triangle's corners apart:
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> corners = v[t].reshape(-1, 3)
+    >>> mv, mt = merge_vertices(corners, np.arange(len(corners)).reshape(-1, 3))
+    >>> corners.shape, mv.shape, mt.shape
+    ((36, 3), (8, 3), (12, 3))
     """
     v = np.asarray(vertices, np.float64) + 0.0               # a contiguous copy; -0.0 -> 0.0
     t = np.asarray(triangles, np.int64)
@@ -225,8 +385,36 @@ def merge_vertices(vertices, triangles):
 
 
 def components(vertices, triangles):
-    """Connected pieces of a mesh (triangles sharing a vertex): a list of
-    (vertices, triangles), largest first (by triangle count)."""
+    """The connected pieces of a mesh (triangles sharing a vertex are in
+    one piece): what ``python -m shapes import --components`` imports as
+    separate grains.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, merged (:func:`merge_vertices`): pieces that
+        share a vertex index are one.
+    triangles : (T, 3) int
+        Vertex indices.
+
+    Returns
+    -------
+    list of (vertices, triangles)
+        One (V_k, 3) and (T_k, 3) pair per piece, indices local to it,
+        largest first by triangle count (ties in the order of the pieces'
+        labels); the input itself when it is in one piece.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> tet = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float) + 5
+    >>> both_v = np.vstack([tet, v])
+    >>> both_t = np.vstack([[[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]], t + 4])
+    >>> [(len(pv), len(pt)) for pv, pt in components(both_v, both_t)]      # the cube first
+    [(8, 12), (4, 4)]
+    """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -246,10 +434,31 @@ def components(vertices, triangles):
 
 
 def mesh_volume(vertices, triangles):
-    """Signed enclosed volume (units^3) of a closed triangle mesh, positive
-    for outward (counter-clockwise from outside) triangles: the divergence
-    theorem, sum of a . (b x c) / 6 over the triangles, about the vertices'
-    mean for round-off."""
+    """The signed volume enclosed by a closed triangle mesh: the divergence
+    theorem, the sum of a . (b x c) / 6 over the triangles (a, b, c their
+    corners relative to the vertices' mean, for round-off).
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units.
+    triangles : (T, 3) int
+        A closed mesh.
+
+    Returns
+    -------
+    float
+        units^3, positive for outward (counter-clockwise from outside)
+        triangles, negative for a mesh inside out.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), (0, 1), (0, 2))), float))
+    >>> mesh_volume(v, t), mesh_volume(v, t[:, ::-1])
+    (2.0, -2.0)
+    """
     v = np.asarray(vertices, float)
     v = v - v.mean(axis=0)
     t = np.asarray(triangles)
@@ -260,14 +469,46 @@ def mesh_volume(vertices, triangles):
 
 def check_closed(vertices, triangles):
     """Raise ImportRefused unless the mesh is finite, closed, manifold,
-    consistently oriented and in one piece, with a non-zero volume; returns
-    its signed volume (units^3, positive for outward triangles).
+    consistently oriented and in one piece, with a non-zero volume (module
+    docstring, step 1).
 
-    vertices : (V, 3) merged (:func:`merge_vertices`); triangles : (T, 3).
     One sort of the 3T directed edges, keyed (smaller index, larger index,
     direction), decides the edge conditions: every undirected edge must
     occur exactly twice, once in each direction. Its edges then give the
     connected pieces.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Merged vertex positions (:func:`merge_vertices`), any units.
+    triangles : (T, 3) int
+        Vertex indices.
+
+    Returns
+    -------
+    float
+        The signed volume (units^3, :func:`mesh_volume`): positive for
+        outward triangles, negative for a mesh inside out as a whole (which
+        passes: :func:`import_mesh` turns it round).
+
+    Raises
+    ------
+    ImportRefused
+        With a one-line reason: non-finite coordinates, fewer than 4
+        vertices or triangles, an open mesh (boundary edges), a non-manifold
+        edge, inconsistent orientation, several pieces, or no volume.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> check_closed(v, t), check_closed(v, t[:, ::-1])
+    (1.0, -1.0)
+    >>> check_closed(v, t[1:])
+    Traceback (most recent call last):
+    ...
+    shapes.meshimport.ImportRefused: open mesh: 3 boundary edges (each in one triangle); a grain must be ...
     """
     v, t = vertices, triangles
     if not np.isfinite(v).all():
@@ -351,8 +592,7 @@ def _inside_triangles(p, vertices, triangles, n):
 
 
 def distance_to_convex(points, vertices, triangles, chunk=4096):
-    """Exact Euclidean distances (N,) from ``points`` (N, 3) to the convex
-    polyhedron (vertices (V, 3), outward triangles (T, 3)); 0 inside.
+    """Exact Euclidean distances from points to a convex polyhedron.
 
     For a point outside, the distance is at least its largest signed plane
     distance h_max, with equality when its projection on that plane lies in
@@ -361,6 +601,31 @@ def distance_to_convex(points, vertices, triangles, chunk=4096):
     least of the point-segment distances to every edge and of h over the
     triangles that contain the point's projection (each is the distance to a
     point of the polyhedron, and the nearest point is among them).
+
+    Parameters
+    ----------
+    points : (N, 3) float
+        The points, any units.
+    vertices : (V, 3) float
+        The polyhedron's vertices, same units.
+    triangles : (T, 3) int
+        Its triangles, counter-clockwise seen from outside (outward).
+    chunk : int
+        Points handled at a time (it bounds the size of the intermediate
+        arrays).
+
+    Returns
+    -------
+    (N,) float
+        The distances, same units; 0 for points inside or on the surface.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))    # unit cube
+    >>> distance_to_convex([[0.5, 0.5, 0.5], [2, 0.5, 0.5], [2, 2, 0.5], [2, 2, 2]], v, t).round(6)
+    array([0.      , 1.      , 1.414214, 1.732051])
     """
     p = np.asarray(points, float)
     v = np.asarray(vertices, float)
@@ -460,16 +725,47 @@ def _initial_simplex(q):
 
 
 def hausdorff_to_convex(points, vertices, triangles, chunk=4096):
-    """The largest distance from ``points`` (N, 3) to the convex polyhedron
-    (vertices, outward triangles), and the index of the point attaining it
-    (-1 when every point is inside): max of :func:`distance_to_convex`, with
-    the exact distance computed only where it can matter.
+    """The largest distance from points to a convex polyhedron, and which
+    point attains it: the maximum of :func:`distance_to_convex`, with the
+    exact distance computed only where it can matter. For points whose
+    convex hull contains the polyhedron (a full hull and a reduced one), it
+    is their Hausdorff distance.
 
     Each point has a lower bound L (its largest signed plane distance) and
     an upper bound U (its distance to where the segment from it to the
     vertices' mean enters the polyhedron, a point of the polyhedron). Points
     are taken by decreasing U, exact distances computed chunk by chunk,
     until the next U is below the best exact distance found.
+
+    Parameters
+    ----------
+    points : (N, 3) float
+        The points, any units.
+    vertices : (V, 3) float
+        The polyhedron's vertices, same units.
+    triangles : (T, 3) int
+        Its triangles, counter-clockwise seen from outside.
+    chunk : int
+        Points whose exact distance is computed at a time.
+
+    Returns
+    -------
+    distance : float
+        The largest distance, same units (0 when every point is inside or
+        on the surface).
+    index : int
+        The point attaining it, -1 when every point is inside or on the
+        surface.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))    # unit cube
+    >>> hausdorff_to_convex([[0.5, 0.5, 0.5], [2, 0.5, 0.5], [2, 2, 0.5]], v, t)
+    (1.414213562373095..., 2)
+    >>> hausdorff_to_convex([[0.5, 0.5, 0.5]], v, t)
+    (0.0, -1)
     """
     p = np.asarray(points, float)
     v = np.asarray(vertices, float)
@@ -572,11 +868,35 @@ class _Greedy:
 
 
 def thin_points(q, max_points=MAX_CANDIDATES):
-    """Indices of at most ``max_points`` of the points q (N, 3) (unit size
-    d = 1), spread over them: one point per occupied cell of a cubic grid
-    whose spacing starts at sqrt(pi / max_points) (a convex surface of size
-    1 has an area of at most pi) and grows by 1.5 until few enough cells are
-    occupied. All indices when N <= max_points."""
+    """At most ``max_points`` of a point set, spread over it: one point per
+    occupied cell of a cubic grid whose spacing starts at sqrt(pi /
+    max_points) (a convex surface of size 1 has an area of at most pi) and
+    grows by 1.5 until few enough cells are occupied.
+
+    Parameters
+    ----------
+    q : (N, 3) float
+        The points, at unit size (d = 1).
+    max_points : int
+        The most points kept (default ``MAX_CANDIDATES``).
+
+    Returns
+    -------
+    (K,) int
+        Sorted indices into ``q``, K <= max_points; all of them when N <=
+        max_points.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> q = rng.normal(size=(5000, 3))
+    >>> q /= 2 * np.linalg.norm(q, axis=1)[:, None]            # on a sphere of d = 1
+    >>> keep = thin_points(q, 500)
+    >>> bool(100 < len(keep) <= 500), bool(np.all(np.diff(keep) > 0))
+    (True, True)
+    >>> thin_points(q[:10], 500).tolist()
+    [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]
+    """
     if len(q) <= max_points:
         return np.arange(len(q))
     delta = np.sqrt(np.pi / max_points)
@@ -608,22 +928,63 @@ def _cheapest_removal(q, sub, chosen, involved):
 
 
 def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
-    """Choose the reduced grain's vertices among ``points`` (N, 3), the full
-    hull's vertices (any units), by greedy furthest-point insertion (module
+    """Choose the reduced grain's vertices among the full hull's vertices,
+    by greedy furthest-point insertion with validity repairs (module
     docstring, step 3).
 
-    budget : :class:`Budget`; d : the full hull's size (default: twice the
-    largest distance from the points' mean). Above ``max_candidates`` points
-    (default MAX_CANDIDATES) the greedy runs on a thinned subset
-    (:func:`thin_points`) and the error is still measured on every point; an
-    error target is then met by adding the worst points themselves.
+    Above ``max_candidates`` points the greedy runs on a thinned subset
+    (:func:`thin_points`) and the error is still measured on every point;
+    an error target is then met by adding the worst points themselves.
 
-    Returns (indices (k,) into points, their hull's outward triangles (T, 3)
-    as indices into the returned vertex list, the exact Hausdorff distance
-    to the full hull in units of d, target_met: False when an error target
-    was not reached, at ``budget.max_vertices`` or because the validity
-    repairs forbade the nearer choices). Raises ShapeError when no valid
-    polyhedron is found.
+    Parameters
+    ----------
+    points : (N, 3) float
+        The full hull's vertices, any units.
+    budget : Budget
+        A vertex count, or an error target with a cap.
+    d : float, optional
+        The full hull's size, in the points' units (default: twice the
+        largest distance from the points' mean to a point); tolerances and
+        errors are relative to it.
+    max_steps : int, optional
+        Greedy steps before the search stops adding (default 20 x cap +
+        100); the hull is then made valid by removals alone.
+    max_candidates : int, optional
+        Default ``MAX_CANDIDATES``.
+
+    Returns
+    -------
+    indices : (k,) int
+        The chosen points, indices into ``points``.
+    triangles : (T, 3) int
+        Their hull's outward triangles, as indices into ``indices`` (so
+        ``points[indices][triangles]`` are the triangles' corners).
+    error : float
+        The exact Hausdorff distance between the chosen hull and the full
+        one, in units of d.
+    target_met : bool
+        False when an error target was not reached: at
+        ``budget.max_vertices``, or because the validity repairs forbade
+        the nearer choices (always True for a vertex count).
+
+    Raises
+    ------
+    ShapeError
+        When no valid polyhedron is found.
+
+    Examples
+    --------
+    The 162 vertices of a geodesic sphere (d = 2), to 12 vertices, and to
+    the fewest within 0.05 d:
+
+    >>> import trimesh
+    >>> ball = trimesh.creation.icosphere(subdivisions=2).vertices
+    >>> idx, tri, err, met = reduce_hull(ball, Budget(vertices=12, max_error=None))
+    >>> len(idx), tri.shape, round(err, 3), met
+    (12, (20, 3), 0.202, True)
+    >>> idx, tri, err, met = reduce_hull(ball, Budget(max_error=0.05))
+    >>> len(idx), bool(err <= 0.05), met
+    (35, True, True)
     """
     p = np.asarray(points, float)
     c = p.mean(axis=0)
@@ -714,8 +1075,46 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
 # ---------------------------------------------------------------- one grain
 
 def import_mesh(vertices, triangles, budget=None, source=""):
-    """One closed mesh (vertices (V, 3), triangles (T, 3), any units) to an
-    :class:`ImportedGrain`. Raises ImportRefused with a one-line reason."""
+    """One closed mesh to a library grain: checked, its hull reduced,
+    measured and normalised (module docstring, steps 1-5).
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units; duplicates (as an STL stores them) are
+        merged here.
+    triangles : (T, 3) int
+        Vertex indices; a mesh inside out as a whole is turned round.
+    budget : Budget, optional
+        The reduction's budget (default ``Budget()``: within 0.02 d_hull,
+        at most 37 vertices).
+    source : str
+        The grain's name, kept in the result.
+
+    Returns
+    -------
+    ImportedGrain
+        The normalised polyhedron (d = 1) and the measures of the import.
+
+    Raises
+    ------
+    ImportRefused
+        With a one-line reason: the mesh fails :func:`check_closed`, its
+        hull is flat, or no valid polyhedron comes out of the reduction.
+
+    Examples
+    --------
+    A geodesic sphere of 320 triangles (d = 2): the default budget stops
+    at 37 vertices, above the error target.
+
+    >>> import trimesh
+    >>> ball = trimesh.creation.icosphere(subdivisions=2)
+    >>> g = import_mesh(ball.vertices, ball.faces, source="ball")
+    >>> g.source, g.mesh_triangles, g.hull_vertices, g.polyhedron.n_vertices, round(g.polyhedron.size, 12)
+    ('ball', 320, 162, 37, 1.0)
+    >>> round(g.d_hull, 6), round(g.reduction_hausdorff, 3), g.target_met, round(g.reduction_volume_change, 3)
+    (2.0, 0.057, False, -0.138)
+    """
     budget = budget or Budget()
     sec = {}
     t0, p0 = time.perf_counter(), time.process_time()
@@ -771,9 +1170,36 @@ def _volume_and_centre(v, t):
 
 def mesh_files(path):
     """The mesh files a command-line argument names: the file itself, or a
-    folder's files with a known extension (sorted, not recursive). Returns
-    (files, ignored_count); raises ImportRefused for a missing path or a
-    folder without mesh files."""
+    folder's files with a known extension (sorted, not recursive).
+
+    Parameters
+    ----------
+    path : str
+        A file (any extension: :func:`read_mesh` decides) or a folder.
+
+    Returns
+    -------
+    files : list of str
+        The file, or the folder's files with an extension of ``FORMATS``
+        (any case), sorted by name.
+    ignored : int
+        The folder's other entries (0 for a file).
+
+    Raises
+    ------
+    ImportRefused
+        A path that does not exist, or a folder without mesh files.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> folder = tempfile.mkdtemp()
+    >>> for name in ("b.STL", "a.obj", "notes.txt"):
+    ...     open(os.path.join(folder, name), "w").close()
+    >>> files, ignored = mesh_files(folder)
+    >>> [os.path.basename(f) for f in files], ignored
+    (['a.obj', 'b.STL'], 1)
+    """
     if os.path.isdir(path):
         names = sorted(os.listdir(path))
         files = [os.path.join(path, n) for n in names
@@ -788,13 +1214,48 @@ def mesh_files(path):
 
 
 def import_paths(paths, budget=None, split=False, log=None):
-    """Import every mesh named by ``paths`` (files and folders).
+    """Import every mesh named by files and folders (what ``python -m
+    shapes import`` runs). Nothing raises for a bad file: it is refused and
+    the others go on.
 
-    Returns (grains: list of ImportedGrain, refused: list of (name, reason),
-    ignored: count of non-mesh files in folders). ``split``: each connected
-    piece of a file is a grain (``file#k``, largest first). ``log(name,
-    reason)`` is called at each refusal as it happens. Nothing raises for a
-    bad file: it is refused and the others go on.
+    Parameters
+    ----------
+    paths : list of str
+        Files and folders (:func:`mesh_files`).
+    budget : Budget, optional
+        The reduction's budget (default ``Budget()``).
+    split : bool
+        Each connected piece of a file is a grain, named ``file#k`` (k = 0
+        the largest; :func:`components`). Default False: one file, one
+        grain.
+    log : callable, optional
+        ``log(name, reason)`` is called at each refusal as it happens.
+
+    Returns
+    -------
+    grains : list of ImportedGrain
+        The imported grains, in the order of the paths and files.
+    refused : list of (str, str)
+        (name, one-line reason) of every path, file or piece refused.
+    ignored : int
+        The count of non-mesh files in the folders.
+
+    Examples
+    --------
+    A folder with a sphere, a cube, a broken file and a note:
+
+    >>> import tempfile, trimesh
+    >>> folder = tempfile.mkdtemp()
+    >>> _ = trimesh.creation.icosphere(subdivisions=1).export(os.path.join(folder, "ball.stl"))
+    >>> _ = trimesh.creation.box().export(os.path.join(folder, "cube.obj"))
+    >>> with open(os.path.join(folder, "broken.off"), "w") as fh:
+    ...     _ = fh.write("not a mesh")
+    >>> open(os.path.join(folder, "notes.txt"), "w").close()
+    >>> grains, refused, ignored = import_paths([folder, "missing.stl"])
+    >>> [(os.path.basename(g.source), g.polyhedron.n_vertices) for g in grains], ignored
+    ([('ball.stl', 37), ('cube.obj', 8)], 1)
+    >>> [(os.path.basename(name), reason[:18]) for name, reason in refused]
+    [('broken.off', 'unreadable OFF fil'), ('missing.stl', 'no such file or fo')]
     """
     budget = budget or Budget()
     grains, refused, ignored = [], [], 0

@@ -44,11 +44,40 @@ class OverlapError(ValueError):
 
 
 class ShapeTable:
-    """Many shapes packed for the kernel.
+    """Many shapes packed for the kernel: concatenated float64 vertices and
+    int32 triangles, with offsets into them.
 
-    shapes : list of (vertices (V, 3), triangles (T, 3)) pairs in each
-    shape's local frame. Stored as concatenated float64 vertices and int32
-    triangles with offsets (S+1,) into them.
+    Parameters
+    ----------
+    shapes : list of (vertices, triangles)
+        Per shape, vertices (V, 3) m in its local frame (origin at the
+        centre of mass) and triangles (T, 3) int, counter-clockwise seen
+        from outside; V >= 4 finite vertices, T >= 4 triangles. A bad shape
+        raises :class:`OverlapError` naming it.
+
+    Attributes
+    ----------
+    n : int
+        The number of shapes S.
+    voff, toff : (S+1,) int32
+        Shape s owns ``vertices[voff[s]:voff[s+1]]`` and
+        ``triangles[toff[s]:toff[s+1]]``.
+    vertices : (sum V, 3) float64
+        m, every shape's vertices.
+    triangles : (sum T, 3) int32
+        Every shape's triangles, indices local to the shape.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> table = ShapeTable([(v, t), (2 * v, t)])
+    >>> table.n, table.voff.tolist(), table.toff.tolist(), table.vertices.shape
+    (2, [0, 8, 16], [0, 12, 24], (16, 3))
+    >>> sub = table.subset([1])                         # the larger cube alone
+    >>> sub.n, sub.voff.tolist(), float(sub.vertices.max())
+    (1, [0, 8], 1.0)
     """
 
     def __init__(self, shapes):
@@ -123,13 +152,55 @@ def _index(idx, n, nshapes, what):
 
 
 def batch_overlap(table, shape_a, pos_a, quat_a, shape_b, pos_b, quat_b, threads=0):
-    """Overlap of P pairs of polyhedra (see the module docstring).
+    """The exact overlap of P pairs of convex polyhedra A and B (module
+    docstring), computed by the compiled kernel.
 
-    table : ShapeTable; shape_a, shape_b : (P,) rows of the table;
-    pos_a, pos_b : (P, 3) m; quat_a, quat_b : (P, 4) (w, x, y, z).
-    threads : OpenMP threads (0: all cores).
-    Returns a dict of arrays: volume (P,), centroid (P, 3), normal (P, 3),
-    footprint (P, 2), area (P,), status (P,).
+    Parameters
+    ----------
+    table : ShapeTable
+        The shapes.
+    shape_a, shape_b : (P,) int
+        Rows of ``table``: the shapes of A and B.
+    pos_a, pos_b : (P, 3) float
+        m, the positions of A's and B's local origins (centres of mass).
+    quat_a, quat_b : (P, 4) float
+        Unit quaternions (w, x, y, z) turning each local frame into the
+        global one (a quaternion of zero norm is refused).
+    threads : int
+        OpenMP threads (0: all cores). The results do not depend on it.
+
+    Returns
+    -------
+    dict
+        ``volume`` (P,) m^3, ``centroid`` (P, 3) m (the contact point),
+        ``normal`` (P, 3) unit, from A to B, ``footprint`` (P, 2) m,
+        ``area`` (P,) m^2 and ``status`` (P,) int, as defined in the module
+        docstring. The volumetric normal force on B is then k_V V n, along
+        +n (repulsive). Pairs apart: volume 0, centroid and normal NaN.
+
+    Raises
+    ------
+    OverlapError
+        Indices, poses or quaternions of the wrong shape, out of range or
+        not finite; a pair that overflowed the clipping workspace.
+
+    Examples
+    --------
+    Two pairs of cubes, the second B twice as large, overlapping by 1 cm
+    and 5 cm along x:
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> table = ShapeTable([(v, t), (2 * v, t)])
+    >>> one = [[1.0, 0, 0, 0]] * 2                      # no rotation
+    >>> r = batch_overlap(table, [0, 0], [[0, 0, 0]] * 2, one, [0, 1], [[0.99, 0, 0], [1.45, 0, 0]], one)
+    >>> r["volume"].round(12), r["centroid"][:, 0].round(12), r["normal"].round(12) + 0.0
+    (array([0.01, 0.05]), array([0.495, 0.475]), array([[1., 0., 0.],
+           [1., 0., 0.]]))
+    >>> r["footprint"], r["area"], r["status"]
+    (array([[1., 1.],
+           [1., 1.]]), array([1., 1.]), array([0, 0], dtype=int32))
     """
     n = len(np.asarray(shape_a))
     sa = _index(shape_a, n, table.n, "A")
@@ -147,13 +218,55 @@ def batch_overlap(table, shape_a, pos_a, quat_a, shape_b, pos_b, quat_b, threads
 
 
 def batch_wall(table, shape, pos, quat, plane_point, plane_normal, threads=0):
-    """Overlap of P polyhedra with walls (half-spaces).
+    """The exact overlap of P convex polyhedra with walls (half-spaces).
 
-    A wall is the plane through ``plane_point`` (P, 3) m with unit normal
-    ``plane_normal`` (P, 3) pointing to the side where the polyhedron belongs
-    (into the box). The overlap is the part of the polyhedron with
-    (x - point) . m < 0; its normal is m (from the wall to the polyhedron).
-    Returns the same dict as :func:`batch_overlap`.
+    A wall is the plane through ``plane_point`` with normal m pointing to
+    the side where the polyhedron belongs (into the box). The overlap is
+    the part of the polyhedron with (x - point) . m < 0; its normal is m
+    (from the wall to the polyhedron: the wall is A).
+
+    Parameters
+    ----------
+    table : ShapeTable
+        The shapes.
+    shape : (P,) int
+        Rows of ``table``.
+    pos : (P, 3) float
+        m, the polyhedra's positions (local origins).
+    quat : (P, 4) float
+        Unit quaternions (w, x, y, z), local -> global.
+    plane_point : (P, 3) float
+        m, a point of each wall's plane.
+    plane_normal : (P, 3) float
+        Each wall's normal, into the box (normalised here; not zero).
+    threads : int
+        OpenMP threads (0: all cores).
+
+    Returns
+    -------
+    dict
+        The arrays of :func:`batch_overlap`, ``normal`` being the wall's
+        unit normal m wherever the polyhedron crosses the plane.
+
+    Raises
+    ------
+    OverlapError
+        As :func:`batch_overlap`, and for wall planes with non-finite
+        points or zero normals.
+
+    Examples
+    --------
+    A floor z = 0; the unit cube sinks 5 cm into it, the cube of side 2
+    10 cm:
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> table = ShapeTable([(v, t), (2 * v, t)])
+    >>> r = batch_wall(table, [0, 1], [[0, 0, 0.45], [0, 0, 0.9]], [[1.0, 0, 0, 0]] * 2,
+    ...                plane_point=[[0, 0, 0]] * 2, plane_normal=[[0, 0, 1]] * 2)
+    >>> r["volume"].round(12), r["centroid"][:, 2].round(12), r["area"].round(12)
+    (array([0.05, 0.4 ]), array([-0.025, -0.05 ]), array([1., 4.]))
     """
     n = len(np.asarray(shape))
     s = _index(shape, n, table.n, "polyhedron")
@@ -175,12 +288,43 @@ def batch_wall(table, shape, pos, quat, plane_point, plane_normal, threads=0):
 
 
 def pair_overlap(verts_a, faces_a, pos_a, quat_a, verts_b, faces_b, pos_b, quat_b):
-    """Overlap of polyhedron A and polyhedron B (one pair).
+    """The exact overlap of convex polyhedron A and convex polyhedron B
+    (one pair; module docstring).
 
-    verts (V, 3) m in the local frame, faces (T, 3) int outward triangles,
-    pos (3,) m, quat (4,) (w, x, y, z) local -> global. Returns a dict with
-    ``volume`` (m^3), ``centroid`` (3,) m, ``normal`` (3,) unit from A to B,
-    ``footprint`` (2,) m largest first, ``area`` (m^2), ``status``.
+    Parameters
+    ----------
+    verts_a, verts_b : (V, 3) float
+        m, each shape's vertices in its local frame (origin at the centre
+        of mass).
+    faces_a, faces_b : (T, 3) int
+        Each shape's triangles, counter-clockwise seen from outside.
+    pos_a, pos_b : (3,) float
+        m, the positions of the local origins.
+    quat_a, quat_b : (4,) float
+        Unit quaternions (w, x, y, z), local -> global.
+
+    Returns
+    -------
+    dict
+        ``volume`` (float, m^3), ``centroid`` (3,) m (the contact point),
+        ``normal`` (3,) unit from A to B, ``footprint`` (2,) m largest
+        first, ``area`` (float, m^2, of the overlap's shadow on the contact
+        plane) and ``status`` (int): 0, or 1 when S_A vanishes (one grain
+        inside the other) and the normal is the line of centres, or +z when
+        the centres coincide. Apart: volume 0, centroid and normal NaN.
+
+    Examples
+    --------
+    Two unit cubes, B 0.99 m along x from A: a slab 1 cm thick.
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> r = pair_overlap(v, t, [0, 0, 0], [1, 0, 0, 0], v, t, [0.99, 0, 0], [1, 0, 0, 0])
+    >>> round(r["volume"], 12), r["centroid"].round(12) + 0.0, r["normal"] + 0.0, r["footprint"], r["area"]
+    (0.01, array([0.495, 0.   , 0.   ]), array([1., 0., 0.]), array([1., 1.]), 1.0)
+    >>> pair_overlap(v, t, [0, 0, 0], [1, 0, 0, 0], v, t, [1.5, 0, 0], [1, 0, 0, 0])["volume"]   # apart
+    0.0
     """
     table = ShapeTable([(verts_a, faces_a), (verts_b, faces_b)])
     r = batch_overlap(table, [0], np.reshape(pos_a, (1, 3)), np.reshape(quat_a, (1, 4)),
@@ -189,9 +333,42 @@ def pair_overlap(verts_a, faces_a, pos_a, quat_a, verts_b, faces_b, pos_b, quat_
 
 
 def wall_overlap(verts, faces, pos, quat, plane_point, plane_normal):
-    """Overlap of one polyhedron with the wall through ``plane_point`` (3,)
-    whose unit normal ``plane_normal`` (3,) points to the polyhedron's side:
-    see :func:`batch_wall`. Returns the dict of :func:`pair_overlap`."""
+    """The exact overlap of one convex polyhedron with a wall (half-space;
+    see :func:`batch_wall`).
+
+    Parameters
+    ----------
+    verts : (V, 3) float
+        m, the shape's vertices in its local frame.
+    faces : (T, 3) int
+        Its triangles, counter-clockwise seen from outside.
+    pos : (3,) float
+        m, the position of its local origin.
+    quat : (4,) float
+        Unit quaternion (w, x, y, z), local -> global.
+    plane_point : (3,) float
+        m, a point of the wall's plane.
+    plane_normal : (3,) float
+        The wall's normal, pointing to the polyhedron's side (into the
+        box).
+
+    Returns
+    -------
+    dict
+        As :func:`pair_overlap`, the wall being A: the normal is the wall's
+        (from the wall to the polyhedron).
+
+    Examples
+    --------
+    A unit cube sunk 5 cm into the floor z = 0:
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> r = wall_overlap(v, t, [0, 0, 0.45], [1, 0, 0, 0], [0, 0, 0], [0, 0, 1])
+    >>> round(r["volume"], 12), r["centroid"].round(12) + 0.0, r["normal"] + 0.0
+    (0.05, array([ 0.   ,  0.   , -0.025]), array([0., 0., 1.]))
+    """
     table = ShapeTable([(verts, faces)])
     r = batch_wall(table, [0], np.reshape(pos, (1, 3)), np.reshape(quat, (1, 4)),
                    np.reshape(plane_point, (1, 3)), np.reshape(plane_normal, (1, 3)), threads=1)
@@ -220,8 +397,30 @@ def _single(r):
 
 
 def rotation_matrices(quat):
-    """(n, 3, 3) rotation matrices (local -> global: R @ local = global) of
-    quaternions (n, 4) (w, x, y, z), normalised here."""
+    """The rotation matrices of quaternions.
+
+    Parameters
+    ----------
+    quat : (n, 4) float
+        Quaternions (w, x, y, z), normalised here (not zero).
+
+    Returns
+    -------
+    (n, 3, 3) float
+        The rotations, local -> global: ``R @ local = global``.
+
+    Examples
+    --------
+    A quarter turn about z takes x to y:
+
+    >>> R = rotation_matrices([[np.cos(np.pi / 4), 0, 0, np.sin(np.pi / 4)]])
+    >>> (R[0] @ [1, 0, 0]).round(12) + 0.0
+    array([0., 1., 0.])
+    >>> rotation_matrices([[2, 0, 0, 0]])[0]                # normalised first
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
     q = np.asarray(quat, float)
     w, x, y, z = (q / np.linalg.norm(q, axis=1)[:, None]).T
     return np.stack([np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
@@ -231,9 +430,41 @@ def rotation_matrices(quat):
 
 class OrientedGrains:
     """Grains of fixed shapes and orientations whose centres are still to be
-    chosen (placing a sample): grain k has vertices ``shapes[k][0]`` (V_k,
-    3) m in its local frame, triangles ``shapes[k][1]``, and orientation
-    ``quat[k]`` (w, x, y, z)."""
+    chosen (placing a sample): :meth:`overlaps` tells which candidate
+    positions would overlap.
+
+    Parameters
+    ----------
+    shapes : list of (vertices, triangles)
+        Grain k has vertices ``shapes[k][0]`` (V_k, 3) m in its local frame
+        (origin at the centre of mass) and triangles ``shapes[k][1]``
+        (T_k, 3), counter-clockwise seen from outside.
+    quat : (K, 4) float
+        Grain k's orientation, a quaternion (w, x, y, z), local -> global.
+
+    Attributes
+    ----------
+    table : ShapeTable
+        The grains' shapes, row k for grain k.
+    quat : (K, 4) float64
+        The orientations.
+    posed : (K, max V_k, 3) float
+        m, each grain's vertices turned into the global frame, relative to
+        its centre (padded by repeating its first vertex).
+
+    Examples
+    --------
+    A unit cube and one turned by 45 deg about z (half-diagonal 0.707 m
+    along x): side by side along x, they touch at 0.5 + 0.707 m.
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))     # a unit cube
+    >>> turned = [np.cos(np.pi / 8), 0, 0, np.sin(np.pi / 8)]
+    >>> grains = OrientedGrains([(v, t), (v, t)], [[1, 0, 0, 0], turned])
+    >>> grains.overlaps(0, np.zeros((2, 3)), np.array([1, 1]), np.array([[1.15, 0, 0], [1.25, 0, 0]]))
+    array([ True, False])
+    """
 
     def __init__(self, shapes, quat):
         self.table = ShapeTable(shapes)
@@ -248,11 +479,30 @@ class OrientedGrains:
             self.posed[k] = np.concatenate([g, np.repeat(g[:1], vmax - len(g), axis=0)])   # pad: no new support
 
     def overlaps(self, k, X, J, Y):
-        """(m,) bool: grain k centred at X[i] (m, 3) overlaps grain J[i]
-        centred at Y[i] (m, 3). Exact: a pair is apart when the plane normal
-        to its line of centres separates the support functions, h_k(u) +
-        h_J(-u) < |Y - X| with u = (Y - X)/|Y - X| (most pairs whose bounding
-        spheres meet), else when the kernel finds no overlap volume."""
+        """Whether grain k centred at X[i] overlaps grain J[i] centred at
+        Y[i], for each i.
+
+        Exact: a pair is apart when the plane normal to its line of centres
+        separates the support functions, h_k(u) + h_J(-u) < |Y - X| with
+        u = (Y - X) / |Y - X| (most pairs whose bounding spheres meet),
+        else when the kernel finds no overlap volume.
+
+        Parameters
+        ----------
+        k : int
+            The grain to place.
+        X : (m, 3) float
+            m, candidate centres of grain k.
+        J : (m,) int
+            The grains already placed.
+        Y : (m, 3) float
+            m, their centres.
+
+        Returns
+        -------
+        (m,) bool
+            True where the pair overlaps (a positive overlap volume).
+        """
         X, Y, J = np.asarray(X, float), np.asarray(Y, float), np.asarray(J)
         u = Y - X
         dist = np.linalg.norm(u, axis=1)

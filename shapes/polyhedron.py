@@ -51,11 +51,64 @@ class ShapeError(ValueError):
 class Polyhedron:
     """A convex polyhedron in its normalised frame (d = 1 unless scaled).
 
-    vertices : (V, 3); triangles : (T, 3) int, counter-clockwise seen from
-    outside; triangle_face : (T,) int, geometric face of each triangle;
-    volume : float (d^3); inertia : (3, 3) inertia tensor about the centre of
-    mass for unit density (d^5); dims : (3,) extents along the principal
-    axes, sorted L >= I >= S; sphericity : Wadell's pi^(1/3) (6V)^(2/3) / A.
+    Made by :func:`normalise` (or :func:`polyhedron_from_points`), which
+    fill every field; lengths are in units of the grain's size d (module
+    docstring), so a grain of size d metres has vertices ``d * vertices``
+    (m), volume ``d**3 * volume`` (m^3) and, at density rho (kg/m^3),
+    inertia ``rho * d**5 * inertia`` (kg m^2).
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions in the normalised frame: centre of mass at the
+        origin, x along the long principal axis.
+    triangles : (T, 3) int
+        Vertex indices of each triangle, counter-clockwise seen from
+        outside (outward normals).
+    triangle_face : (T,) int
+        The geometric face of each triangle (:func:`geometric_faces`:
+        coplanar neighbours share one), numbered from 0.
+    volume : float
+        d^3, the enclosed volume.
+    inertia : (3, 3) float
+        d^5, the inertia tensor about the centre of mass for unit density
+        (diagonal in the normalised frame).
+    dims : (3,) float
+        d, the extents along the principal axes, sorted L >= I >= S.
+    area : float
+        d^2, the surface area.
+
+    Attributes
+    ----------
+    vertices, triangles, triangle_face, volume, inertia, dims, area
+        The parameters, as given.
+    n_vertices : int
+        The number of vertices V.
+    n_faces, n_edges : int
+        Geometric faces (coplanar triangles merged) and geometric edges
+        (edges between two different geometric faces).
+    sphericity : float
+        Wadell's sphericity pi^(1/3) (6 volume)^(2/3) / area: 1 for a
+        ball, 0.806 for a cube.
+    size : float
+        d, twice the largest distance from the origin (the centre of mass)
+        to a vertex: the particle size of Azema, Radjai & Saussine (2009),
+        section 2, "Numerical procedures" (1 in the normalised frame).
+
+    Examples
+    --------
+    A 1 x 1 x 2 box, moved to its normalised frame:
+
+    >>> import itertools
+    >>> box = polyhedron_from_points(np.array(list(itertools.product((0, 1), (0, 1), (0, 2))), float))
+    >>> box.n_vertices, len(box.triangles), box.n_faces, box.n_edges
+    (8, 12, 6, 12)
+    >>> round(box.size, 12), box.dims.round(4)          # d = 1; L = 2 / sqrt(6) along x
+    (1.0, array([0.8165, 0.4082, 0.4082]))
+    >>> round(box.volume, 4), round(box.sphericity, 4)  # 2 / 6^1.5 d^3
+    (0.1361, 0.7677)
+    >>> bool(np.allclose(box.vertices.mean(axis=0), 0))  # centred (a box's centre of mass is its vertices' mean)
+    True
     """
 
     vertices: np.ndarray
@@ -68,6 +121,7 @@ class Polyhedron:
 
     @property
     def n_vertices(self):
+        """The number of vertices V (int)."""
         return len(self.vertices)
 
     @property
@@ -82,11 +136,18 @@ class Polyhedron:
 
     @property
     def sphericity(self):
+        """Wadell's sphericity pi^(1/3) (6 volume)^(2/3) / area (float):
+        the surface area of the ball of the same volume over the grain's
+        own; 1 for a ball, 0.806 for a cube, 0.671 for a regular
+        tetrahedron."""
         return float(np.pi ** (1 / 3) * (6 * self.volume) ** (2 / 3) / self.area)
 
     @property
     def size(self):
-        """d = 2 x the largest centre-of-mass-to-vertex distance."""
+        """d = 2 x the largest distance from the origin to a vertex (float,
+        the vertices' units): the particle size of Azema, Radjai & Saussine
+        (2009), section 2, "Numerical procedures", when the origin is the
+        centre of mass (as in the normalised frame)."""
         return 2.0 * float(np.max(np.linalg.norm(self.vertices, axis=1)))
 
 
@@ -96,8 +157,30 @@ def _edges(triangles):
 
 
 def edge_triangles(triangles):
-    """Undirected edges (E, 2) and the two triangles of each (E, 2) of a
-    closed triangle mesh."""
+    """The undirected edges of a closed triangle mesh and the two triangles
+    that share each.
+
+    Parameters
+    ----------
+    triangles : (T, 3) int
+        A closed mesh: every edge in exactly two triangles (not checked
+        here; :func:`check_polyhedron` does).
+
+    Returns
+    -------
+    edges : (E, 2) int
+        Vertex indices of each edge, smaller first, sorted; E = 3T / 2.
+    pairs : (E, 2) int
+        The two triangles of each edge.
+
+    Examples
+    --------
+    >>> edges, pairs = edge_triangles([[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]])   # a tetrahedron
+    >>> edges.tolist()
+    [[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]]
+    >>> sorted(pairs[0].tolist())          # edge 0-1 is in triangles 0 and 1
+    [0, 1]
+    """
     directed = _edges(triangles)
     tri = np.tile(np.arange(len(triangles)), 3)
     key = np.sort(directed, axis=1)
@@ -112,7 +195,29 @@ def _feature_edges(triangles, triangle_face):
 
 
 def triangle_normals(vertices, triangles):
-    """(T, 3) unit outward normals and (T,) areas of the triangles."""
+    """Unit normals and areas of the triangles of a mesh.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units.
+    triangles : (T, 3) int
+        Vertex indices; the normal follows the right-hand rule (outward for
+        triangles counter-clockwise seen from outside).
+
+    Returns
+    -------
+    normals : (T, 3) float
+        Unit normals (0 for a triangle of zero area).
+    areas : (T,) float
+        Areas, in the vertices' units squared.
+
+    Examples
+    --------
+    >>> n, a = triangle_normals([[0, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 2, 1]])
+    >>> n.tolist(), a.tolist()
+    ([[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]], [1.0, 1.0])
+    """
     v = np.asarray(vertices, float)
     t = np.asarray(triangles)
     cr = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
@@ -121,8 +226,36 @@ def triangle_normals(vertices, triangles):
 
 
 def geometric_faces(vertices, triangles, tol_deg=COPLANAR_DEG):
-    """(T,) face id per triangle: edge-adjacent triangles whose normals differ
-    by less than ``tol_deg`` are merged (union-find over shared edges)."""
+    """The geometric face of each triangle: edge-adjacent triangles whose
+    normals differ by less than ``tol_deg`` are one face (connected
+    components over the shared edges).
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units.
+    triangles : (T, 3) int
+        A closed mesh, triangles counter-clockwise seen from outside.
+    tol_deg : float
+        deg, the largest angle between the normals of two triangles of one
+        face (default ``COPLANAR_DEG``, 1 deg).
+
+    Returns
+    -------
+    (T,) int
+        The face of each triangle, numbered 0, 1, ... in the order of the
+        faces' first triangles.
+
+    Examples
+    --------
+    The 12 triangles of a cube make its 6 faces:
+
+    >>> import itertools
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> faces = geometric_faces(v, t)
+    >>> int(faces.max()) + 1, np.bincount(faces).tolist()
+    (6, [2, 2, 2, 2, 2, 2])
+    """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -141,8 +274,35 @@ def geometric_faces(vertices, triangles, tol_deg=COPLANAR_DEG):
 
 
 def bend_angles(vertices, triangles):
-    """Edges (E, 2), their two triangles (E, 2) and the angle (E,) in degrees
-    between the two triangles' outward normals (0 = flat)."""
+    """How much a closed mesh bends at each edge: the angle between the
+    outward normals of the edge's two triangles.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units.
+    triangles : (T, 3) int
+        A closed mesh, triangles counter-clockwise seen from outside.
+
+    Returns
+    -------
+    edges : (E, 2) int
+        The edges, as :func:`edge_triangles` gives them.
+    pairs : (E, 2) int
+        The two triangles of each edge.
+    angles : (E,) float
+        deg, the angle between the two triangles' outward normals: 0 where
+        they are coplanar, 90 at a cube's edge (the exterior dihedral
+        angle; the interior one is 180 - this).
+
+    Examples
+    --------
+    >>> import itertools
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> edges, pairs, angles = bend_angles(v, t)
+    >>> len(edges), np.unique(angles.round(6)).tolist()    # 6 face diagonals, 12 cube edges
+    (18, [0.0, 90.0])
+    """
     n, _ = triangle_normals(vertices, triangles)
     edges, pairs = edge_triangles(triangles)
     cos = np.clip(np.einsum("ij,ij->i", n[pairs[:, 0]], n[pairs[:, 1]]), -1, 1)
@@ -151,10 +311,52 @@ def bend_angles(vertices, triangles):
 
 def check_polyhedron(vertices, triangles, triangle_face=None):
     """Raise ShapeError unless (vertices, triangles) is a valid convex
-    polyhedron (closed, outward, convex, within the tolerances above).
+    polyhedron: closed, outward, convex and within the tolerances of the
+    module docstring.
 
-    vertices : (V, 3); triangles : (T, 3) int. Any units: tolerances scale
-    with d.
+    The checks, in order: at least 4 finite vertices and 4 triangles, every
+    vertex in a triangle, every directed edge once and every edge in two
+    triangles (closed, consistently oriented), vertices at least
+    ``VERTEX_TOL`` d apart, a positive volume of at least ``VOLUME_TOL``
+    d^3, no vertex more than ``CONVEX_TOL`` d outside a triangle's plane,
+    no edge bending by ``COPLANAR_DEG`` to ``CREASE_DEG``, no geometric edge
+    shorter than ``EDGE_TOL`` d, no single-triangle face with an altitude
+    below ``HEIGHT_TOL`` d. Here d is twice the largest distance from the
+    vertices' mean to a vertex.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units (the tolerances scale with d).
+    triangles : (T, 3) int
+        Vertex indices, counter-clockwise seen from outside.
+    triangle_face : (T,) int, optional
+        The geometric face of each triangle (default: computed with
+        :func:`geometric_faces`).
+
+    Returns
+    -------
+    None
+        Nothing when the polyhedron is valid; otherwise ShapeError, whose
+        message names the first defect found.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> v, t = hull(np.array(list(itertools.product((-0.5, 0.5), repeat=3))))
+    >>> check_polyhedron(v, t)                      # a cube: valid
+    >>> flipped = t.copy()
+    >>> flipped[0] = flipped[0, ::-1]               # one triangle turned inwards
+    >>> check_polyhedron(v, flipped)
+    Traceback (most recent call last):
+    ...
+    shapes.polyhedron.ShapeError: mesh is not consistently oriented (a directed edge repeats)
+    >>> dented = v.copy()
+    >>> dented[0] *= 0.9                            # a corner pushed inwards
+    >>> check_polyhedron(dented, t)
+    Traceback (most recent call last):
+    ...
+    shapes.polyhedron.ShapeError: not convex: vertex ... stands 3.02e-02 d outside triangle ...
     """
     v = np.asarray(vertices, float)
     t = np.asarray(triangles)
@@ -231,14 +433,49 @@ def _check_vertex_spacing(v, d):
 
 
 def hull(points, allow_interior=False):
-    """Convex hull of ``points`` (N, 3) as (vertices (V, 3), triangles (T, 3))
-    with outward (counter-clockwise) triangles.
+    """The convex hull of a point set, with outward triangles (qhull).
 
-    Points inside the hull are dropped when ``allow_interior``, else they are
-    an error (the input was meant to be a convex vertex set). Raises
-    ShapeError for fewer than 4 points, non-finite values, coincident,
-    duplicate or (nearly) coplanar points. Works at any scale: the points are
-    centred and scaled to unit size before qhull sees them.
+    Works at any scale: the points are centred and scaled to unit size
+    before qhull sees them.
+
+    Parameters
+    ----------
+    points : (N, 3) float
+        At least 4 points, any units.
+    allow_interior : bool
+        Drop the points inside the hull (or on it but not its vertices).
+        False (the default): such a point is an error, the input being
+        meant as the vertex set of a convex polyhedron.
+
+    Returns
+    -------
+    vertices : (V, 3) float
+        The hull's vertices, in the order of the input.
+    triangles : (T, 3) int
+        Indices into ``vertices``, counter-clockwise seen from outside.
+
+    Raises
+    ------
+    ShapeError
+        Fewer than 4 points, non-finite values, coincident points, two
+        points closer than ``VERTEX_TOL`` d, (nearly) coplanar points (hull
+        volume below ``VOLUME_TOL`` d^3), or, without ``allow_interior``, a
+        point that is not a vertex of the hull.
+
+    Examples
+    --------
+    >>> import itertools
+    >>> cube = np.array(list(itertools.product((-0.5, 0.5), repeat=3)))
+    >>> v, t = hull(cube)
+    >>> v.shape, t.shape
+    ((8, 3), (12, 3))
+    >>> v, t = hull(np.vstack([cube, [[0, 0, 0]]]), allow_interior=True)   # the centre is dropped
+    >>> len(v)
+    8
+    >>> hull(np.vstack([cube, [[0, 0, 0]]]))
+    Traceback (most recent call last):
+    ...
+    shapes.polyhedron.ShapeError: point 8 lies inside the hull of the others: not the vertex set of a convex polyhedron
     """
     from scipy.spatial import ConvexHull, QhullError
 
@@ -277,8 +514,41 @@ def hull(points, allow_interior=False):
 
 def normalise(vertices, triangles):
     """Move a valid convex mesh to its normalised frame (module docstring)
-    and return a :class:`Polyhedron` with d = 1. Mass properties by trimesh
-    (Eberly's surface integrals, uniform density 1)."""
+    and measure it: a :class:`Polyhedron` with d = 1.
+
+    The frame: origin at the centre of mass (uniform density), axes along
+    the principal axes of inertia by increasing principal moment (x long),
+    x and y each towards its furthest vertex, z = x cross y, lengths divided
+    by d = 2 x the largest centre-to-vertex distance. Mass properties by
+    trimesh (Eberly's surface integrals, uniform density 1). The mesh is
+    not checked here (:func:`check_polyhedron` does).
+
+    Parameters
+    ----------
+    vertices : (V, 3) float
+        Vertex positions, any units and position.
+    triangles : (T, 3) int
+        A closed convex mesh, triangles counter-clockwise seen from outside.
+
+    Returns
+    -------
+    Polyhedron
+        The same triangles, the vertices in the normalised frame, and the
+        volume, inertia, extents, area and geometric faces measured there.
+
+    Examples
+    --------
+    A 1 x 1 x 2 box standing along z, away from the origin, comes back
+    centred, long along x, with d = 1:
+
+    >>> import itertools
+    >>> v, t = hull(np.array(list(itertools.product((0, 1), (0, 1), (0, 2))), float) + 10)
+    >>> box = normalise(v, t)
+    >>> box.vertices.max(axis=0).round(4), box.dims.round(4)
+    (array([0.4082, 0.2041, 0.2041]), array([0.8165, 0.4082, 0.4082]))
+    >>> np.diag(box.inertia).round(5)           # the smallest moment about x
+    array([0.00378, 0.00945, 0.00945])
+    """
     import trimesh
 
     v = np.asarray(vertices, float)
@@ -306,8 +576,38 @@ def normalise(vertices, triangles):
 
 
 def polyhedron_from_points(points, allow_interior=False):
-    """Hull, check and normalise: a valid :class:`Polyhedron` with d = 1 from
-    a point set, or ShapeError naming the defect."""
+    """A valid :class:`Polyhedron` with d = 1 from a point set: its hull
+    (:func:`hull`), checked (:func:`check_polyhedron`) and normalised
+    (:func:`normalise`).
+
+    Parameters
+    ----------
+    points : (N, 3) float
+        At least 4 points, any units.
+    allow_interior : bool
+        Drop the points that are not vertices of the hull (default False:
+        such a point is an error).
+
+    Returns
+    -------
+    Polyhedron
+        In the normalised frame, d = 1.
+
+    Raises
+    ------
+    ShapeError
+        Naming the defect (:func:`hull`, :func:`check_polyhedron`).
+
+    Examples
+    --------
+    A regular tetrahedron:
+
+    >>> tet = polyhedron_from_points(np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], float))
+    >>> tet.n_vertices, tet.n_faces, tet.n_edges, round(tet.sphericity, 3)
+    (4, 4, 6, 0.671)
+    >>> round(tet.volume, 5)                    # edge a = sqrt(2/3) d, volume a^3 / (6 sqrt(2))
+    0.06415
+    """
     v, t = hull(points, allow_interior=allow_interior)
     check_polyhedron(v, t)
     return normalise(v, t)

@@ -14,8 +14,43 @@ PUBLISHED = {"n_vertices": (8, 37, 20.0), "n_faces": (12, 70, 35.0)}
 
 
 def library_stats(lib):
-    """dict of summary statistics of a ShapeLibrary (counts, ratios,
-    sphericity), each with min / mean / max and percentiles."""
+    """Summary statistics of a library's counts, proportions, sphericity and
+    volume, with the published vertex and face counts beside them.
+
+    Parameters
+    ----------
+    lib : shapes.library.ShapeLibrary
+        The library.
+
+    Returns
+    -------
+    dict
+        Per series (``n_vertices``, ``n_faces``, ``n_edges``,
+        ``sphericity``, ``volume_d3`` (volume in units of d^3),
+        ``elongation_I_over_L``, ``flatness_S_over_I``, ``S_over_L``) a
+        dict of ``min``, ``mean``, ``max`` and the percentiles ``p05``,
+        ``p50``, ``p95``; ``n_vertices`` and ``n_faces`` also hold
+        ``published`` (min, max and mean of ``PUBLISHED``) and
+        ``mean_rel_diff`` (library mean / published mean - 1).
+
+    Examples
+    --------
+    A library of a cube and a 1 x 1 x 2 box:
+
+    >>> import itertools, tempfile
+    >>> from shapes.library import ShapeLibrary, write_library
+    >>> from shapes.polyhedron import polyhedron_from_points
+    >>> cube, box = (polyhedron_from_points(np.array(list(itertools.product((0, 1), (0, 1), (0, h))), float))
+    ...              for h in (1, 2))
+    >>> path = os.path.join(tempfile.mkdtemp(), "blocks.h5")
+    >>> write_library(path, [cube, box], seed=0, recipe={}, tolerances={})
+    >>> lib = ShapeLibrary(path)
+    >>> st = library_stats(lib)
+    >>> st["n_vertices"]["mean"], st["n_faces"]["max"], st["n_vertices"]["published"]
+    (8.0, 6.0, {'min': 8, 'max': 37, 'mean': 20.0})
+    >>> round(st["n_vertices"]["mean_rel_diff"], 6), st["elongation_I_over_L"]["min"]
+    (-0.6, 0.5)
+    """
     out = {}
     ratios = {"elongation_I_over_L": lib.dims[:, 1] / lib.dims[:, 0],
               "flatness_S_over_I": lib.dims[:, 2] / lib.dims[:, 1],
@@ -34,10 +69,50 @@ def library_stats(lib):
 
 
 def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused=None, notes=()):
-    """Write ``stats.json``, ``report.md``, ``counts.png``, ``shape_ratios.png``,
-    ``descriptors.png`` (:func:`plot_descriptors`) and ``sheet.png`` (a
-    dozen grains in 3D) into ``outdir``. refused : list of (file, reason)
-    of an import, listed in the report; notes : extra lines for it."""
+    """Write a library's report into a folder (what ``python -m shapes
+    build``, ``import`` and ``report`` write): ``stats.json``, ``report.md``
+    (the descriptor table beside the published ranges), ``counts.png``
+    (vertex and face counts against the published ranges),
+    ``shape_ratios.png`` (Zingg diagram and sphericity),
+    ``descriptors.png`` (:func:`plot_descriptors`) and ``sheet.png`` (the
+    first grains in 3D).
+
+    Parameters
+    ----------
+    lib : shapes.library.ShapeLibrary
+        The library.
+    outdir : str
+        The folder (made when missing); the files in it are replaced.
+    rejections : dict, optional
+        Redrawn attempts of the generator by reason, listed in the report.
+    seconds : float, optional
+        s, the time the library took to make, quoted in the report.
+    n_sheet : int
+        The number of grains drawn in ``sheet.png`` (at most 12, the
+        sheet's 3 x 4 panels; default 12).
+    refused : list of (str, str), optional
+        (file, reason) of the meshes an import refused, listed in the
+        report.
+    notes : sequence of str
+        Extra lines for the report, each written as a list item.
+
+    Returns
+    -------
+    dict
+        What ``stats.json`` holds: :func:`library_stats`, and
+        ``n_shapes``, ``rejections``, ``build_seconds``, ``descriptors``
+        (per descriptor min, mean, max, p10, p50, p90) and ``refused``.
+
+    Examples
+    --------
+    Skipped when the examples are tested: drawing the five figures takes
+    a few seconds.
+
+    >>> from shapes.library import ShapeLibrary
+    >>> st = write_report(ShapeLibrary("LIB.h5"), "LIB-report")    # doctest: +SKIP
+    >>> sorted(os.listdir("LIB-report"))                           # doctest: +SKIP
+    ['counts.png', 'descriptors.png', 'report.md', 'shape_ratios.png', 'sheet.png', 'stats.json']
+    """
     from .descriptors import library_descriptors
     import matplotlib
 
@@ -144,10 +219,46 @@ def _fmt(x):
 
 
 def descriptor_table(tables, stats=None):
-    """Markdown lines: one row per descriptor, for each library (dict label
-    -> descriptor dict) min / mean / max, the published range where there
-    is one, and, given ``stats`` (:func:`shapes.descriptors.compare` of the
-    first two), the KS statistic D with its 95 % critical value."""
+    """The Markdown table of the reports: one row per descriptor, one
+    column per library.
+
+    Parameters
+    ----------
+    tables : dict
+        label -> descriptor table (name -> array, e.g.
+        :func:`shapes.descriptors.library_descriptors`), every name of
+        ``shapes.descriptors.NAMES`` in each.
+    stats : dict, optional
+        :func:`shapes.descriptors.compare` of the first two tables: adds a
+        column of the KS statistic D with its 95 % critical value.
+
+    Returns
+    -------
+    list of str
+        The table's lines: header, rule, then per descriptor each library's
+        min / mean / max (3 significant digits) and the published range
+        where there is one (``PUBLISHED``).
+
+    Examples
+    --------
+    >>> import itertools, tempfile
+    >>> from shapes.library import ShapeLibrary, write_library
+    >>> from shapes.polyhedron import polyhedron_from_points
+    >>> cube, box = (polyhedron_from_points(np.array(list(itertools.product((0, 1), (0, 1), (0, h))), float))
+    ...              for h in (1, 2))
+    >>> path = os.path.join(tempfile.mkdtemp(), "blocks.h5")
+    >>> write_library(path, [cube, box], seed=0, recipe={}, tolerances={})
+    >>> lib = ShapeLibrary(path)
+    >>> from shapes.descriptors import library_descriptors
+    >>> lines = descriptor_table({"blocks": library_descriptors(lib)})
+    >>> for line in lines[:5]:
+    ...     print(line)
+    | descriptor | blocks: min / mean / max | published |
+    |---|---|---|
+    | vertices | 8 / 8 / 8 | 8–37, mean 20 |
+    | faces | 6 / 6 / 6 | 12–70, mean 35 |
+    | edges | 12 / 12 / 12 | – |
+    """
     from .descriptors import NAMES
 
     labels = list(tables)
@@ -169,11 +280,36 @@ def descriptor_table(tables, stats=None):
 
 
 def plot_descriptors(libs, path):
-    """One figure of histograms, every library of ``libs`` (dict label ->
-    (ShapeLibrary, descriptor dict)) overlaid as densities: vertex and face
-    counts (published range shaded), elongation, flatness, sphericity,
-    angularity per grain, the exterior dihedral angle of every edge
-    (length-weighted), convexity deficit and reduction error."""
+    """One figure of histograms of the descriptors, the libraries overlaid
+    as densities: vertex and face counts (published range shaded),
+    elongation, flatness, sphericity, angularity per grain, the exterior
+    dihedral angle of every edge (length-weighted), convexity deficit and
+    reduction error.
+
+    Parameters
+    ----------
+    libs : dict
+        label -> (ShapeLibrary, its descriptor table from
+        :func:`shapes.descriptors.library_descriptors`). Only the first
+        four are drawn, one colour each (the histograms pair the libraries
+        with four colours).
+    path : str
+        The image file to write (its format from the extension, e.g. PNG).
+
+    Returns
+    -------
+    None
+
+    Examples
+    --------
+    Skipped when the examples are tested: drawing the figure takes a few
+    seconds.
+
+    >>> from shapes.descriptors import library_descriptors
+    >>> from shapes.library import ShapeLibrary
+    >>> lib = ShapeLibrary("LIB.h5")                                                       # doctest: +SKIP
+    >>> plot_descriptors({lib.name: (lib, library_descriptors(lib))}, "descriptors.png")   # doctest: +SKIP
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -216,11 +352,40 @@ def plot_descriptors(libs, path):
 
 
 def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
-    """Two libraries side by side in ``outdir``: ``compare.md`` (descriptor
-    table with both, the published ranges, KS statistics; quantile
-    differences), ``compare.json`` (:func:`shapes.descriptors.compare`, b
-    against a) and ``compare.png`` (overlaid histograms). Returns the
-    comparison dict."""
+    """Two libraries side by side in a folder (what ``python -m shapes
+    report --against`` and ``build --like`` write).
+
+    Writes ``compare.md`` (:func:`descriptor_table` of both, the published
+    ranges and the KS statistics; the quantile differences),
+    ``compare.json`` (the two libraries and the statistics) and
+    ``compare.png`` (:func:`plot_descriptors`).
+
+    Parameters
+    ----------
+    lib_a, lib_b : shapes.library.ShapeLibrary
+        The two libraries.
+    outdir : str
+        The folder (made when missing).
+    label_a, label_b : str, optional
+        Their labels (default: their names; equal labels get " (a)" and
+        " (b)" added).
+
+    Returns
+    -------
+    dict
+        :func:`shapes.descriptors.compare` of a's descriptors and b's
+        (differences b - a).
+
+    Examples
+    --------
+    Skipped when the examples are tested: drawing the figure takes a few
+    seconds.
+
+    >>> from shapes.library import ShapeLibrary
+    >>> st = write_comparison(ShapeLibrary("A.h5"), ShapeLibrary("B.h5"), "A-vs-B")   # doctest: +SKIP
+    >>> sorted(os.listdir("A-vs-B"))                                                  # doctest: +SKIP
+    ['compare.json', 'compare.md', 'compare.png']
+    """
     from .descriptors import compare, library_descriptors
 
     os.makedirs(outdir, exist_ok=True)
@@ -251,7 +416,28 @@ def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
 
 
 def budget_text(b):
-    """A vertex budget (:meth:`shapes.meshimport.Budget.as_dict`) in words."""
+    """A vertex budget in words, for the reports.
+
+    Parameters
+    ----------
+    b : dict
+        A budget as :meth:`shapes.meshimport.Budget.as_dict` gives it (an
+        imported library's ``recipe["budget"]``); may be empty.
+
+    Returns
+    -------
+    str
+        The budget in words.
+
+    Examples
+    --------
+    >>> budget_text({"vertices": 12, "max_error": None, "max_vertices": None})
+    'reduced to 12 vertices'
+    >>> budget_text({"vertices": None, "max_error": 0.02, "max_vertices": 37})
+    'reduced to within 0.02 d of the hull, at most 37 vertices'
+    >>> budget_text({})
+    'budget not recorded'
+    """
     if b.get("vertices") is not None:
         return f"reduced to {b['vertices']} vertices"
     if b.get("max_error") is not None:
@@ -260,11 +446,40 @@ def budget_text(b):
 
 
 def study_section(library_path, outdir, figure="library_descriptors.png"):
-    """Markdown lines of the study report's section on the grains of S1:
-    the library's name and origin, its descriptors beside the published
-    ranges (8–37 vertices, mean 20; 12–70 faces, mean 35) and a figure
-    written to ``outdir/figure``. A library that cannot be read gives a
-    one-line note instead."""
+    """The study report's section on the grains of S1: the library's name
+    and origin, its descriptors beside the published ranges (8–37
+    vertices, mean 20; 12–70 faces, mean 35) and a figure.
+
+    Parameters
+    ----------
+    library_path : str
+        The library file S1 ran on.
+    outdir : str
+        The report's folder: the figure is written there.
+    figure : str
+        The figure's file name (default ``library_descriptors.png``).
+
+    Returns
+    -------
+    list of str
+        Markdown lines, starting with a blank line and the heading "The
+        grains of S1". A library that cannot be read gives a one-line note
+        instead of the table; a figure that cannot be drawn, a note instead
+        of the figure.
+
+    Examples
+    --------
+    A missing library (the full section draws a figure, which takes a few
+    seconds):
+
+    >>> for line in study_section("missing.h5", "."):
+    ...     print(line)
+    <BLANKLINE>
+    ## The grains of S1
+    <BLANKLINE>
+    The shape library `missing.h5` could not be read: missing.h5: no such shape library (build it with 'make shapes')
+    <BLANKLINE>
+    """
     from .descriptors import library_descriptors
     from .library import LibraryError, ShapeLibrary
 

@@ -13,8 +13,36 @@ CLASS_FRACTIONS = (0.50, 0.34, 0.16)      # by number
 
 
 def class_counts(n, fractions=CLASS_FRACTIONS):
-    """Integer counts per class summing to ``n``, closest to n * fractions
-    (largest remainders; ties go to the first classes)."""
+    """Integer counts per size class, summing to ``n``, closest to
+    n x fractions (the method of largest remainders).
+
+    Parameters
+    ----------
+    n : int
+        The number of particles (>= 0).
+    fractions : sequence of float
+        Number fractions per class, >= 0, summing to 1 (default: the study's
+        50 / 34 / 16 %, Azema, Radjai & Saussine 2009, section 2,
+        "Numerical procedures").
+
+    Returns
+    -------
+    (K,) int
+        The counts: floor(n x fraction) per class, then one more for each
+        of the classes with the largest remainders until they sum to ``n``
+        (ties to the first classes).
+
+    Raises
+    ------
+    ValueError
+        A negative ``n``, a negative fraction, or fractions whose sum is
+        not 1.
+
+    Examples
+    --------
+    >>> class_counts(10).tolist(), class_counts(100).tolist(), class_counts(3).tolist()
+    ([5, 3, 2], [50, 34, 16], [2, 1, 0])
+    """
     f = np.asarray(fractions, float)
     if n < 0 or np.any(f < 0) or not np.isclose(f.sum(), 1.0):
         raise ValueError(f"need n >= 0 and fractions >= 0 summing to 1, got {n}, {fractions}")
@@ -28,14 +56,41 @@ def class_counts(n, fractions=CLASS_FRACTIONS):
 
 def sample_diameters(n, seed=0, exact=True, diameters=CLASS_DIAMETERS,
                      fractions=CLASS_FRACTIONS):
-    """Diameters d (m) of ``n`` particles, in random order.
+    """The sizes d of ``n`` particles drawn from the study's size classes,
+    in random order.
 
-    exact=True: the class counts are the nearest integers to n * fractions
-    (what the seed's sample has); exact=False: each particle draws its class
-    independently (multinomial). Reproducible from ``seed`` (int or
-    numpy Generator).
+    d is the size of Azema, Radjai & Saussine (2009), section 2
+    ("Numerical procedures"): twice the largest distance from the
+    barycentre to a vertex for a polyhedron, the diameter for a sphere.
 
-    Returns (n,) float array, m.
+    Parameters
+    ----------
+    n : int
+        The number of particles.
+    seed : int or numpy.random.Generator
+        The source of the order (and of the classes when not exact): the
+        same seed gives the same diameters.
+    exact : bool
+        True (default): the class counts are :func:`class_counts` (what the
+        seed study's samples have), shuffled; False: each particle draws
+        its class independently (multinomial).
+    diameters : sequence of float
+        m, the classes' d (default 2.5, 3.75 and 5 cm).
+    fractions : sequence of float
+        Their number fractions (default 50, 34 and 16 %).
+
+    Returns
+    -------
+    (n,) float
+        m, each particle's d.
+
+    Examples
+    --------
+    >>> d = sample_diameters(10, seed=0)
+    >>> d.shape, sorted(d.tolist())
+    ((10,), [0.025, 0.025, 0.025, 0.025, 0.025, 0.0375, 0.0375, 0.0375, 0.05, 0.05])
+    >>> bool(np.array_equal(d, sample_diameters(10, seed=0)))
+    True
     """
     rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
     d = np.asarray(diameters, float)

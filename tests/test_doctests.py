@@ -71,7 +71,25 @@ def test_the_examples_run(module):
 
 #: entry points of the other modules a user calls, held to the same rule one
 #: by one (their modules are not yet all written that way)
-SHAPES_ENTRY_POINTS = ("shapes.library.ShapeLibrary", "shapes.engine.ContactEngine")
+SHAPES_ENTRY_POINTS = tuple(f"shapes.{name}" for name in (
+    "library.ShapeLibrary", "library.write_library", "engine.ContactEngine",
+    "generate.Recipe", "generate.generate_shape", "generate.generate_library",
+    "match.generate_like", "match.stretch_to", "match.smoothed_bootstrap",
+    "meshimport.Budget", "meshimport.ImportedGrain", "meshimport.read_mesh", "meshimport.merge_vertices",
+    "meshimport.components", "meshimport.mesh_volume", "meshimport.check_closed", "meshimport.distance_to_convex",
+    "meshimport.hausdorff_to_convex", "meshimport.thin_points", "meshimport.reduce_hull", "meshimport.import_mesh",
+    "meshimport.mesh_files", "meshimport.import_paths",
+    "descriptors.grain_descriptors", "descriptors.library_descriptors", "descriptors.dihedral_angles",
+    "descriptors.principal_extents", "descriptors.library_edge_angles", "descriptors.compare",
+    "polyhedron.Polyhedron", "polyhedron.polyhedron_from_points", "polyhedron.hull", "polyhedron.check_polyhedron",
+    "polyhedron.normalise", "polyhedron.geometric_faces", "polyhedron.bend_angles", "polyhedron.edge_triangles",
+    "polyhedron.triangle_normals",
+    "overlap.pair_overlap", "overlap.wall_overlap", "overlap.batch_overlap", "overlap.batch_wall",
+    "overlap.ShapeTable", "overlap.OrientedGrains", "overlap.rotation_matrices",
+    "sections.polyhedron_section", "sections.sphere_section", "sections.polygon_area", "sections.plane_basis",
+    "sections.edges_of",
+    "sizes.class_counts", "sizes.sample_diameters",
+    "report.library_stats", "report.descriptor_table", "report.budget_text", "report.study_section"))
 YADE_ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve",
                      "yade_scripts.generate.generate", "yade_scripts.pool.Job", "yade_scripts.pool.run_pool",
                      "yade_scripts.runstate.judge", "yade_scripts.study.run_samples", "yade_scripts.study.collect",
