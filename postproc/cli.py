@@ -114,6 +114,11 @@ def main(argv=None):
                     help="the criteria, as for analyze --types (default points commonplane)")
     c6.add_argument("--tolerance", nargs="+", type=float, default=[None],
                     help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
+    lm = sub.add_parser("lmgc90-agreement", help="our counts of contact points against LMGC90's compiled code, "
+                                                 "on the committed packing fixtures")
+    lm.add_argument("--out", default="runs/lmgc90",
+                    help="output folder: lmgc90_agreement.csv and .md (default runs/lmgc90)")
+    lm.add_argument("--fixtures", help="folder of the packing-*.npz fixtures (default tests/data/lmgc90)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -187,6 +192,16 @@ def main(argv=None):
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
         print(text, flush=True)
+        return 0
+    if args.cmd == "lmgc90-agreement":
+        from .study.lmgc90 import FIXTURES, write_agreement
+
+        try:
+            text = write_agreement(args.out, args.fixtures or FIXTURES)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
         return 0
     if args.cmd == "analysis-front":
         from .study.front import ANALYSIS_FRONT_COLUMNS, write_analysis_front

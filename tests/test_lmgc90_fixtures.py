@@ -334,3 +334,16 @@ def test_cli_analyze_with_lmgc90s_count(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "alert distance" in err[0]
     assert not (tmp_path / "bad").exists()
+
+
+def test_agreement_command_needs_its_fixtures(tmp_path, capsys):
+    """``postproc lmgc90-agreement`` says in one line when its fixture
+    folder holds no packing, and writes nothing. (The whole table takes
+    about a minute; the counts it tabulates are checked pair by pair by
+    test_packing_pairs above.)"""
+    from postproc.cli import main
+
+    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert "no packing-*.npz fixture" in capsys.readouterr().err
+    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path / "none"), "--out", str(tmp_path / "o")]) == 2
+    assert capsys.readouterr().err.count("\n") == 1 and not (tmp_path / "o").exists()

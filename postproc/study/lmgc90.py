@@ -1,8 +1,9 @@
 """Our counts against LMGC90's compiled code, on the committed fixtures.
 
-    python benchmarks/lmgc90_agreement.py [--out runs/lmgc90] [--speed DUMP.h5 SNAPSHOT]
+    postproc lmgc90-agreement [--out runs/lmgc90] [--fixtures tests/data/lmgc90]
 
-For every packing fixture of tests/data/lmgc90 (a snapshot of a 1000-grain
+(:func:`write_agreement`.) For every packing fixture of tests/data/lmgc90
+(``packing-*.npz``: a snapshot of a 1000-grain
 S1 dump with LMGC90's interactions at two alert distances, both point-stage
 routes; made by tests/data/lmgc90/make_fixtures.py) and every route, the
 number of contact points of each grain pair by ``lmgc90_points`` against
@@ -12,36 +13,68 @@ proportions simple / double / triple of the dumped contacts (0 or 1 point
 simple, 2 double, 3-4 triple) by LMGC90 and by us. The earlier band count
 (``--types commonplane``, tau = 0.1, started from the dumped normal) is
 compared with LMGC90's default route on the same dumped contacts. Writes
-OUT/lmgc90_agreement.csv and .md.
-
-``--speed DUMP SNAPSHOT``: the classifier's cost per contact of
-``lmgc90``, ``lmgc90-planplan`` and ``commonplane`` on that snapshot of the
-dump, in one run, as the median of 3 repetitions each, and their ratios.
+OUT/lmgc90_agreement.csv and .md. (The cost of the counts per contact is
+timed by ``benchmarks/bench_lmgc90.py``.)
 """
-import argparse
+from __future__ import annotations
+
 import collections
 import json
 import os
-import sys
-import time
 
 import numpy as np
 import pandas as pd
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from postproc import commonplane as cp  # noqa: E402
+from .. import commonplane as cp
+from ..errors import InputError
 
-HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "data", "lmgc90")
+#: the committed fixtures, beside the package in a source checkout
+FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "data", "lmgc90")
 ROUTES = {"new": "lmgc90", "old": "lmgc90-planplan"}
 
 
 def groups(counts):
+    """The group proportions of a set of contacts by their number of points.
+
+    Parameters
+    ----------
+    counts : array_like of int, shape (C,)
+        Contact points per contact.
+
+    Returns
+    -------
+    list of float
+        [simple, double, triple]: the shares with 0 or 1 point, 2, and 3 or
+        more.
+    """
     c = np.asarray(counts)
     return [float(np.mean(c <= 1)), float(np.mean(c == 2)), float(np.mean(c >= 3))]
 
 
-def one(name):
-    with np.load(os.path.join(HERE, name)) as f:
+def one(name, fixtures=FIXTURES):
+    """Our counts against LMGC90's on one packing fixture.
+
+    Parameters
+    ----------
+    name : str
+        The fixture's file name (``packing-*.npz``).
+    fixtures : str
+        The folder holding it.
+
+    Returns
+    -------
+    rows : list of dict
+        One per alert distance and route (``lmgc90``, ``lmgc90-planplan``),
+        then the earlier band count (``commonplane (tau 0.1)``) against
+        LMGC90's default route: snapshot, stage, route, alert_rel_rmin
+        (units of the smallest grain radius), alert_m (m), pairs compared,
+        equal_all (share of the pairs with equal counts), contacts (the
+        dumped ones), equal_contacts, lmgc_groups and our_groups ([simple,
+        double, triple] of the dumped contacts, :func:`groups`).
+    provenance : dict
+        The fixture's provenance (LMGC90's wheel, library hash, detection).
+    """
+    with np.load(os.path.join(fixtures, name)) as f:
         F = {k: f[k] for k in f.files}
     vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
     verts = [F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)]
@@ -91,45 +124,44 @@ def one(name):
     return rows, prov
 
 
-def speed(dump, which):
-    from postproc.classify import Classifier
-    from postproc.schema import DumpReader
-    with DumpReader(dump) as r:
-        shapes = r.shapes()
-        snap = r.read(int(which) % len(r))
-    cost = {}
-    for m in ("commonplane", "lmgc90", "lmgc90-planplan"):
-        c = Classifier(shapes, m)
-        c.classify(snap, variants=False)                   # tables built once, as in an analysis
-        ts = []
-        for _ in range(3):
-            t0 = time.perf_counter()
-            cl = c.classify(snap, variants=False)
-            ts.append(time.perf_counter() - t0)
-        n = int(cl.poly.sum())
-        cost[m] = float(np.median(ts)) / n
-        print(f"{m:16s} {n} contacts: {cost[m] * 1e3:.2f} ms a contact (median of 3)")
-    for m in ("lmgc90", "lmgc90-planplan"):
-        print(f"ratio {m} / commonplane: {cost[m] / cost['commonplane']:.2f}")
+def write_agreement(out="runs/lmgc90", fixtures=FIXTURES):
+    """Our counts against LMGC90's on every packing fixture (:func:`one`):
+    writes OUT/lmgc90_agreement.csv (one row per fixture, alert and route)
+    and OUT/lmgc90_agreement.md (LMGC90's provenance and the table).
 
+    Parameters
+    ----------
+    out : str
+        Output folder (made if missing).
+    fixtures : str
+        The folder of the ``packing-*.npz`` fixtures (default the committed
+        tests/data/lmgc90).
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--out", default="runs/lmgc90")
-    ap.add_argument("--speed", nargs=2, metavar=("DUMP", "SNAPSHOT"))
-    a = ap.parse_args()
-    if a.speed:
-        speed(*a.speed)
-        return
-    os.makedirs(a.out, exist_ok=True)
+    Returns
+    -------
+    str
+        The text of lmgc90_agreement.md.
+
+    Raises
+    ------
+    InputError
+        No packing fixture in ``fixtures``.
+    """
+    try:
+        names = sorted(f for f in os.listdir(fixtures) if f.startswith("packing-"))
+    except OSError as exc:
+        raise InputError(f"{fixtures}: {exc.strerror or exc}") from None
+    if not names:
+        raise InputError(f"{fixtures}: no packing-*.npz fixture")
+    os.makedirs(out, exist_ok=True)
     rows, prov = [], None
-    for name in sorted(f for f in os.listdir(HERE) if f.startswith("packing-")):
-        r, prov = one(name)
+    for name in names:
+        r, prov = one(name, fixtures)
         rows += r
     df = pd.DataFrame(rows)
-    df.to_csv(os.path.join(a.out, "lmgc90_agreement.csv"), index=False)
-    fmt = lambda g: " / ".join(f"{x:.2f}" for x in g)
-    with open(os.path.join(a.out, "lmgc90_agreement.md"), "w") as fh:
+    df.to_csv(os.path.join(out, "lmgc90_agreement.csv"), index=False)
+    fmt = lambda g: " / ".join(f"{x:.2f}" for x in g)  # noqa: E731
+    with open(os.path.join(out, "lmgc90_agreement.md"), "w") as fh:
         fh.write(f"LMGC90: {prov['wheel']} (library sha256 {prov['library_sha256'][:12]}), {prov['detection']}, "
                  f"cundall_iter {prov['cundall_iterations']}\n\n")
         fh.write("| snapshot | route | alert (r_min) | pairs | equal counts | contacts | equal | "
@@ -138,8 +170,5 @@ def main():
             fh.write(f"| {r['snapshot']} ({r['stage']}) | {r['route']} | {r['alert_rel_rmin']:g} | {r['pairs']} | "
                      f"{r['equal_all']:.4f} | {r['contacts']} | {r['equal_contacts']:.4f} | "
                      f"{fmt(r['lmgc_groups'])} | {fmt(r['our_groups'])} |\n")
-    print(open(os.path.join(a.out, "lmgc90_agreement.md")).read())
-
-
-if __name__ == "__main__":
-    main()
+    with open(os.path.join(out, "lmgc90_agreement.md")) as fh:
+        return fh.read()
