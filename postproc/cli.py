@@ -119,6 +119,12 @@ def main(argv=None):
     lm.add_argument("--out", default="runs/lmgc90",
                     help="output folder: lmgc90_agreement.csv and .md (default runs/lmgc90)")
     lm.add_argument("--fixtures", help="folder of the packing-*.npz fixtures (default tests/data/lmgc90)")
+    al = sub.add_parser("al-investigation", help="why the branch-length anisotropy a_l is about 0: its "
+                                                 "estimators, subsets and geometric model, printed")
+    al.add_argument("dump", nargs="+", help="RUN.h5 dumps (their steady snapshots are pooled)")
+    al.add_argument("--axis", default="z", help="compression axis: x, y or z (default z)")
+    al.add_argument("--pairs", type=int, default=20000,
+                    help="random pairs for the isotropic geometric model (default 20000)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -202,6 +208,11 @@ def main(argv=None):
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
         print(text)
+        return 0
+    if args.cmd == "al-investigation":
+        from .study.alinvestigation import investigate
+
+        investigate(args.dump, args.axis, args.pairs)
         return 0
     if args.cmd == "analysis-front":
         from .study.front import ANALYSIS_FRONT_COLUMNS, write_analysis_front

@@ -102,3 +102,21 @@ def test_principal_extents_and_radial_distance_of_a_rotated_box():
                   R @ (np.array([1, 1, 0]) / np.sqrt(2))])
     r = radial_distance(v, tri, u)
     assert r == pytest.approx([0.5, 1.5, 1.0, 0.5 * np.sqrt(2)], rel=1e-12)
+
+
+def test_al_investigation_command(tmp_path, capsys):
+    """``postproc al-investigation`` on a small synthetic spheres dump and a
+    missing one: the synthetic check first, sections 1 and 2 of the
+    spheres, the missing dump said and skipped, the summary row last."""
+    from postproc.cli import main
+    from postproc.synthetic import write_synthetic_dump
+
+    path = str(tmp_path / "syn.h5")
+    write_synthetic_dump(path, n_contacts=2000, n_snapshots=4, seed=1)
+    assert main(["al-investigation", path, str(tmp_path / "none.h5"), "--pairs", "100"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("synthetic check (200000 contacts, a = 0.08, a_l = 0.12")
+    assert f"## {path}: spheres" in out and "1. overall" in out and "2. <l / d_pair>(theta)" in out
+    assert "3. a_l by" not in out                   # the polyhedra's sections only
+    assert f"## {tmp_path / 'none.h5'}: skipped:" in out
+    assert out.rstrip().splitlines()[-1].startswith(f"| {path} | ")

@@ -217,7 +217,7 @@ def test_synthetic_subcommand(tmp_path):
 
 #: the subcommands of the study's own analyses (postproc.study), each with its --help
 STUDY_COMMANDS = ("leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
-                  "lmgc90-agreement")
+                  "lmgc90-agreement", "al-investigation")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)

@@ -1,6 +1,8 @@
 """Why is the branch-length anisotropy a_l about 0 for our polyhedra?
 
-    python benchmarks/al_investigation.py DUMP [DUMP ...] [--axis z] [--pairs 20000]
+    postproc al-investigation DUMP [DUMP ...] [--axis z] [--pairs 20000]
+
+(:func:`investigate`; one dump at a time: :func:`analyse`.)
 
 For each dump (postproc.schema), over its steady snapshots (stage shear,
 eps_q >= half its final value, postproc.statistics.steady_indices), pooling
@@ -26,28 +28,22 @@ their particle-particle contacts, prints:
    directions with random, the real, all-axial and all-lateral long axes.
 
 A synthetic check of the estimator (postproc.synthetic, known a = 0.08,
-a_l = 0.12) is printed first. Run from the repository root with the venv.
+a_l = 0.12) is printed first. Everything goes to standard output, as
+markdown tables.
 """
 from __future__ import annotations
-
-import argparse
-import os
-import sys
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-
-from postproc.axes import axis_vector, quaternion_matrices, rotation_z_to   # noqa: E402
-from postproc.study.branchlength import (solid_moments, length_profile,  # noqa: E402
-                                   principal_extents, radial_distance, subset_anisotropy)
-from postproc.classify import Classifier                   # noqa: E402
-from postproc.contactset import resolve                    # noqa: E402
-from postproc.schema import DumpReader                     # noqa: E402
-from postproc.statistics import plateau_estimate, steady_indices  # noqa: E402
-from postproc.strain import box_strains                    # noqa: E402
-from postproc.synthetic import harmonic_contacts           # noqa: E402
+from ..axes import axis_vector, quaternion_matrices, rotation_z_to
+from .branchlength import solid_moments, length_profile, principal_extents, radial_distance, subset_anisotropy
+from ..classify import Classifier
+from ..contactset import resolve
+from ..schema import DumpReader
+from ..statistics import plateau_estimate, steady_indices
+from ..strain import box_strains
+from ..synthetic import harmonic_contacts
 
 GROUP = {"VV": "simple", "VE": "simple", "VF": "simple", "EE": "simple", "EF": "double",
          "FF": "triple"}
@@ -56,20 +52,54 @@ GROUP = {"VV": "simple", "VE": "simple", "VF": "simple", "EE": "simple", "EF": "
 def fit_eq_a2(branch, length, e):
     """a_l from ordinary least squares of length = l0 + l0 a_l P2 over the
     contacts (P2 = 3 cos^2 theta - 1): the regression of the conditional
-    mean, valid whatever the density of directions."""
+    mean, valid whatever the density of directions.
+
+    Parameters
+    ----------
+    branch : ndarray, shape (C, 3)
+        Branch vectors (any length unit).
+    length : ndarray, shape (C,)
+        The per-contact length fitted (l in m, or l / d_pair).
+    e : ndarray, shape (3,)
+        Unit compression axis.
+
+    Returns
+    -------
+    float
+        a_l (dimensionless).
+    """
     c = np.abs(branch @ e) / np.linalg.norm(branch, axis=1)
     X = np.column_stack([np.ones(len(c)), 3 * c * c - 1])
     coef, *_ = np.linalg.lstsq(X, length, rcond=None)
     return coef[1] / coef[0]
 
 
-def fmt(r):
+def _fmt(r):
+    """'a_l ± se' of a :func:`subset_anisotropy` result."""
     return f"{r['a_l']:+.3f} ± {r['a_l_se']:.3f}"
 
 
 def model_lengths(geo, bodies1, bodies2, R1, R2, n):
-    """rho_1(n) + rho_2(n): bodies (K,) rows into geo, R (K, 3, 3) their
-    local -> global rotations, n (K, 3) unit branch directions."""
+    """The branch lengths of a geometric model: rho_1(n) + rho_2(n), each
+    grain's centre-to-surface distance along the branch direction.
+
+    Parameters
+    ----------
+    geo : list of (ndarray, ndarray, ndarray)
+        Per shape: vertices (V, 3), triangles (T, 3) and centre of mass (3,),
+        in the shape's local frame (m).
+    bodies1, bodies2 : ndarray of int, shape (K,)
+        Rows into ``geo`` of each pair's two grains.
+    R1, R2 : ndarray, shape (K, 3, 3)
+        Their local -> global rotations.
+    n : ndarray, shape (K, 3)
+        Unit branch directions, from grain 1 to grain 2.
+
+    Returns
+    -------
+    ndarray, shape (K,)
+        rho_1(n) + rho_2(-n) (m).
+    """
     out = np.zeros(len(n))
     for side, (b, R, sgn) in enumerate(((bodies1, R1, 1.0), (bodies2, R2, -1.0))):
         u = np.einsum("kji,kj->ki", R, sgn * n)          # R^T n, local frame
@@ -81,6 +111,27 @@ def model_lengths(geo, bodies1, bodies2, R1, R2, n):
 
 
 def analyse(path, axis, n_pairs, rng):
+    """Sections 1 to 5 of the module docstring on one dump, printed.
+
+    Parameters
+    ----------
+    path : str
+        A RUN.h5 dump (polyhedra: every section; spheres: 1 and 2).
+    axis : str or array_like
+        The compression axis ("x", "y", "z" or a vector).
+    n_pairs : int
+        Random pairs of the isotropic geometric model (section 5).
+    rng : numpy.random.Generator
+        Draws the random pairs, directions and spins.
+
+    Returns
+    -------
+    dict
+        ``path``, ``n`` (grains), ``a``, ``a_l`` and ``a_l_norm`` (the
+        pooled steady contacts' :func:`subset_anisotropy` results, of l and
+        of l / d_pair) and ``el`` (the batch-means estimate of the
+        per-snapshot a_l).
+    """
     e = axis_vector(axis)
     ax = int(np.argmax(np.abs(e)))
     with DumpReader(path) as r:
@@ -161,8 +212,8 @@ def analyse(path, axis, n_pairs, rng):
     print(f"\n1. overall ({len(br)} contacts pooled)")
     print("| quantity | value |\n|---|---|")
     print(f"| a (tensor) | {ra['a']:+.3f} ± {ra['a_se']:.3f}; snapshots {ea.text(3)} |")
-    print(f"| a_l of l (tensor, postproc.fabric) | {fmt(ra)}; snapshots {el.text(3)} |")
-    print(f"| a_l of l / d_pair (tensor) | {fmt(rn)}; snapshots {en.text(3)} |")
+    print(f"| a_l of l (tensor, postproc.fabric) | {_fmt(ra)}; snapshots {el.text(3)} |")
+    print(f"| a_l of l / d_pair (tensor) | {_fmt(rn)}; snapshots {en.text(3)} |")
     print(f"| a_l of l, direct fit of eq. a2 | {fit_eq_a2(br, ell, e):+.3f} |")
     G = np.einsum("ki,kj->ij", br, br / ell[:, None]) / len(br)
     plain = 2.5 * (e @ G @ e - 0.5 * (np.trace(G) - e @ G @ e)) / np.trace(G)
@@ -200,14 +251,14 @@ def analyse(path, axis, n_pairs, rng):
             r1 = subset_anisotropy(br, m, axis=e)
             r2 = subset_anisotropy(br, m, axis=e, length=lam)
             print(f"| {name} Q{j + 1} | {qs[j]:.2f}–{qs[j + 1]:.2f} | {m.sum()} | {r1['a']:+.3f} | "
-                  f"{fmt(r1)} | {fmt(r2)} | {lam[m].mean():.3f} |")
+                  f"{_fmt(r1)} | {_fmt(r2)} | {lam[m].mean():.3f} |")
     bil = dims[:, 1] / dims[:, 0]
     el_grain = bil < np.percentile(bil, 25)
     both = el_grain[np.concatenate(rows["b1"])] & el_grain[np.concatenate(rows["b2"])]
     r1 = subset_anisotropy(br, both, axis=e)
     r2 = subset_anisotropy(br, both, axis=e, length=lam)
     print(f"| both grains in the most elongated quarter of grains | I/L < "
-          f"{np.percentile(bil, 25):.2f} | {both.sum()} | {r1['a']:+.3f} | {fmt(r1)} | {fmt(r2)} | "
+          f"{np.percentile(bil, 25):.2f} | {both.sum()} | {r1['a']:+.3f} | {_fmt(r1)} | {_fmt(r2)} | "
           f"{lam[both].mean():.3f} |")
 
     # 4. contact types
@@ -219,7 +270,7 @@ def analyse(path, axis, n_pairs, rng):
             m = g == grp
             r1 = subset_anisotropy(br, m, axis=e)
             r2 = subset_anisotropy(br, m, axis=e, length=lam)
-            print(f"| {name} | {grp} | {m.mean():.2f} | {r1['a']:+.3f} | {fmt(r1)} | {fmt(r2)} | "
+            print(f"| {name} | {grp} | {m.mean():.2f} | {r1['a']:+.3f} | {_fmt(r1)} | {_fmt(r2)} | "
                   f"{lam[m].mean():.3f} |")
 
     # 5. orientation and geometric model
@@ -237,8 +288,8 @@ def analyse(path, axis, n_pairs, rng):
           f"sd {np.std(ell / lm):.3f}; corr(l, l_model) = {np.corrcoef(ell, lm)[0, 1]:.3f}")
     rm = subset_anisotropy(br, axis=e, length=lm)
     print("| branch directions | long axes | a_l of l_model | a_l of l_model / d_pair |\n|---|---|---|---|")
-    print(f"| real contacts | real | {fmt(rm)} | "
-          f"{fmt(subset_anisotropy(br, axis=e, length=lm / dm))} |")
+    print(f"| real contacts | real | {_fmt(rm)} | "
+          f"{_fmt(subset_anisotropy(br, axis=e, length=lm / dm))} |")
     # isotropic directions, random pairs of the sample's grains
     K = n_pairs
     nz = rng.normal(size=(K, 3))
@@ -272,35 +323,44 @@ def analyse(path, axis, n_pairs, rng):
         lk = model_lengths(geo, j1, j2, RA, RB, nz)
         r1 = subset_anisotropy(nz, axis=e, length=lk)
         r2 = subset_anisotropy(nz, axis=e, length=lk / dmk)
-        print(f"| isotropic, random pairs ({K}) | {name} | {fmt(r1)} | {fmt(r2)} |")
+        print(f"| isotropic, random pairs ({K}) | {name} | {_fmt(r1)} | {_fmt(r2)} |")
     return {"path": path, "n": nb, "a": ra, "a_l": ra, "a_l_norm": rn, "el": el}
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("dumps", nargs="+")
-    ap.add_argument("--axis", default="z")
-    ap.add_argument("--pairs", type=int, default=20000,
-                    help="random pairs for the isotropic geometric model")
-    args = ap.parse_args()
+def investigate(dumps, axis="z", n_pairs=20000):
+    """The whole investigation, printed: the synthetic check, then
+    :func:`analyse` of each dump (a dump that fails is said and skipped),
+    then a_l against sample size.
+
+    Parameters
+    ----------
+    dumps : list of str
+        RUN.h5 dumps.
+    axis : str
+        The compression axis.
+    n_pairs : int
+        Random pairs of the isotropic geometric model.
+
+    Returns
+    -------
+    list of dict
+        :func:`analyse`'s result for each dump analysed.
+    """
     rng = np.random.default_rng(0)
     s = harmonic_contacts(200_000, a=0.08, a_l=0.12, seed=1)
     r = subset_anisotropy(s.branch, axis=2)
     print(f"synthetic check (200000 contacts, a = 0.08, a_l = 0.12 drawn from eqs. a1-a2): "
-          f"a = {r['a']:.3f} ± {r['a_se']:.3f}, a_l = {fmt(r)}, direct fit of eq. a2 "
+          f"a = {r['a']:.3f} ± {r['a_se']:.3f}, a_l = {_fmt(r)}, direct fit of eq. a2 "
           f"{fit_eq_a2(s.branch, np.linalg.norm(s.branch, axis=1), np.array([0, 0, 1.0])):+.3f}")
     out = []
-    for path in args.dumps:
+    for path in dumps:
         try:
-            out.append(analyse(path, args.axis, args.pairs, rng))
+            out.append(analyse(path, axis, n_pairs, rng))
         except Exception as exc:  # one bad dump must not lose the others
             print(f"\n## {path}: skipped: {exc.__class__.__name__}: {exc}")
     print("\nsummary: a_l against sample size")
     print("| dump | grains | a | a_l of l | a_l of l/d_pair | a_l snapshots (batch means) |\n|---|---|---|---|---|---|")
     for o in out:
-        print(f"| {o['path']} | {o['n']} | {o['a']['a']:+.3f} | {fmt(o['a_l'])} | {fmt(o['a_l_norm'])} | "
+        print(f"| {o['path']} | {o['n']} | {o['a']['a']:+.3f} | {_fmt(o['a_l'])} | {_fmt(o['a_l_norm'])} | "
               f"{o['el'].text(3)} |")
-
-
-if __name__ == "__main__":
-    main()
+    return out
