@@ -170,12 +170,19 @@ class ContactEngine:
     def close(self):
         """Free the C engine's memory (also done when the engine is garbage
         collected). Closing twice does nothing; no other method may be
-        called afterwards (the C side would be handed a null engine)."""
+        called afterwards: each raises EngineError ("the contact engine is closed")."""
         if getattr(self, "handle", None):
             self.lib.pc_engine_free(self.handle)
             self.handle = None
 
     __del__ = close
+
+    def _live(self):
+        """The C engine's handle; EngineError (one line) once :meth:`close`
+        has freed it (the C side would be handed a null pointer)."""
+        if not getattr(self, "handle", None):
+            raise EngineError("the contact engine is closed")
+        return self.handle
 
     def step(self, positions, quaternions, wall_positions=None):
         """One step. positions (N, 3) m; quaternions (N, 4) (w, x, y, z),
@@ -199,7 +206,7 @@ class ContactEngine:
                 raise ValueError(f"wall positions: each low wall must lie below its high wall, got {wp.tolist()}")
         else:
             wp = self._no_walls
-        err = self.lib.pc_engine_step(self.handle, ckernel.dptr(pos), ckernel.dptr(quat), ckernel.dptr(wp),
+        err = self.lib.pc_engine_step(self._live(), ckernel.dptr(pos), ckernel.dptr(quat), ckernel.dptr(wp),
                                       ckernel.dptr(self.force), ckernel.dptr(self.torque),
                                       ckernel.dptr(self.wall_force), ckernel.dptr(self.stat))
         self.raise_for(err)
@@ -261,20 +268,20 @@ class ContactEngine:
     def set_workspace_points(self, npts):
         """Shrink every thread's clipping workspace to ``npts`` points (tests:
         a contact that does not fit then stops the step with EngineError)."""
-        if self.lib.pc_engine_set_workspace_points(self.handle, int(npts)) != 0:
+        if self.lib.pc_engine_set_workspace_points(self._live(), int(npts)) != 0:
             raise ValueError(f"workspace points must be 16 to the allocated size, got {npts}")
 
     def memory_bytes(self):
         """The memory the C engine holds now, in bytes (int): its own
         estimate, the sum of the sizes of its pair list, body and shape
         arrays, wall records and clipping workspaces."""
-        return int(self.lib.pc_engine_memory(self.handle))
+        return int(self.lib.pc_engine_memory(self._live()))
 
     def set_history(self, i, j, shear_force):
         """Set the shear history (N, force on j by i) of the listed pair
         i < j; raises KeyError when the pair is not in the neighbour list."""
         f = ckernel.f64(shear_force)
-        if self.lib.pc_engine_set_history(self.handle, int(i), int(j), ckernel.dptr(f)) != 0:
+        if self.lib.pc_engine_set_history(self._live(), int(i), int(j), ckernel.dptr(f)) != 0:
             raise KeyError(f"pair ({i}, {j}) is not in the neighbour list")
 
     def set_friction(self, mu, mu_wall):
@@ -282,14 +289,14 @@ class ContactEngine:
         from the next step on (e.g. frictionless compaction, then mu before
         shear). Shear histories above the new cap mu |F_n| are cut to it at
         that step."""
-        if self.lib.pc_engine_set_friction(self.handle, float(mu), float(mu_wall)) != 0:
+        if self.lib.pc_engine_set_friction(self._live(), float(mu), float(mu_wall)) != 0:
             raise ValueError(f"friction coefficients must be finite and >= 0, got {mu!r}, {mu_wall!r}")
 
     @property
     def friction(self):
         """(mu, mu_wall) now."""
         out = np.zeros(2)
-        self.lib.pc_engine_get_friction(self.handle, ckernel.dptr(out))
+        self.lib.pc_engine_get_friction(self._live(), ckernel.dptr(out))
         return float(out[0]), float(out[1])
 
     STATE_KEYS = ("x", "R", "xbuild", "motion", "pair_ids", "pair_records", "wall_shear", "wall_results",
@@ -308,10 +315,10 @@ class ContactEngine:
         wall contacts' histories, and the counters. An engine built with the
         same shapes, bodies and walls and given this state by
         :meth:`set_state` continues bit for bit like this one."""
-        npairs = int(self.lib.pc_engine_npairs(self.handle))
+        npairs = int(self.lib.pc_engine_npairs(self._live()))
         st = {k: np.zeros(shp, np.int32 if k in ("pair_ids", "wall_touching") else np.float64)
               for k, shp in self._state_shapes(npairs).items()}
-        self.lib.pc_engine_get_state(self.handle, ckernel.dptr(st["x"]), ckernel.dptr(st["R"]),
+        self.lib.pc_engine_get_state(self._live(), ckernel.dptr(st["x"]), ckernel.dptr(st["R"]),
                                      ckernel.dptr(st["xbuild"]), ckernel.dptr(st["motion"]),
                                      ckernel.iptr(st["pair_ids"]),
                                      ckernel.dptr(st["pair_records"]), ckernel.dptr(st["wall_shear"]),
@@ -332,7 +339,7 @@ class ContactEngine:
         for k, shp in self._state_shapes(npairs).items():
             if a[k].shape != shp:
                 raise ValueError(f"engine state: {k} has shape {a[k].shape}, this engine needs {shp}")
-        err = self.lib.pc_engine_set_state(self.handle, ckernel.dptr(a["x"]), ckernel.dptr(a["R"]),
+        err = self.lib.pc_engine_set_state(self._live(), ckernel.dptr(a["x"]), ckernel.dptr(a["R"]),
                                            ckernel.dptr(a["xbuild"]), ckernel.dptr(a["motion"]), npairs,
                                            ckernel.iptr(a["pair_ids"]),
                                            ckernel.dptr(a["pair_records"]), ckernel.dptr(a["wall_shear"]),
@@ -351,11 +358,11 @@ class ContactEngine:
         ``point`` (C, 3) m, ``normal`` (C, 3) from i to j, ``force_normal``,
         ``force_tangential`` (C, 3) N on j by i, ``volume`` (C,) m^3,
         ``footprint`` (C, 2) m, ``area`` (C,) m^2."""
-        n = int(self.lib.pc_engine_count(self.handle))
+        n = int(self.lib.pc_engine_count(self._live()))
         i1, i2 = np.zeros(n, np.int32), np.zeros(n, np.int32)
         point, normal, fnrm, ftan = (np.zeros((n, 3)) for _ in range(4))
         vol, area, fp = np.zeros(n), np.zeros(n), np.zeros((n, 2))
-        m = self.lib.pc_engine_contacts(self.handle, n, ckernel.iptr(i1), ckernel.iptr(i2), ckernel.dptr(point),
+        m = self.lib.pc_engine_contacts(self._live(), n, ckernel.iptr(i1), ckernel.iptr(i2), ckernel.dptr(point),
                                         ckernel.dptr(normal), ckernel.dptr(fnrm), ckernel.dptr(ftan),
                                         ckernel.dptr(vol), ckernel.dptr(fp), ckernel.dptr(area))
         return {"i": i1[:m].astype(np.int64), "j": i2[:m].astype(np.int64), "point": point[:m],

@@ -557,3 +557,19 @@ def test_kept_structures_never_outlive_their_validity():
             kept += eng.stats["structure_kept"]
             broken += eng.stats["structure_broken"]
     assert contacts > 1000 and kept > 500 and broken > 100
+
+
+def test_a_closed_engine_refuses_every_call_in_one_line():
+    """After close() (or a second close(), which does nothing) each method
+    raises EngineError instead of handing the C side a freed engine."""
+    v, t = cube()
+    d = 2 * np.linalg.norm(v, axis=1).max()
+    eng = ContactEngine([v], [t], [0, 0], [d, d], K_V, KT_COEF, MU, 0.0, 0.1, walls=False, threads=1)
+    eng.close()
+    eng.close()
+    pos = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.9 * d]])
+    quat = np.tile([1.0, 0.0, 0.0, 0.0], (2, 1))
+    for call in (lambda: eng.step(pos, quat), eng.contacts, eng.state, eng.memory_bytes, lambda: eng.friction,
+                 lambda: eng.set_friction(0.3, 0.0)):
+        with pytest.raises(EngineError, match="^the contact engine is closed$"):
+            call()
