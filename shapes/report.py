@@ -332,7 +332,8 @@ def plot_descriptors(libs, path):
         xs = {lab: np.asarray(d[k], float) for lab, (_, d) in libs.items()}
         allx = np.concatenate(list(xs.values()))
         if k in ("n_vertices", "n_faces"):
-            bins = np.arange(allx.min() - 0.5, allx.max() + 1.5, max(1, int(np.ptp(allx) // 40) + 1))
+            step = max(1, int(np.ptp(allx) // 40) + 1)     # the last bin holds the largest count too
+            bins = np.arange(allx.min() - 0.5, allx.max() + 0.5 + step, step)
             lo, hi, mean = PUBLISHED[k]
             ax.axvspan(lo, hi, color="tab:green", alpha=0.08)
             ax.axvline(mean, color="tab:green", lw=1, label=f"published {lo}–{hi}, mean {mean:g}")

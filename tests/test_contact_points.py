@@ -210,21 +210,29 @@ def test_kernel_contact_set_dumped_and_recomputed_classify_identically():
 
 
 @pytest.mark.slow
-def test_cli_default_is_the_point_count(tmp_path, capsys):
+def test_cli_default_is_the_point_count(tmp_path, capsys, monkeypatch):
     """postproc analyze: the point count is the default (ct_method points,
     alpha 0.1), a dump without the overlap area gives the same columns
     (recomputed), --tolerance sets alpha, a bad one gets one line, exit 2."""
     import pandas as pd
 
+    from saved_figures import check_footprint_figure, is_png, record
+
     from builders import snapshot_dicts, write_snapshot
     from postproc.cli import main
+    from postproc.footprint import DEFAULT_THRESHOLD, pair_size, relative_extents      # points: the figure's t
     from postproc.schema import DumpWriter
+    from postproc.statistics import steady_indices
 
     snap = _snapshot(_pairs(list(CASES.values()), 1e-3))
     snap.volumes = np.ones(len(snap.body_ids))
     snap.masses = np.ones(len(snap.body_ids))
     snap.wall_forces = np.zeros((6, 3))
     faces = [geometric_faces(v, t) for v, t in SHAPES]
+    # the footprints the figure must show: L1/d >= L2/d of every contact, in each pooled snapshot
+    rel = relative_extents(snap.footprint, pair_size(snap.sizes[0::2], snap.sizes[1::2]))
+    assert np.isfinite(rel).all() and (rel[:, 1] > 0).all()
+    saved = record(monkeypatch)
     out = {}
     for name, fp in (("kernel", True), ("stock", False)):
         path = str(tmp_path / f"{name}.h5")
@@ -237,7 +245,13 @@ def test_cli_default_is_the_point_count(tmp_path, capsys):
                 write_snapshot(w, snap, step=step, stage=stage, contacts=contacts)
         assert main(["analyze", path, "--out", str(tmp_path / name), "--no-errors"]) == 0
         out[name] = pd.read_csv(tmp_path / name / "summary.csv")
-        assert (tmp_path / name / "footprint.png").stat().st_size > 0      # the L1/d, L2/d figure stays
+        assert is_png(tmp_path / name / "footprint.png")      # the L1/d, L2/d figure stays
+        pool = steady_indices(out[name]["eps_q"], out[name]["stage"])
+        figs = saved.named("footprint.png")
+        assert len(figs) == len(out)                                      # one per run: this run's last
+        fig = figs[-1]
+        check_footprint_figure(fig, np.tile(rel, (len(pool), 1)), DEFAULT_THRESHOLD)
+        assert fig.axes[0].get_title().startswith(f"{name}.h5: snapshots ")
     k, s = out["kernel"], out["stock"]
     assert (k["ct_method"] == "points").all() and (k["ct_threshold"] == 0.1).all()
     assert (k["ct_fp_recomputed"] == 0).all() and (s["ct_fp_recomputed"] == 1).all()

@@ -327,22 +327,29 @@ def test_a_contact_without_overlap_keeps_its_angular_class(classifier):
 
 
 @pytest.mark.slow
-def test_cli_footprint_recomputes_without_one(tmp_path, capsys):
+def test_cli_footprint_recomputes_without_one(tmp_path, capsys, monkeypatch):
     """postproc analyze --types footprint on a dump with and without contacts/footprint (a
     kernel run, a stock or version-1 dump): the same contact-type columns,
     footprint.png, the stability columns at t/2 and 2t; --types angular; bad
     options get one line and exit code 2."""
     import pandas as pd
 
+    from saved_figures import check_footprint_figure, is_png, record
+
     from builders import snapshot_dicts, write_snapshot
     from postproc.cli import main
     from postproc.schema import DumpWriter
+    from postproc.statistics import steady_indices
 
     snap = _snapshot(_pairs(list(CASES.values()), 1e-3))
     snap.volumes = np.ones(len(snap.body_ids))
     snap.masses = np.ones(len(snap.body_ids))
     snap.wall_forces = np.zeros((6, 3))
     faces = [geometric_faces(v, t) for v, t in SHAPES]
+    # the footprints the figure must show: L1/d >= L2/d of every contact, in each pooled snapshot
+    rel = relative_extents(snap.footprint, pair_size(snap.sizes[0::2], snap.sizes[1::2]))
+    assert np.isfinite(rel).all() and (rel[:, 1] > 0).all()
+    saved = record(monkeypatch)
     out = {}
     for name, fp in (("kernel", True), ("stock", False)):
         path = str(tmp_path / f"{name}.h5")
@@ -355,7 +362,13 @@ def test_cli_footprint_recomputes_without_one(tmp_path, capsys):
                 write_snapshot(w, snap, step=step, stage=stage, contacts=contacts)
         assert main(["analyze", path, "--out", str(tmp_path / name), "--types", "footprint"]) == 0
         out[name] = pd.read_csv(tmp_path / name / "summary.csv")
-        assert (tmp_path / name / "footprint.png").stat().st_size > 0
+        assert is_png(tmp_path / name / "footprint.png")      # the L1/d, L2/d figure stays
+        pool = steady_indices(out[name]["eps_q"], out[name]["stage"])
+        figs = saved.named("footprint.png")
+        assert len(figs) == len(out)                                      # one per run: this run's last
+        fig = figs[-1]
+        check_footprint_figure(fig, np.tile(rel, (len(pool), 1)), T)
+        assert fig.axes[0].get_title().startswith(f"{name}.h5: snapshots ")
     k, s = out["kernel"], out["stock"]
     assert (k["ct_fp_recomputed"] == 0).all() and (s["ct_fp_recomputed"] == 1).all()
     assert (k["ct_method"] == "footprint").all() and (k["ct_threshold"] == T).all()

@@ -180,15 +180,86 @@ def test_analysis_front_errors_shrink_as_one_over_sqrt_n():
     assert (t["seconds"] > 0).all()
 
 
+def check_front_figures(out, saved):
+    """front.png and front-trends.png, as written into the sweep folder
+    ``out`` (``saved``: saved_figures.record), show front.csv and
+    front-points.csv: per sample, every run's wall time against its largest
+    error (filled when on the Pareto front) and each error, named by run;
+    per sample and quantity, every point's mean and interval, at x = kd/k
+    (kappa sweep and corner) or I/Id (I sweep), and the fitted limit X0 at
+    x = 0 where there is one."""
+    from saved_figures import is_png, line
+
+    from postproc.plots import TREND_PANELS
+    from postproc.study.front import FRONT_I, FRONT_KAPPA
+
+    runs = pd.read_csv(out / "front.csv", dtype={"run": str})
+    assert is_png(out / "front.png") and is_png(out / "front-trends.png")
+    fig = saved.at(out / "front.png")
+    samples = list(dict.fromkeys(runs["sample"]))
+    assert [ax.get_title() for ax in fig.axes] == samples
+    for ax, s in zip(fig.axes, samples):
+        g = runs[runs["sample"] == s]
+        x = g["wall_seconds"].to_numpy(float)
+        largest = ax.collections[0]
+        np.testing.assert_allclose(largest.get_offsets(), np.column_stack([x, g["err_max"]]), rtol=1e-12)
+        assert (largest.get_facecolors()[:, 3] > 0).tolist() == g["pareto"].tolist()    # filled: Pareto
+        for col, lab in (("err_q_over_p", "q/p"), ("err_a", "a"), ("err_a_n", "a_n"), ("err_a_t", "a_t")):
+            np.testing.assert_allclose(line(ax, lab).get_xydata(), np.column_stack([x, g[col]]), rtol=1e-12)
+        assert [t.get_text() for t in ax.texts] == g["run"].tolist()
+        se = g.loc[g["ref"], "q_over_p_se"].to_numpy(float)[:1]
+        band = [p for p in ax.patches if p.get_label() == "2 s.e. of the reference q/p (one seed)"]
+        if len(se) and np.isfinite(se[0]):                            # the reference's own noise, shaded
+            assert len(band) == 1 and band[0].get_y() == 0 and band[0].get_height() == pytest.approx(2 * se[0])
+        else:
+            assert not band
+        assert ax.get_xscale() == "log" and ax.get_xlabel() == "wall time of the run (s)"
+        assert ax.get_ylabel() == "|plateau - reference plateau|"
+    points = pd.read_csv(out / "front-points.csv")
+    fits = pd.read_csv(out / "front-fit.csv")
+    fig = saved.at(out / "front-trends.png")
+    samples = list(dict.fromkeys(points["sample"]))
+    panels = [p for p in TREND_PANELS if p[0] in points]
+    assert len(fig.axes) == len(samples) * len(panels)
+    for r, s in enumerate(samples):
+        fs = fits[fits["sample"] == s]
+        kd, i_d = ((float(fs["kappa_d"].iloc[0]), float(fs["inertial_d"].iloc[0]))
+                   if "kappa_d" in fs and len(fs) else (FRONT_KAPPA, FRONT_I))
+        g = points[points["sample"] == s]
+        g = g[g["n_particles"] == g["n_particles"].mode().iloc[0]]
+        kap = np.isclose(g["inertial_number"], i_d)
+        rate = np.isclose(g["kappa"], kd) & ~kap
+        corner = ~kap & ~rate
+        for c, (q, label) in enumerate(panels):
+            ax = fig.axes[r * len(panels) + c]
+            drawn = {b.get_label(): b.lines[0].get_xydata() for b in ax.containers}
+            for sel, x, lab in ((kap, kd / g["kappa"], "x = κd/κ"), (rate, g["inertial_number"] / i_d, "x = I/Id"),
+                                (corner, kd / g["kappa"], "corner (x = κd/κ)")):
+                if sel.any():
+                    np.testing.assert_allclose(drawn.pop(lab), np.column_stack([x[sel], g.loc[sel, q]]),
+                                               rtol=1e-12, err_msg=f"{s} {q} {lab}")
+            f = fs[fs["quantity"] == q]
+            if np.isfinite(g[q].to_numpy(float)).any() and len(f) and np.isfinite(f["X0"].iloc[0]):
+                np.testing.assert_allclose(drawn.pop("κ→∞, I→0"), [[0, f["X0"].iloc[0]]], rtol=1e-12)
+            assert not drawn, (s, q, list(drawn))                     # nothing else
+            if np.isfinite(g[q].to_numpy(float)).any():
+                assert ax.get_title() == f"{s} (κd {kd:g}, Id {i_d:g}): {label}"
+            else:
+                assert not ax.axison                                  # e.g. contact types of spheres
+
+
 @pytest.mark.yade
 @pytest.mark.skipif(shutil.which("yade-batch") is None, reason="Debian yade is not installed")
-def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library):
+def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library, monkeypatch):
+    from saved_figures import record
+
     from yade_scripts.front import main
 
     out = tmp_path / "front"
+    saved = record(monkeypatch)
     assert main(["--plan", "smoke", "--out", str(out), "--library", shape_library]) == 0
     table = pd.read_csv(out / "front.csv")
-    assert (out / "front.png").stat().st_size > 1000
+    check_front_figures(out, saved)
     assert sorted(table["sample"]) == ["polyhedra", "polyhedra", "spheres", "spheres"]
     cols = ["wall_seconds", "steps", "contact_steps", "q_over_p", "a", "a_n", "a_t", "err_max"]
     assert np.isfinite(table[cols].to_numpy(float)).all()
@@ -205,4 +276,3 @@ def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library):
     cost = pd.read_csv(out / "front-cost.csv")
     assert (cost["us_per_contact_step"] > 0).all() and (cost["contacts_per_grain"] > 0).all()
     assert "### cost" in (out / "front.md").read_text()
-    assert (out / "front-trends.png").stat().st_size > 1000

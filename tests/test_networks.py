@@ -154,12 +154,16 @@ def test_network_bad_input():
     assert out["strong"]["fraction"] == pytest.approx(1 / 3) and np.isnan(out["strong"]["a"])
 
 
-def test_cli_writes_contact_type_outputs_and_reports_bad_shapes(tmp_path, capsys):
+def test_cli_writes_contact_type_outputs_and_reports_bad_shapes(tmp_path, capsys, monkeypatch):
+    import os
+
     import pandas as pd
+    from saved_figures import is_png, legend_texts, line, record
 
     from builders import write_snapshot
     from postproc.cli import main
     from postproc.schema import DumpWriter
+    from postproc.statistics import steady_indices
 
     snap, _, tables = cube_lattice()
     d = snap.sizes[0]
@@ -177,15 +181,74 @@ def test_cli_writes_contact_type_outputs_and_reports_bad_shapes(tmp_path, capsys
                   "shape_index": bad_shape, "size": snap.sizes}
         write_snapshot(w, snap, step=2, stage="shear", bodies=bodies)
     out = tmp_path / "out"
+    saved = record(monkeypatch)
     assert main(["analyze", path, "--out", str(out), "--types", "angular", "--theta", "2.5"]) == 1
     err = capsys.readouterr().err
     assert "polyhedron 11 of contact" in err and "shape index 3 out of range (0..0)" in err
-    for name in ("summary.csv", "contact_types.png", "force_pdf.csv", "force_pdf.png", "networks.png"):
+    for name in ("summary.csv", "force_pdf.csv"):
         assert (out / name).stat().st_size > 0, name
+    for name in ("contact_types.png", "force_pdf.png", "networks.png"):
+        assert is_png(out / name), name
     df = pd.read_csv(out / "summary.csv")
     assert len(df) == 2 and (df["ct_theta_deg"] == 2.5).all()
     assert df["ct_frac_EF"].iloc[-1] == pytest.approx(expected_types()["EF"] / sum(expected_types().values()))
     pdf = pd.read_csv(out / "force_pdf.csv")
     assert {"all", "FF", "EF", "EE", "triple"} <= set(pdf["class"])
+    # the figures show the summary's and force_pdf.csv's numbers (each drawn once, then moved into out)
+    assert "footprint.png" not in {os.path.basename(p) for p, _ in saved}      # angular: no footprints
+    x = df["eps_q"].to_numpy(float)
+    assert (x == 0).all()                           # the box never changes: every snapshot at eps_q = 0
+
+    def same(ln, col):
+        np.testing.assert_allclose(ln.get_xdata(), x, rtol=0, atol=0)
+        np.testing.assert_allclose(ln.get_ydata(), df[col].to_numpy(float), rtol=1e-12, err_msg=col)
+
+    fig = saved.one("contact_types.png")
+    frac, ratio, fabric, share = fig.axes
+    for g in ("simple", "double", "triple"):
+        same(line(frac, g), f"ct_frac_{g}")
+        same(line(ratio, g), f"ct_fratio_{g}")
+    for t in ("VF", "EE", "EF", "FF"):
+        same(line(fabric, t), f"ct_fabric_{t}")
+        same(line(share, t), f"ct_qp_{t}")
+    same(line(share, "total"), "q_axial_over_p")
+    assert fig._suptitle.get_text() == "cubes.h5: contact types, angular tolerance 2.5 deg"
+    assert frac.get_ylabel() == "proportion (bands: 1.25 to 5 deg)"
+    assert all(ax.get_xlabel() == r"$\varepsilon_q$" for ax in fig.axes)
+    fig = saved.one("networks.png")
+    left, right = fig.axes
+    for k in ("a", "a_n", "a_t"):
+        same(line(left, f"strong {k}"), f"strong_{k}")
+        same(line(left, f"weak {k}"), f"weak_{k}")
+    shares = [k for k in ("strong", "weak", "wall") if f"{k}_qp" in df]
+    assert shares[:2] == ["strong", "weak"] and legend_texts(right) == [f"{k} network" for k in shares] + ["total"]
+    for k in shares:
+        same(line(right, f"{k} network"), f"{k}_qp")
+    same(line(right, "total"), "q_axial_over_p")
+    assert left.get_ylabel() == "anisotropy" and right.get_ylabel() == r"share of $q/p$ (axial)"
+    assert fig._suptitle.get_text() == "cubes.h5"
+    # force_pdf.png: every class of force_pdf.csv, each counting its contacts of the pooled snapshots
+    fig = saved.one("force_pdf.png")
+    log, lin = fig.axes
+    pool = steady_indices(df["eps_q"], df["stage"])
+    pooled = len(pool)
+    counts = {"all": sum(expected_types().values()), **expected_types()}
+    labels = []
+    for c, g in pdf.groupby("class", sort=False):
+        n = int(g["count"].iloc[0])
+        if c in counts:
+            assert n == pooled * counts[c], c
+        labels.append(f"{c} (n={n})")
+        for ax, binning in ((log, "log"), (lin, "linear")):
+            d = g[(g["binning"] == binning) & (g["pdf"] > 0)]
+            ln = line(ax, f"{c} (n={n})")
+            np.testing.assert_allclose(ln.get_xdata(), d["x"], rtol=1e-12)
+            np.testing.assert_allclose(ln.get_ydata(), d["pdf"], rtol=1e-12)
+    assert sorted(legend_texts(log)) == sorted(labels)
+    assert log.get_xscale() == "log" and lin.get_xscale() == "linear" and lin.get_yscale() == "log"
+    assert log.get_xlabel() == lin.get_xlabel() == r"$f_n/\langle f_n\rangle$"
+    names = pd.read_csv(out / "summary.csv", dtype={"snapshot": str})["snapshot"]
+    assert fig._suptitle.get_text() == (f"cubes.h5: snapshots {names.iloc[pool[0]]}-{names.iloc[pool[-1]]} pooled "
+                                        f"({pooled}) (each class normalised by the mean over all contacts)")
     assert main(["analyze", path, "--out", str(out), "--types", "angular", "--theta", "50"]) == 2
     assert "--theta must be in (0, 45)" in capsys.readouterr().err

@@ -6,6 +6,7 @@ import os
 import numpy as np
 import pytest
 import trimesh
+from saved_figures import check_descriptor_figure, is_png, record
 
 from shapes import polyhedron as P
 from shapes.__main__ import main
@@ -168,7 +169,8 @@ def target_library(path, n=50, seed=7):
     return ShapeLibrary(str(path))
 
 
-def test_build_like_matches_the_target_and_the_default_does_not(tmp_path, default_library, capsys):
+def test_build_like_matches_the_target_and_the_default_does_not(tmp_path, default_library, capsys, monkeypatch):
+    saved = record(monkeypatch)
     target = target_library(tmp_path / "target.h5")
     out = tmp_path / "like.h5"
     assert main(["build", "--like", str(target.path), "--n", "150", "--seed", "2", "--out", str(out)]) == 0
@@ -186,7 +188,11 @@ def test_build_like_matches_the_target_and_the_default_does_not(tmp_path, defaul
     assert set(like.n_vertices.tolist()) <= set(target.n_vertices.tolist())
     assert json.loads(like.attrs["recipe"])["like"] == str(target.path)
     md = (tmp_path / "like-report" / "compare.md").read_text()
-    assert "target" in md and "KS D" in md and (tmp_path / "like-report" / "compare.png").stat().st_size > 1000
+    assert "target" in md and "KS D" in md and is_png(tmp_path / "like-report" / "compare.png")
+    # compare.png: the target's and the new library's descriptors overlaid, as labelled
+    check_descriptor_figure(saved.at(tmp_path / "like-report" / "compare.png"),
+                            {"target": (target, library_descriptors(target)),
+                             like.name: (like, library_descriptors(like))})
 
 
 @pytest.fixture(scope="module")
@@ -198,7 +204,8 @@ def default_library(tmp_path_factory):
 
 
 @pytest.mark.slow
-def test_report_against_shows_two_libraries_side_by_side(tmp_path, default_library, capsys):
+def test_report_against_shows_two_libraries_side_by_side(tmp_path, default_library, capsys, monkeypatch):
+    saved = record(monkeypatch)
     a = target_library(tmp_path / "a.h5", n=30)
     b = default_library
     rep = tmp_path / "rep"
@@ -206,23 +213,32 @@ def test_report_against_shows_two_libraries_side_by_side(tmp_path, default_libra
     md = (rep / "compare.md").read_text()
     assert "target family: min / mean / max" in md and "default: min / mean / max" in md
     assert "8–37, mean 20" in md
-    for f in ("compare.png", "descriptors.png", "report.md"):
-        assert (rep / f).stat().st_size > 100
+    assert (rep / "report.md").stat().st_size > 100
+    assert is_png(rep / "compare.png") and is_png(rep / "descriptors.png")
+    other = ShapeLibrary(str(b))
+    da = library_descriptors(a)
+    check_descriptor_figure(saved.at(rep / "descriptors.png"), {"target family": (a, da)})
+    check_descriptor_figure(saved.at(rep / "compare.png"), {"target family": (a, da),
+                                                            "default": (other, library_descriptors(other))})
     assert main(["report", str(tmp_path / "nope.h5"), "--report", str(rep)]) == 2
     assert "Traceback" not in capsys.readouterr().err
 
 
-def test_study_section_names_the_library_and_shows_its_descriptors(tmp_path):
+def test_study_section_names_the_library_and_shows_its_descriptors(tmp_path, monkeypatch):
     v, t = trimesh.creation.box().vertices, trimesh.creation.box().faces
     d = tmp_path / "scans"
     d.mkdir()
     for k in range(3):
         trimesh.Trimesh(np.asarray(v) * [1, 0.8 - 0.1 * k, 0.5], t).export(str(d / f"s{k}.stl"))
     assert main(["import", str(d), "--out", str(tmp_path / "scans.h5"), "--name", "my boxes"]) == 0
+    saved = record(monkeypatch)
     lines = study_section(str(tmp_path / "scans.h5"), str(tmp_path))
     text = "\n".join(lines)
     assert "## The grains of S1" in text and "**my boxes**" in text and "imported from 3 meshes" in text
     assert "8–37, mean 20" in text and "12–70, mean 35" in text and "convexity deficit" in text
-    assert (tmp_path / "library_descriptors.png").stat().st_size > 1000
+    assert is_png(tmp_path / "library_descriptors.png")
+    lib = ShapeLibrary(str(tmp_path / "scans.h5"))
+    check_descriptor_figure(saved.at(tmp_path / "library_descriptors.png"),
+                            {"my boxes": (lib, library_descriptors(lib))})
     bad = study_section(str(tmp_path / "missing.h5"), str(tmp_path))
     assert "could not be read" in "\n".join(bad)

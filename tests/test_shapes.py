@@ -171,14 +171,56 @@ def test_exact_class_counts_and_reproducibility():
     assert not np.array_equal(d, sample_diameters(1000, seed=6))
 
 
-def test_build_command_writes_library_and_report(tmp_path):
-    from shapes.__main__ import main
+def test_build_command_writes_library_and_report(tmp_path, monkeypatch):
+    """The report's figures show the library written: its vertex and face
+    counts, its Zingg ratios and sphericities, a sheet of its first dozen
+    grains and its descriptors (each figure read back as it was saved)."""
+    from saved_figures import bars, check_descriptor_figure, is_png, legend_texts, record
 
+    from shapes.__main__ import main
+    from shapes.descriptors import library_descriptors
+
+    saved = record(monkeypatch)
     out = tmp_path / "lib.h5"
-    assert main(["build", "--n", "24", "--seed", "1", "--out", str(out), "--report", str(tmp_path / "rep")]) == 0
-    assert len(ShapeLibrary(str(out))) == 24
-    for f in ("report.md", "stats.json", "counts.png", "shape_ratios.png", "sheet.png"):
-        assert (tmp_path / "rep" / f).stat().st_size > 100
+    rep = tmp_path / "rep"
+    assert main(["build", "--n", "24", "--seed", "1", "--out", str(out), "--report", str(rep)]) == 0
+    lib = ShapeLibrary(str(out))
+    assert len(lib) == 24
+    for f in ("report.md", "stats.json"):
+        assert (rep / f).stat().st_size > 100
+    for f in ("counts.png", "shape_ratios.png", "sheet.png", "descriptors.png"):
+        assert is_png(rep / f), f
+    # counts.png: one bar per count, every grain counted once, the published range and both means
+    fig = saved.at(rep / "counts.png")
+    for ax, key, label in zip(fig.axes, ("n_vertices", "n_faces"), ("vertices", "geometric faces")):
+        x = getattr(lib, key)
+        left, width, height = bars(ax)
+        np.testing.assert_array_equal(left + width / 2, np.arange(x.min(), x.max() + 1))
+        np.testing.assert_array_equal(height, np.bincount(x - x.min()))
+        lo, hi, mean = PUBLISHED[key]
+        assert legend_texts(ax) == [f"published range {lo}-{hi}", f"published mean {mean:g}",
+                                    f"library mean {x.mean():.1f}"]
+        means = {ln.get_label(): ln.get_xdata()[0] for ln in ax.get_lines()}
+        assert means == {f"published mean {mean:g}": mean, f"library mean {x.mean():.1f}": pytest.approx(x.mean())}
+        assert ax.get_xlabel() == label
+    assert len(fig.axes) == 2
+    # shape_ratios.png: every grain's I/L and S/I, and the histogram of the sphericities
+    zingg, sph = saved.at(rep / "shape_ratios.png").axes
+    np.testing.assert_array_equal(zingg.collections[0].get_offsets(),
+                                  np.column_stack([lib.dims[:, 1] / lib.dims[:, 0], lib.dims[:, 2] / lib.dims[:, 1]]))
+    assert zingg.get_xlabel() == "elongation I/L" and zingg.get_ylabel() == "flatness S/I"
+    left, width, height = bars(sph)
+    counts, edges = np.histogram(lib.sphericity, bins=30)
+    np.testing.assert_array_equal(height, counts)
+    np.testing.assert_allclose(np.r_[left, left[-1] + width[-1]], edges, rtol=1e-12)
+    assert height.sum() == 24 and sph.get_xlabel() == "Wadell sphericity"
+    # sheet.png: the first 12 grains, each drawn with all its triangles
+    sheet = saved.at(rep / "sheet.png").axes
+    assert len(sheet) == 12
+    for k, ax in enumerate(sheet):
+        assert ax.get_title() == f"#{k}: {lib.n_vertices[k]} v, {lib.n_faces[k]} f"
+        assert len(ax.collections) == 1 and len(ax.collections[0].get_paths()) == len(lib[k][1])
+    check_descriptor_figure(saved.at(rep / "descriptors.png"), {lib.name: (lib, library_descriptors(lib))})
 
 
 def test_build_makes_the_folder_of_its_library(tmp_path, capsys):

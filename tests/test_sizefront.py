@@ -3,7 +3,6 @@ an independent weighted fit, the differences and the scatter ratio against
 their textbook formulas, and the whole front of hand-built studies with
 known plateaus, its tables and what its figure draws."""
 import json
-import os
 
 import numpy as np
 import pandas as pd
@@ -102,8 +101,11 @@ def _study(root, n, plateau, seeds=3, counts=True):
     return str(study)
 
 
-def test_write_size_front_of_hand_built_studies(tmp_path):
+def test_write_size_front_of_hand_built_studies(tmp_path, monkeypatch):
+    from saved_figures import is_png, record
+
     studies = [_study(tmp_path, 200, 0.50), _study(tmp_path, 1000, 0.45), _study(tmp_path, 5000, 0.43)]
+    saved = record(monkeypatch)
     path = sf.write_size_front(studies, str(tmp_path / "front"))
     table = pd.read_csv(tmp_path / "front" / "size.csv")
     q = table[(table["quantity"] == "q_over_p") & (table["sample"] == "polyhedra")].set_index("n_particles")
@@ -119,7 +121,44 @@ def test_write_size_front_of_hand_built_studies(tmp_path):
     assert set(verdicts.loc[verdicts["claim"] == 6, "count"]) == {"primary", "points", "commonplane"}
     md = open(path).read()
     assert "| q/p plateau | polyhedra | 0.500 [" in md and "N = 5000" in md
-    assert os.path.getsize(tmp_path / "front" / "size-front.png") > 0
+    # size-front.png, as written: a panel per quantity of the table, each series its means and 95 %
+    # intervals at N = 200, 1000, 5000, its line in N^(-1/3) and the published values dashed
+    assert is_png(tmp_path / "front" / "size-front.png")
+    fig = saved.at(tmp_path / "front" / "size-front.png")
+    from postproc.plots import SIZE_PANELS
+
+    quantities = set(table["quantity"])
+    panels = {ax.get_title(): ax for ax in fig.axes if ax.get_title()}
+    assert list(panels) == [title for q, title in SIZE_PANELS
+                            if any(t == q or t.endswith(":" + q) for t in quantities)]
+    assert "q/p plateau" in panels and "EE leaning (S1)" in panels
+    with open(sf.REFERENCE) as fh:
+        pub = json.load(fh)["results"]["q_over_p_plateau"]
+    for title, q, series in (("q/p plateau", "q_over_p", {"S1": ("polyhedra", "q_over_p"),
+                                                          "S2": ("spheres", "q_over_p")}),
+                             ("EE leaning (S1)", "ct_fabric_EE", {"S1 points": ("polyhedra", "points:ct_fabric_EE"),
+                                                                  "S1 commonplane": ("polyhedra",
+                                                                                     "commonplane:ct_fabric_EE")})):
+        ax = panels[title]
+        assert ax.get_xscale() == "log" and ax.get_xlabel() == "N (grains per sample)"
+        bars = {c.get_label(): c for c in ax.containers}
+        assert sorted(bars) == sorted(series), title
+        for lab, (sample, name) in series.items():
+            g = table[(table["quantity"] == name) & (table["sample"] == sample)].sort_values("n_particles")
+            data, _, (segments,) = bars[lab].lines
+            np.testing.assert_array_equal(data.get_xdata(), [200, 1000, 5000])
+            np.testing.assert_allclose(data.get_ydata(), g["mean"], rtol=1e-12)
+            # the error bars: the interval of each mean
+            np.testing.assert_allclose([seg[:, 1] for seg in segments.get_segments()],
+                                       g[["ci_low", "ci_high"]].to_numpy(float), rtol=1e-12)
+            # the straight line in N^(-1/3) through the means: extrapolated + slope N^(-1/3)
+            y0, c = g["extrapolated"].iloc[0], g["slope"].iloc[0]
+            assert np.isfinite(y0) and np.isfinite(c)
+            (fit,) = [ln for ln in ax.get_lines() if ln.get_linestyle() == "-" and ln.get_color() == data.get_color()]
+            np.testing.assert_allclose(fit.get_ydata(), y0 + c * fit.get_xdata() ** (-1 / 3), rtol=1e-12)
+            assert fit.get_xdata().min() < 200 and fit.get_xdata().max() > 5000
+        dashed = sorted(ln.get_ydata()[0] for ln in ax.get_lines() if ln.get_linestyle() == "--")
+        assert dashed == (sorted([pub["polyhedra"], pub["spheres"]]) if q == "q_over_p" else [])
     from postproc.plots import plot_size_front
 
     drawn = plot_size_front(table, str(tmp_path / "again.png"))

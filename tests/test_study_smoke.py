@@ -5,10 +5,13 @@ import json
 import math
 import os
 import shutil
+from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 from matplotlib.image import imread
+from saved_figures import check_descriptor_figure, is_png, line, record
 
 YADE = shutil.which("yade")
 pytestmark = [pytest.mark.yade,
@@ -23,15 +26,176 @@ FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
 
 @pytest.fixture(scope="module")
 def study(tmp_path_factory, shape_library):
+    """The study folder, main's exit code and every figure saved in this
+    process meanwhile (saved_figures.record: the report's own figures)."""
     from yade_scripts.study import main
 
     out = tmp_path_factory.mktemp("study")
-    rc = main(["--preset", "tiny", "--out", str(out), "--ensemble", "2", "--library", shape_library])
-    return out, rc
+    with pytest.MonkeyPatch.context() as mp:
+        saved = record(mp)
+        rc = main(["--preset", "tiny", "--out", str(out), "--ensemble", "2", "--library", shape_library])
+    return out, rc, saved
+
+
+def shear(df):
+    return df[df["stage"] == "shear"]
+
+
+def run_library(out):
+    """The shape library of the study's first polyhedra run (its run
+    folder's copy, named in its params.json), the report's library section's."""
+    from postproc.study.report import discover
+    from shapes.library import ShapeLibrary
+
+    for r in discover(str(out)).get("polyhedra", []):
+        pj = os.path.join(os.path.dirname(r.get("dump") or ""), "params.json")
+        if os.path.exists(pj):
+            with open(pj) as fh:
+                return ShapeLibrary(os.path.join(os.path.dirname(pj), json.load(fh).get("library", "shapes.h5")))
+    raise AssertionError("no polyhedra run with a params.json")
+
+
+def check_qp_figure(fig, summaries):
+    """fig_qp.png: every usable seed's q/p against eps_q over its shear
+    snapshots (solid, in the order of the summaries), the published
+    plateaus dashed."""
+    from postproc.study.report import LABEL, REFERENCE
+
+    with open(REFERENCE) as fh:
+        pub = json.load(fh)["results"]["q_over_p_plateau"]
+    ax = fig.axes[0]
+    solid = [ln for ln in ax.get_lines() if ln.get_linestyle() == "-"]
+    frames = [shear(df) for s in summaries for df in summaries[s]]
+    assert len(solid) == len(frames)
+    for ln, sh in zip(solid, frames):
+        np.testing.assert_allclose(ln.get_xydata(), sh[["eps_q", "q_over_p"]].to_numpy(float), rtol=1e-12)
+    dashed = {ln.get_label(): ln.get_ydata()[0] for ln in ax.get_lines() if ln.get_linestyle() == "--"}
+    assert dashed == {f"{LABEL[s]}, published plateau": pub[s] for s in summaries if pub.get(s) is not None}
+    assert ax.get_xlabel() == r"$\varepsilon_q$" and ax.get_ylabel() == "q/p"
+
+
+def check_report_figures(out, rep, saved):
+    """The report's figures, as saved, show the study's numbers: q/p of every
+    seed, the anisotropies' mean over seeds, every shear snapshot's q/p
+    against (2/5) sum a, the polar data of the first seed's snapshot nearest
+    eps_q = 0.3, the branch directions by contact group, every contact of
+    the slabs; the S1 figures of its analysis are the analysis's own (drawn
+    again from its summary.csv: the same pixels); the grains' descriptors
+    are the run's library's."""
+    import warnings
+
+    from postproc import plots
+    from postproc.analysis import analyze_snapshot
+    from postproc.angular import harmonic_curves
+    from postproc.schema import DumpReader
+    from postproc.study import report as R
+    from shapes.descriptors import library_descriptors
+
+    runs = R.discover(str(out))
+    summaries = R.run_summaries(runs)
+    check_qp_figure(saved.at(rep / "fig_qp.png"), summaries)
+    # anisotropies: per sample, each seed interpolated on the first seed's strains, then averaged
+    samples = [s for s in R.SAMPLES if summaries.get(s)]
+    fig = saved.at(rep / "fig_anisotropies.png")
+    assert len(fig.axes) == len(samples)
+    for ax, s in zip(fig.axes, samples):
+        assert ax.get_title() == f"{R.LABEL[s]} ({len(summaries[s])} seed(s))"
+        grid = shear(summaries[s][0])["eps_q"].to_numpy(float)
+        for k in ("a", "a_l", "a_n", "a_t"):
+            curves = []
+            for df in summaries[s]:
+                sh = shear(df)
+                sh = sh[np.isfinite(sh["eps_q"]) & np.isfinite(sh[k])].sort_values("eps_q")
+                if len(sh) >= 2:                                        # a seed with one value is left out
+                    curves.append(np.interp(grid, sh["eps_q"], sh[k], left=np.nan, right=np.nan))
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)          # a strain no seed reached
+                mean = np.nanmean(curves, axis=0)
+            np.testing.assert_allclose(line(ax, k).get_xydata(), np.column_stack([grid, mean]), rtol=1e-9)
+    assert fig.axes[0].get_ylabel() == "anisotropy"
+    # sff: every shear snapshot of every seed, one series of points per seed
+    ax = saved.at(rep / "fig_sff.png").axes[0]
+    points = [ln for ln in ax.get_lines() if ln.get_marker() == "o"]
+    frames = [shear(df) for s in summaries for df in summaries[s]]
+    assert len(points) == len(frames)
+    for ln, sh in zip(points, frames):
+        np.testing.assert_allclose(ln.get_xydata(), sh[["sff", "q_axial_over_p"]].to_numpy(float), rtol=1e-12)
+    eq = line(ax, "equality")
+    np.testing.assert_array_equal(eq.get_xdata(), eq.get_ydata())
+    # polar: per sample, the bins of the first seed's snapshot named in the title, mirrored, and their fits
+    fig = saved.at(rep / "fig_polar.png")
+    polar = [s for s in R.SAMPLES if R.usable_runs(runs, s)]
+    assert len(fig.axes) == 2 * len(polar)
+    tt = np.linspace(0, 2 * np.pi, 361)
+    for row, s in enumerate(polar):
+        run = R.usable_runs(runs, s)[0]
+        df = summaries[s][0]
+        name = fig.axes[2 * row].get_title().split("\nsnapshot ")[1].split(",")[0]
+        eq = df["eps_q"].to_numpy(float)
+        k = len(df) - 1 if np.nanmax(eq) < 0.3 else int(np.nanargmin(np.abs(eq - 0.3)))
+        assert name == str(df["snapshot"].iloc[k]).zfill(6)               # nearest eps_q = 0.3, else the last
+        with DumpReader(run["dump"]) as reader:
+            res = analyze_snapshot(reader.read(reader.names.index(name)), errors=False)
+        curves = harmonic_curves(res.fits, tt)
+        for ax, key, data in ((fig.axes[2 * row], "P", res.angular.P),
+                              (fig.axes[2 * row + 1], "l", res.angular.l_mean)):
+            pts, fit = ax.get_lines()
+            assert len(pts.get_ydata()) == 4 * len(res.angular.centers)
+            np.testing.assert_allclose(pts.get_ydata(), np.concatenate([data, data[::-1], data, data[::-1]]),
+                                       rtol=1e-9)
+            np.testing.assert_allclose(fit.get_ydata(), curves[key], rtol=1e-9)
+            assert ax.get_title().startswith(f"{R.LABEL[s]}: ")
+    # branch directions of simple and triple contacts of S1's first seed
+    data, caption = R.group_branch_polar(R.usable_runs(runs, "polyhedra")[0])
+    ax = saved.at(rep / "fig_types_polar.png").axes[0]
+    for g, af in data.items():
+        m = np.concatenate([af.P, af.P[::-1], af.P, af.P[::-1]])
+        np.testing.assert_allclose(line(ax, g).get_ydata(), np.append(m, m[0]), rtol=1e-12)
+    np.testing.assert_allclose(line(ax, "isotropic").get_ydata(), 1 / (4 * np.pi))
+    assert caption in ax.get_title() and len(data) >= 1
+    # the slabs: every contact of the slab of each picked snapshot, by its force; by type for S1
+    from matplotlib.collections import LineCollection
+    from matplotlib.colors import to_rgba
+
+    picked = R._slab_snapshots(runs)
+    for fname, which in (("packing_slab.png", list(picked)), ("s1_slab_types.png", ["polyhedra"])):
+        fig = saved.at(rep / fname)
+        assert len(fig.axes) == len(which) + (fname == "packing_slab.png")     # and the colour bar
+        for ax, s in zip(fig.axes, which):
+            run, name, strain = picked[s]
+            sl, snap_name = R._slab_of(run, name)
+            fn = np.asarray(sl["fn"], float)
+            title = (f"{R.LABEL[s]}, snapshot {snap_name}, "
+                     + (f"εq = {strain:.3f}" if np.isfinite(strain) else "last snapshot"))
+            assert ax.get_title() == f"{title}\n{len(fn)} contacts in a slab {sl['thickness'] * 1e3:.0f} mm thick"
+            (lc,) = [c for c in ax.collections if isinstance(c, LineCollection)]
+            segs, expect = np.array(lc.get_segments()), np.asarray(sl["segments"], float)
+            assert segs.shape == expect.shape                            # every contact, drawn once
+            np.testing.assert_allclose(segs[np.lexsort(segs.reshape(len(segs), -1).T)],
+                                       expect[np.lexsort(expect.reshape(len(expect), -1).T)], rtol=1e-12)
+            np.testing.assert_allclose(np.sort(lc.get_linewidths()),
+                                       np.sort(0.3 + 1.1 * np.clip(fn / fn.mean(), 0, 4)), rtol=1e-12)
+            if fname == "s1_slab_types.png":
+                colours = [tuple(c) for c in lc.get_colors()]
+                for g, c in plots.TYPE_COLOURS.items():
+                    assert colours.count(to_rgba(c)) == int(np.sum(np.asarray(sl["labels"]) == g)), g
+            assert ax.get_xlabel() == "x (m)" and ax.get_ylabel() == "z (m)"
+    # S1's analysis figures: copied unchanged, and drawn from the analysis's own summary.csv
+    s1 = R.usable_runs(runs, "polyhedra")[0]
+    for name in ("contact_types.png", "footprint.png", "force_pdf.png", "networks.png"):
+        assert (rep / f"s1_{name}").read_bytes() == (Path(s1["analysis"]) / name).read_bytes(), name
+    df = pd.read_csv(Path(s1["analysis"]) / "summary.csv")
+    label = os.path.basename(s1["dump"])
+    for name, fn in (("contact_types.png", plots.plot_contact_types), ("networks.png", plots.plot_networks)):
+        again = Path(rep).parent / f"again-{name}"
+        fn(df, str(again), label)
+        np.testing.assert_array_equal(imread(again), imread(rep / f"s1_{name}"), err_msg=name)
+    lib = run_library(out)
+    check_descriptor_figure(saved.at(rep / "library_descriptors.png"), {lib.name: (lib, library_descriptors(lib))})
 
 
 def test_report_figures_and_claims_are_produced(study, capsys):
-    out, rc = study
+    out, rc, saved = study
     assert rc == 0
     rep = out / "report"
     md = (rep / "report.md").read_text()
@@ -40,6 +204,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
         image = imread(rep / name)                 # a PNG with something drawn on it
         assert image.ndim == 3 and image.shape[0] > 200 and image[..., :3].std() > 0.05, name
         assert f"]({name})" in md, name
+    check_report_figures(out, rep, saved)          # and what is drawn is the study's numbers
     claims = pd.read_csv(rep / "claims.csv")
     assert claims["id"].tolist() == [1, 2, 3, 4, 5, 6]
     assert (claims["basis"] == "seeds").all()
@@ -92,11 +257,11 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     assert len(hosts) == 1 and hosts[0].count("seed") == 4
 
 
-def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
+def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, monkeypatch):
     from postproc.study.report import build_report
     from yade_scripts.study import main
 
-    out, _ = study
+    out, _, _ = study
     mtime = os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5")
     summary = out / "polyhedra-ensemble" / "analysis-polyhedra-seed1" / "summary.csv"
     analysed = os.path.getmtime(summary)
@@ -111,32 +276,25 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys):
     manifest = json.loads((out / "manifest.json").read_text())
     manifest["polyhedra"][1]["status"] = "run failed (3); see polyhedra-ensemble"
     (out / "manifest.json").write_text(json.dumps(manifest))
-    from postproc import plots
-
-    drawn = {}
-
-    def keep(summaries, published, path):
-        drawn["qp"] = fig = plot_report_qp(summaries, published, path)
-        return fig
-
-    plot_report_qp = plots.plot_report_qp
-    plots.plot_report_qp = keep
-    try:
-        md = open(build_report(str(out), str(out / "report-failed"))).read()
-    finally:
-        plots.plot_report_qp = plot_report_qp
-    # q/p of the two sphere seeds and the one polyhedra seed left, as analysed
-    lines = [ln for ln in drawn["qp"].axes[0].get_lines() if ln.get_linestyle() == "-"]
+    saved = record(monkeypatch)
+    md = open(build_report(str(out), str(out / "report-failed"))).read()
+    # fig_qp.png as written: q/p of the one polyhedra seed left and the two sphere seeds, as analysed
+    fig = saved.at(out / "report-failed" / "fig_qp.png")
+    lines = [ln for ln in fig.axes[0].get_lines() if ln.get_linestyle() == "-"]
     assert len(lines) == 3
     s1 = pd.read_csv(out / manifest["polyhedra"][0]["analysis"] / "summary.csv")
     s1 = s1[s1["stage"] == "shear"]
     assert list(lines[0].get_ydata()) == pytest.approx(s1["q_over_p"].tolist())
+    summaries = {s: [pd.read_csv(out / r["analysis"] / "summary.csv", dtype={"snapshot": str})
+                     for r in manifest[s] if r["status"] == "ok"] for s in manifest}
+    assert {s: len(v) for s, v in summaries.items()} == {"polyhedra": 1, "spheres": 2}
+    check_qp_figure(fig, summaries)
     assert "S1 polyhedra seed 2: run failed (3)" in md
     comp = pd.read_csv(out / "report-failed" / "comparison.csv")
     # one seed left: no interval over seeds (tiny runs have 2 steady snapshots: "one value")
     assert comp.loc[comp["sample"] == "polyhedra", "interval"].isin(["one value", "batch means (one seed)"]).all()
     assert (comp.loc[comp["sample"] == "spheres", "interval"] == "seeds").all()
-    assert (out / "report-failed" / "fig_qp.png").exists()
+    assert is_png(out / "report-failed" / "fig_qp.png")
 
 
 def test_single_seed_study_runs_s1_on_the_kernel_with_every_core(tmp_path, shape_library, capsys):
@@ -156,7 +314,7 @@ def test_single_seed_study_runs_s1_on_the_kernel_with_every_core(tmp_path, shape
     assert (tmp_path / "report" / "report.md").exists()
 
 
-def test_study_runs_s1_on_an_imported_library(tmp_path):
+def test_study_runs_s1_on_an_imported_library(tmp_path, monkeypatch):
     """``make study SHAPES=LIB.h5`` with a library imported from meshes (as a
     user's scans would be): the tiny S1 runs on the imported grains (the
     dump's shapes are the library's), and the report names the library and
@@ -183,6 +341,7 @@ def test_study_runs_s1_on_an_imported_library(tmp_path):
     library = ShapeLibrary(str(lib))
     assert len(library) == 24
     out = tmp_path / "study"
+    saved = record(monkeypatch)
     assert main(["--preset", "tiny", "--out", str(out), "--library", str(lib)]) == 0
     with h5py.File(out / "polyhedra" / "run.h5", "r") as h:
         counts = np.diff(np.asarray(h["shapes"]["vertex_offsets"]))
@@ -191,3 +350,10 @@ def test_study_runs_s1_on_an_imported_library(tmp_path):
     md = (out / "report" / "report.md").read_text()
     assert "## The grains of S1" in md and "**test stones**" in md and "imported from 24 meshes" in md
     assert "convexity deficit" in md
+    # and its figure shows the imported grains' descriptors
+    from shapes.descriptors import library_descriptors
+
+    used = run_library(out)
+    assert used.name == "test stones" and len(used) == 24
+    check_descriptor_figure(saved.at(out / "report" / "library_descriptors.png"),
+                            {used.name: (used, library_descriptors(used))})
