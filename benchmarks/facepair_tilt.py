@@ -52,10 +52,8 @@ from postproc.footprint import pair_size
 from postproc.pipeline import open_source
 from postproc.schema import DumpReader
 from postproc.statistics import plateau_estimate
+from postproc.study.typeskappa import shear_snapshots
 from yade_scripts.front import PLANS, run_front
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from contact_types_kappa import shear_snapshots  # noqa: E402
 
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
 STABILITY = 0.03                                   # the largest move allowed at half and twice a tolerance

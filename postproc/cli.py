@@ -125,6 +125,20 @@ def main(argv=None):
     al.add_argument("--axis", default="z", help="compression axis: x, y or z (default z)")
     al.add_argument("--pairs", type=int, default=20000,
                     help="random pairs for the isotropic geometric model (default 20000)")
+    tk = sub.add_parser("contact-types-kappa", help="contact types against the contact stiffness: the point "
+                                                    "count and the common-plane count on the same dumps")
+    tk.add_argument("out", help="output folder: the analyses, contact_types_kappa.csv and .md")
+    tk.add_argument("dump", nargs="+", help="kernel S1 dumps (RUN.h5), e.g. a front's")
+    tk.add_argument("--from-eps1", type=float, default=0.1,
+                    help="the shear snapshots with eps_1 from this on are averaged (default 0.1)")
+    cr = sub.add_parser("commonplane-reference", help="the common-plane count with its band measured from "
+                                                      "the extreme vertex and along the normal")
+    cr.add_argument("out", help="output folder: commonplane_reference.csv and .md")
+    cr.add_argument("dump", nargs="+", help="S1 dumps (RUN.h5)")
+    cr.add_argument("--from-eps1", type=float, default=0.1,
+                    help="the shear snapshots with eps_1 from this on are classified (default 0.1)")
+    cr.add_argument("--every", type=int, default=1, help="every n-th of those snapshots (default 1)")
+    cr.add_argument("--tau", type=float, default=0.1, help="the band tau, units of ref (default 0.1)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -213,6 +227,26 @@ def main(argv=None):
         from .study.alinvestigation import investigate
 
         investigate(args.dump, args.axis, args.pairs)
+        return 0
+    if args.cmd == "contact-types-kappa":
+        from .study.typeskappa import write_types_kappa
+
+        try:
+            text = write_types_kappa(args.out, args.dump, args.from_eps1)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
+        return 0
+    if args.cmd == "commonplane-reference":
+        from .study.commonplaneref import write_reference
+
+        try:
+            text = write_reference(args.out, args.dump, args.from_eps1, args.every, args.tau)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
         return 0
     if args.cmd == "analysis-front":
         from .study.front import ANALYSIS_FRONT_COLUMNS, write_analysis_front

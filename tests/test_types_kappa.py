@@ -1,0 +1,74 @@
+"""postproc.study.typeskappa and postproc.study.commonplaneref (``postproc
+contact-types-kappa``, ``postproc commonplane-reference``) on a tiny kernel
+dump, through the command line: the contact groups of both criteria, and
+the common plane's band measured two ways, the older of which is the
+analysis's own common-plane count."""
+import numpy as np
+import pandas as pd
+import pytest
+
+from builders import write_snapshot
+from postproc.cli import main
+from postproc.schema import DumpWriter
+from test_claim6_counts import fast_analyses
+from test_footprint_types import kernel_snapshot
+
+GROUPS = ("simple", "double", "triple")
+
+
+@pytest.fixture(scope="module")
+def kernel_dump(tmp_path_factory):
+    """An S1-like kernel dump with its run parameters: one isotropic and two
+    shear snapshots (64 grains, the box shortened along z by 1 % each)."""
+    path = str(tmp_path_factory.mktemp("kappa") / "polyhedra-k3000.h5")
+    with DumpWriter(path, "polyhedra", {"kappa": 3000.0, "inertial_number": 5e-3, "n_particles": 64,
+                                        "seed": 1}) as w:
+        for k in range(3):
+            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
+            if k == 0:
+                w.write_shapes(verts, tris, faces)
+            snap.volumes = np.ones(len(snap.body_ids))
+            snap.masses = np.ones(len(snap.body_ids))
+            hi = snap.box_hi.copy()
+            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
+            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
+                           wall_forces=np.zeros((6, 3)))
+    return path
+
+
+@pytest.fixture(scope="module")
+def kappa_table(kernel_dump, tmp_path_factory):
+    """``postproc contact-types-kappa`` on the dump (both shear snapshots)."""
+    out = tmp_path_factory.mktemp("ctk")
+    with pytest.MonkeyPatch.context() as mp:
+        fast_analyses(mp)
+        assert main(["contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    return out
+
+
+def test_contact_types_kappa_command(kappa_table):
+    tab = pd.read_csv(kappa_table / "contact_types_kappa.csv")
+    assert tab["criterion"].tolist() == ["commonplane", "points"]
+    assert (tab["kappa"] == 3000).all() and (tab["I"] == 5e-3).all() and (tab["snapshots"] == 2).all()
+    for suffix in ("", "_lo", "_hi"):
+        np.testing.assert_allclose(tab[[g + suffix for g in GROUPS]].sum(axis=1), 1.0, atol=1e-12)
+    assert (tab["move"] >= 0).all()
+    md = (kappa_table / "contact_types_kappa.md").read_text()
+    assert md.count("| 3000 | 0.005 |") == 2 and "Means over seeds" not in md      # one seed: no means
+    assert (kappa_table / "polyhedra-k3000-points" / "summary.csv").exists()
+
+
+def test_commonplane_reference_command(kernel_dump, kappa_table, tmp_path, capsys):
+    """The band from the extreme vertex is the common-plane count the
+    analysis uses: its proportions are contact-types-kappa's, exactly."""
+    out = tmp_path / "cpref"
+    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    tab = pd.read_csv(out / "commonplane_reference.csv").set_index("reference")
+    assert sorted(tab.index) == ["normal", "vertex"] and (tab["snapshots"] == 2).all()
+    cp = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion").loc["commonplane"]
+    for col in [g + s for g in GROUPS for s in ("", "_lo", "_hi")] + ["move", "contacts"]:
+        assert tab.loc["vertex", col] == pytest.approx(cp[col], abs=1e-12), col
+    assert "| normal | 1 |" in capsys.readouterr().out
+    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
+    assert "no shear snapshot with eps_1 >= 0.5" in capsys.readouterr().err
+    assert main(["commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
