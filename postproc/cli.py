@@ -139,6 +139,13 @@ def main(argv=None):
                     help="the shear snapshots with eps_1 from this on are classified (default 0.1)")
     cr.add_argument("--every", type=int, default=1, help="every n-th of those snapshots (default 1)")
     cr.add_argument("--tau", type=float, default=0.1, help="the band tau, units of ref (default 0.1)")
+    fp = sub.add_parser("facepair-tilt", help="the face-pair tilt against the overlap thickness of kernel S1 "
+                                              "dumps (python -m yade_scripts.facepair_tilt runs its plan first)")
+    fp.add_argument("out", help="output folder: facepair_tilt.csv(.gz), .md and the figure")
+    fp.add_argument("dump", nargs="+", help="kernel S1 dumps (RUN.h5), one per kappa and seed")
+    fp.add_argument("--from-eps1", type=float, default=0.1,
+                    help="the shear snapshots with eps_1 from this on are used (default 0.1)")
+    fp.add_argument("--figure", help="the figure's PNG (default OUT/facepair-tilt.png)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -243,6 +250,16 @@ def main(argv=None):
 
         try:
             text = write_reference(args.out, args.dump, args.from_eps1, args.every, args.tau)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
+        return 0
+    if args.cmd == "facepair-tilt":
+        from .study.facepair import write_facepair
+
+        try:
+            text = write_facepair(args.out, args.dump, args.from_eps1, args.figure)
         except BAD_INPUT as exc:
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2

@@ -1,13 +1,14 @@
-"""postproc.study.typeskappa and postproc.study.commonplaneref (``postproc
-contact-types-kappa``, ``postproc commonplane-reference``) on a tiny kernel
-dump, through the command line: the contact groups of both criteria, and
-the common plane's band measured two ways, the older of which is the
-analysis's own common-plane count."""
+"""postproc.study.typeskappa, postproc.study.commonplaneref and
+postproc.study.facepair (``postproc contact-types-kappa``, ``postproc
+commonplane-reference``, ``postproc facepair-tilt``) on a tiny kernel dump,
+through the command line: the contact groups of both criteria, the common
+plane's band measured two ways, the older of which is the analysis's own
+common-plane count, and the face-pair tilt."""
 import numpy as np
 import pandas as pd
 import pytest
 
-from builders import write_snapshot
+from builders import snapshot_dicts
 from postproc.cli import main
 from postproc.schema import DumpWriter
 from test_claim6_counts import fast_analyses
@@ -19,10 +20,11 @@ GROUPS = ("simple", "double", "triple")
 @pytest.fixture(scope="module")
 def kernel_dump(tmp_path_factory):
     """An S1-like kernel dump with its run parameters: one isotropic and two
-    shear snapshots (64 grains, the box shortened along z by 1 % each)."""
+    shear snapshots (64 grains, the box shortened along z by 1 % each), the
+    overlaps' volumes and footprints dumped."""
     path = str(tmp_path_factory.mktemp("kappa") / "polyhedra-k3000.h5")
-    with DumpWriter(path, "polyhedra", {"kappa": 3000.0, "inertial_number": 5e-3, "n_particles": 64,
-                                        "seed": 1}) as w:
+    with DumpWriter(path, "polyhedra", {"kappa": 3000.0, "inertial_number": 5e-3, "n_particles": 64, "seed": 1},
+                    overlap_kind="volume") as w:
         for k in range(3):
             snap, (verts, tris, faces) = kernel_snapshot(20 + k)
             if k == 0:
@@ -31,8 +33,11 @@ def kernel_dump(tmp_path_factory):
             snap.masses = np.ones(len(snap.body_ids))
             hi = snap.box_hi.copy()
             hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
-            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
-                           wall_forces=np.zeros((6, 3)))
+            bodies, contacts = snapshot_dicts(snap)
+            contacts.update(footprint=snap.footprint, footprint_area=snap.footprint_area)
+            w.write_snapshot(step=k, time=0.0, stage="isotropic" if k == 0 else "shear", box_lo=snap.box_lo,
+                             box_hi=hi, wall_ids=snap.wall_ids, wall_forces=np.zeros((6, 3)), bodies=bodies,
+                             contacts=contacts)
     return path
 
 
@@ -72,3 +77,26 @@ def test_commonplane_reference_command(kernel_dump, kappa_table, tmp_path, capsy
     assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
     assert "no shear snapshot with eps_1 >= 0.5" in capsys.readouterr().err
     assert main(["commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
+
+
+def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
+    """One kappa, one seed: a row per pair and snapshot, the per-run table
+    whose triple shares are the two criteria's FF share (the same labels
+    as contact-types-kappa's triple), the random contacts' row, the figure;
+    the driver that runs the plan first answers --help."""
+    from yade_scripts import facepair_tilt
+
+    out = tmp_path / "fp"
+    assert main(["facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    rows = pd.read_csv(out / "facepair_tilt.csv.gz")
+    tab = pd.read_csv(out / "facepair_tilt.csv")
+    ctk = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion")
+    assert len(tab) == 1 and tab["contacts"].iloc[0] == len(rows) == ctk.loc["points", "contacts"]
+    assert rows["phi_deg"].between(0, 90).all() and (rows["h_d"] > 0).all()
+    for c in ("points", "commonplane"):
+        assert tab[f"triple_{c}"].iloc[0] == pytest.approx(np.mean(rows[c] == "FF"), abs=1e-12)
+    assert "| random orientations | | 20000 |" in capsys.readouterr().out
+    assert (out / "facepair-tilt.png").stat().st_size > 0
+    with pytest.raises(SystemExit) as exc:
+        facepair_tilt.main(["--help"])
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.facepair_tilt" in capsys.readouterr().out

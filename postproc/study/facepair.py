@@ -1,13 +1,15 @@
 """Do face-face contacts vanish as the grains stiffen? The face-pair tilt
 against the overlap thickness, at kappa = 300, 1000, 3000 and 10 000.
 
-    python benchmarks/facepair_tilt.py [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
+    python -m yade_scripts.facepair_tilt [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
         [--figure docs/figures/facepair-tilt.png]
+    postproc facepair-tilt OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--figure PNG]
 
-Runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on the default
-preset, 200 grains, I = 5e-3, sheared to eps_1 = 0.15, seeds 1-3; a seed
-starts from the same grains and positions at every kappa; finished runs are
-not run again). On each shear snapshot with eps_1 >= --from-eps1, every
+The first runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on
+the default preset, 200 grains, I = 5e-3, sheared to eps_1 = 0.15, seeds
+1-3; a seed starts from the same grains and positions at every kappa;
+finished runs are not run again), then analyses its dumps as the second
+analyses any (:func:`write_facepair`). On each shear snapshot with eps_1 >= --from-eps1, every
 polyhedron pair gets (:mod:`postproc.facetilt`) its face-pair tilt phi and
 rise min(L_A, L_B) sin(phi), its overlap's mean thickness h = V / area
 (dumped by the kernel), and its class under the overlap-based point count
@@ -35,25 +37,23 @@ only a count whose band is the overlap loses them.
 """
 from __future__ import annotations
 
-import argparse
 import os
-import sys
 
 import numpy as np
 import pandas as pd
 
-from postproc.classify import Classifier
-from postproc.commonplane import DEFAULT_NEIGHBOR
-from postproc.contactpoints import DEFAULT_ALPHA
-from postproc.contactset import lookup
-from postproc.contacttypes import shape_tables
-from postproc.facetilt import face_pair_tilt, tolerance_moves
-from postproc.footprint import pair_size
-from postproc.pipeline import open_source
-from postproc.schema import DumpReader
-from postproc.statistics import plateau_estimate
-from postproc.study.typeskappa import shear_snapshots
-from yade_scripts.front import PLANS, run_front
+from ..classify import Classifier
+from ..commonplane import DEFAULT_NEIGHBOR
+from ..contactpoints import DEFAULT_ALPHA
+from ..contactset import lookup
+from ..contacttypes import shape_tables
+from ..errors import InputError
+from ..facetilt import face_pair_tilt, tolerance_moves
+from ..footprint import pair_size
+from ..pipeline import open_source
+from ..schema import DumpReader
+from ..statistics import plateau_estimate
+from .typeskappa import shear_snapshots
 
 THRESHOLDS_DEG = (1.0, 2.0, 5.0, 10.0)
 STABILITY = 0.03                                   # the largest move allowed at half and twice a tolerance
@@ -61,11 +61,33 @@ TOLERANCES_DEG = np.logspace(-1, 1.5, 126)         # 0.1 to 31.6 deg
 
 
 def contacts_of(dump, from_eps1):
-    """One row per polyhedron pair and shear snapshot with eps_1 >=
-    from_eps1: kappa, seed, step, eps_1, phi (deg), tilt1/tilt2 (deg), rise / d,
-    h / d, the smaller contact face's diameter / d, tau ref / d, and the pair
-    type under each criterion; d the pair's size (the harmonic mean of the
-    two grains' d, the kernel's d_pair)."""
+    """The face-pair tilt and overlap of every polyhedron pair of a dump's
+    shear snapshots.
+
+    Parameters
+    ----------
+    dump : str
+        A kernel S1 dump (its parameters hold kappa and seed; its contacts
+        the overlap volume and footprint area).
+    from_eps1 : float
+        The least eps_1 of the snapshots used.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per polyhedron pair and shear snapshot with eps_1 >=
+        from_eps1: kappa, seed, step, eps_1, phi (deg), tilt1/tilt2 (deg),
+        rise / d, h / d, the smaller contact face's diameter / d, tau ref /
+        d, and the pair type under each criterion (``points``,
+        ``commonplane``); d the pair's size (the harmonic mean of the two
+        grains' d, the kernel's d_pair).
+
+    Raises
+    ------
+    InputError
+        No shear snapshot with eps_1 >= from_eps1, or one that cannot be
+        read.
+    """
     with DumpReader(dump) as r:
         kappa, seed = float(r.parameters["kappa"]), int(r.parameters["seed"])
     count, snaps, close, shapes = open_source(dump)
@@ -96,15 +118,30 @@ def contacts_of(dump, from_eps1):
     finally:
         close()
     if not rows:
-        raise SystemExit(f"{dump}: no shear snapshot with eps_1 >= {from_eps1}")
+        raise InputError(f"{dump}: no shear snapshot with eps_1 >= {from_eps1}")
     return pd.concat(rows, ignore_index=True)
 
 
 def random_tilts(dump, n=20000, seed=0):
-    """(n,) deg, the face-pair tilt of random contacts between the dump's
-    grains: shapes drawn uniformly, orientations uniform (normalised
-    Gaussian quaternions), normals uniform on the sphere. The geometric
-    chance of a flush pair, against which the packing's selection shows."""
+    """The face-pair tilt of random contacts between the dump's grains:
+    shapes drawn uniformly, orientations uniform (normalised Gaussian
+    quaternions), normals uniform on the sphere. The geometric chance of a
+    flush pair, against which the packing's selection shows.
+
+    Parameters
+    ----------
+    dump : str
+        A polyhedra dump (its shapes are used).
+    n : int
+        Random contacts.
+    seed : int
+        Seed of the draws.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        Their tilts phi (deg).
+    """
     count, snaps, close, shapes = open_source(dump)
     close()
     tables = shape_tables(*shapes)
@@ -118,7 +155,19 @@ def random_tilts(dump, n=20000, seed=0):
 
 
 def summary(df):
-    """Per kappa and seed: the table's columns (see the module docstring)."""
+    """The per-run table of facepair_tilt.csv.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        Rows of :func:`contacts_of`.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per kappa and seed: the table's columns (see the module
+        docstring; tilts in deg, lengths over d, shares dimensionless).
+    """
     out = []
     for (kappa, seed), g in df.groupby(["kappa", "seed"]):
         phi = g["phi_deg"].to_numpy()
@@ -170,8 +219,21 @@ def _cell(e, digits):
 
 
 def over_seeds(tab):
-    """Per kappa, every column of COLUMNS as mean [95 % interval] over seeds,
-    and the paired difference (same seed) of each kappa from the stiffest."""
+    """Means over seeds per kappa.
+
+    Parameters
+    ----------
+    tab : pandas.DataFrame
+        Rows of :func:`summary`.
+
+    Returns
+    -------
+    list of dict
+        Per kappa: kappa, seeds, contacts, and for every column c of
+        :data:`COLUMNS` its :class:`postproc.statistics.Estimate` over
+        seeds (mean and 95 % interval) and ``c_minus_stiffest``, the
+        paired difference (same seed) from the stiffest kappa.
+    """
     stiff = tab[tab["kappa"] == tab["kappa"].max()].set_index("seed")
     rows = []
     for kappa, g in tab.groupby("kappa"):
@@ -186,6 +248,22 @@ def over_seeds(tab):
 
 
 def markdown(tab, random_phi=None):
+    """The text of facepair_tilt.md.
+
+    Parameters
+    ----------
+    tab : pandas.DataFrame
+        Rows of :func:`summary`.
+    random_phi : ndarray, optional
+        Tilts of random contacts (:func:`random_tilts`, deg): a last row
+        of the first table.
+
+    Returns
+    -------
+    str
+        Markdown: per kappa the main columns over seeds (:func:`over_seeds`),
+        then each kappa's paired difference from the stiffest.
+    """
     rows = over_seeds(tab)
     stiffest = max(r["kappa"] for r in rows)
     head = "| κ | seeds | contacts | " + " | ".join(h for h, _ in COLUMNS.values()) + " |"
@@ -209,6 +287,26 @@ def markdown(tab, random_phi=None):
 
 
 def figure(df, tab, path, random_phi=None):
+    """The figure (PNG): (a) phi against h / d for every contact, coloured
+    by kappa; (b) the distribution of phi per kappa; (c) that of h / d;
+    (d) the face-face share of the tilt criterion "phi < theta" against its
+    move at theta / 2 and 2 theta.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        Rows of :func:`contacts_of`.
+    tab : pandas.DataFrame
+        Rows of :func:`summary` (not used in the drawing).
+    path : str
+        The PNG to write (its folder is made).
+    random_phi : ndarray, optional
+        Tilts of random contacts (deg), drawn in (b).
+
+    Returns
+    -------
+    None
+    """
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -269,30 +367,37 @@ def figure(df, tab, path, random_phi=None):
     plt.close(fig)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="runs/facepair")
-    ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--from-eps1", type=float, default=0.1)
-    ap.add_argument("--figure", default=None, help="default OUT/facepair-tilt.png")
-    args = ap.parse_args()
-    status = run_front(args.out, "facepair", jobs=args.jobs, samples=("polyhedra",))
-    failed = [d for d, c in status["polyhedra"].items() if c != 0]
-    if failed:
-        raise SystemExit(f"facepair_tilt: failed runs: {', '.join(failed)}")
-    dumps = [os.path.join(args.out, "polyhedra", f"polyhedra-{desc}.h5") for desc, _ in PLANS["facepair"]["polyhedra"]]
-    df = pd.concat([contacts_of(d, args.from_eps1) for d in dumps], ignore_index=True)
-    df.to_csv(os.path.join(args.out, "facepair_tilt.csv.gz"), index=False)
+def write_facepair(out, dumps, from_eps1=0.1, figure_path=None):
+    """The face-pair tilt of a set of dumps, tabulated and drawn: writes
+    OUT/facepair_tilt.csv.gz (:func:`contacts_of`), OUT/facepair_tilt.csv
+    (:func:`summary`), OUT/facepair_tilt.md (:func:`markdown`, with the
+    random contacts of the first dump's grains) and the figure
+    (:func:`figure`).
+
+    Parameters
+    ----------
+    out : str
+        Output folder.
+    dumps : list of str
+        Kernel S1 dumps (one per kappa and seed).
+    from_eps1 : float
+        The least eps_1 of the shear snapshots used.
+    figure_path : str, optional
+        The figure's PNG (default OUT/facepair-tilt.png).
+
+    Returns
+    -------
+    str
+        The text of facepair_tilt.md.
+    """
+    df = pd.concat([contacts_of(d, from_eps1) for d in dumps], ignore_index=True)
+    os.makedirs(out, exist_ok=True)
+    df.to_csv(os.path.join(out, "facepair_tilt.csv.gz"), index=False)
     tab = summary(df)
-    tab.to_csv(os.path.join(args.out, "facepair_tilt.csv"), index=False)
+    tab.to_csv(os.path.join(out, "facepair_tilt.csv"), index=False)
     random_phi = random_tilts(dumps[0])
     md = markdown(tab, random_phi)
-    with open(os.path.join(args.out, "facepair_tilt.md"), "w") as fh:
+    with open(os.path.join(out, "facepair_tilt.md"), "w") as fh:
         fh.write(md)
-    print(md)
-    figure(df, tab, args.figure or os.path.join(args.out, "facepair-tilt.png"), random_phi)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+    figure(df, tab, figure_path or os.path.join(out, "facepair-tilt.png"), random_phi)
+    return md
