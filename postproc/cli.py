@@ -146,6 +146,12 @@ def main(argv=None):
     fp.add_argument("--from-eps1", type=float, default=0.1,
                     help="the shear snapshots with eps_1 from this on are used (default 0.1)")
     fp.add_argument("--figure", help="the figure's PNG (default OUT/facepair-tilt.png)")
+    ts = sub.add_parser("timestep-front", help="the time step's cost and error, paired by seed, from the "
+                                               "runs of the timestep plan (python -m yade_scripts.timestep_front)")
+    ts.add_argument("out", help="the front's folder (front-plan.json, the analysed runs); timestep.csv and .md "
+                                "are written there")
+    ts.add_argument("--reference", type=float, default=0.3,
+                    help="the safety the others are compared with (default 0.3)")
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
@@ -260,6 +266,16 @@ def main(argv=None):
 
         try:
             text = write_facepair(args.out, args.dump, args.from_eps1, args.figure)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(text)
+        return 0
+    if args.cmd == "timestep-front":
+        from .study.timestepfront import write_timestep_front
+
+        try:
+            text = write_timestep_front(args.out, reference=args.reference)
         except BAD_INPUT as exc:
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2

@@ -218,7 +218,8 @@ def test_synthetic_subcommand(tmp_path):
 #: the subcommands of the study's own analyses (postproc.study), each with its --help
 STUDY_COMMANDS = ("leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
                   "lmgc90-agreement", "al-investigation",
-                  "contact-types-kappa", "commonplane-reference", "facepair-tilt")
+                  "contact-types-kappa", "commonplane-reference", "facepair-tilt",
+                  "timestep-front")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)

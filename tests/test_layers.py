@@ -19,7 +19,8 @@ LAYERS = [
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
                "study.claim6", "study.lmgc90", "study.alinvestigation",
-               "study.typeskappa", "study.commonplaneref", "study.facepair"}),
+               "study.typeskappa", "study.commonplaneref", "study.facepair",
+               "study.timestepfront"}),
     ("interface", {"many", "cli"}),
 ]
 LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}
