@@ -4,8 +4,8 @@
 
 Angular criterion (postproc.contacttypes): random pairs of grains of the
 shape library (``make shapes``) with random orientations and random
-normals; prints contacts/s (best of 3) and the proportions of each pair
-type at theta/2, theta and 2 theta.
+normals; prints contacts/s (best of 3). (The proportions of each pair type
+of such pairs, the geometric chance, are ``postproc random-types``.)
 
 Footprint criterion (postproc.classify, the default), with ``--dump`` (a
 kernel S1 dump): the last snapshot's contacts repeated up to N contacts,
@@ -21,7 +21,7 @@ import time
 import numpy as np
 
 from postproc import contacttypes
-from postproc.contacttypes import DEFAULT_THETA_DEG, PAIR_TYPES, classify_contacts, shape_tables
+from postproc.contacttypes import classify_contacts, shape_tables
 from shapes.library import ShapeLibrary
 
 
@@ -51,12 +51,6 @@ def main():
             best = min(best, time.perf_counter() - t)
         print(f"{N} contacts, {len(lib)} shapes, {threads} thread(s): {best:.2f} s, "
               f"{N / best:.3g} contacts/s")
-    for theta in (DEFAULT_THETA_DEG / 2, DEFAULT_THETA_DEG, 2 * DEFAULT_THETA_DEG):
-        _, _, pair = classify_contacts(tables, s1[:100_000], s2[:100_000], q1[:100_000], q2[:100_000],
-                                       n[:100_000], theta)
-        frac = np.bincount(pair, minlength=6) / len(pair)
-        print(f"theta {theta:4.1f} deg (random orientations): " +
-              ", ".join(f"{t} {f:.4f}" for t, f in zip(PAIR_TYPES, frac)))
 
 
 def _median_time(fn, k=5):

@@ -146,6 +146,11 @@ def main(argv=None):
     fp.add_argument("--from-eps1", type=float, default=0.1,
                     help="the shear snapshots with eps_1 from this on are used (default 0.1)")
     fp.add_argument("--figure", help="the figure's PNG (default OUT/facepair-tilt.png)")
+    rt = sub.add_parser("random-types", help="the pair types of random contacts between library grains (the "
+                                             "geometric chance), angular criterion at theta/2, theta, 2 theta")
+    rt.add_argument("--library", default="runs/shapes/library.h5",
+                    help="the shape library (default runs/shapes/library.h5, make shapes)")
+    rt.add_argument("--pairs", type=int, default=100_000, help="random contacts classified (default 100000)")
     ts = sub.add_parser("timestep-front", help="the time step's cost and error, paired by seed, from the "
                                                "runs of the timestep plan (python -m yade_scripts.timestep_front)")
     ts.add_argument("out", help="the front's folder (front-plan.json, the analysed runs); timestep.csv and .md "
@@ -270,6 +275,18 @@ def main(argv=None):
             print(f"postproc: error: {exc}", file=sys.stderr)
             return 2
         print(text)
+        return 0
+    if args.cmd == "random-types":
+        from shapes.library import ShapeLibrary
+
+        from .study.randomtypes import lines, random_type_fractions
+
+        try:
+            lib = ShapeLibrary(args.library)
+        except (OSError, ValueError, KeyError) as exc:
+            print(f"postproc: error: {args.library}: {exc}", file=sys.stderr)
+            return 2
+        print("\n".join(lines(random_type_fractions(lib, pairs=args.pairs))))
         return 0
     if args.cmd == "timestep-front":
         from .study.timestepfront import write_timestep_front

@@ -190,3 +190,30 @@ def test_threaded_blocks_match_one_thread(tables, monkeypatch):
     for a, b in zip(one, many):
         assert np.array_equal(a, b)
     assert len(np.unique(one[2])) >= 4
+
+
+def test_random_types_command(tmp_path, capsys):
+    """``postproc random-types`` on an 8-grain library: one line per
+    tolerance, shares summing to 1, face-face growing with theta; the table
+    is the classification of the first draws; a missing library: exit 2."""
+    from postproc.cli import main
+    from postproc.study.randomtypes import random_pairs, random_type_fractions
+    from shapes.generate import Recipe, generate_library
+    from shapes.library import ShapeLibrary, write_library
+
+    path = str(tmp_path / "lib.h5")
+    shapes, _ = generate_library(8, seed=5)
+    write_library(path, shapes, 5, Recipe().as_dict(), {})
+    assert main(["random-types", "--library", path, "--pairs", "3000"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert [line.split(" deg")[0] for line in out] == ["theta  2.5", "theta  5.0", "theta 10.0"]
+    lib = ShapeLibrary(path)
+    tab = random_type_fractions(lib, pairs=3000)
+    np.testing.assert_allclose(tab[list(PAIR_TYPES)].sum(axis=1), 1.0)
+    assert np.all(np.diff(tab["FF"]) > 0)
+    s1, s2, q1, q2, n = random_pairs(len(lib), 1_000_000)
+    tables = shape_tables(*zip(*[lib[s] for s in range(len(lib))]))
+    _, _, pair = classify_contacts(tables, s1[:3000], s2[:3000], q1[:3000], q2[:3000], n[:3000], 5.0)
+    assert tab.loc[1, "FF"] == np.mean(np.array(PAIR_TYPES)[pair] == "FF")
+    assert main(["random-types", "--library", str(tmp_path / "none.h5")]) == 2
+    assert "postproc: error:" in capsys.readouterr().err

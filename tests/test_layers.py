@@ -20,7 +20,7 @@ LAYERS = [
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
                "study.claim6", "study.lmgc90", "study.alinvestigation",
                "study.typeskappa", "study.commonplaneref", "study.facepair",
-               "study.timestepfront"}),
+               "study.timestepfront", "study.randomtypes"}),
     ("interface", {"many", "cli"}),
 ]
 LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}
