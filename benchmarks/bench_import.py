@@ -19,7 +19,8 @@ stage's CPU time and wall time are the medians of ``--repeat`` runs in this
 process. The machine is shared (long simulations on both cores), so the
 figure shows CPU time, the cost on one core, and the table both with the
 load average. The table goes to ``OUT/import-speed.json`` and the figure to
-``--figure``.
+``--figure``. (The scans are :mod:`shapes.scans`', which also writes scans
+to try the import on and calibrates its default error target.)
 """
 from __future__ import annotations
 
@@ -41,53 +42,7 @@ sys.path.insert(0, ROOT)
 
 from shapes.generate import generate_library  # noqa: E402
 from shapes.meshimport import Budget, import_mesh, read_mesh  # noqa: E402
-from shapes.polyhedron import triangle_normals  # noqa: E402
-
-
-def ray_cast_convex(directions, vertices, triangles):
-    """Distances (M,) along unit ``directions`` (M, 3) from the origin (inside)
-    to the surface of a convex polyhedron: min over faces facing the ray of
-    offset / (n . u)."""
-    n, _ = triangle_normals(vertices, triangles)
-    off = np.einsum("ij,ij->i", n, vertices[triangles[:, 0]])      # > 0: origin inside
-    out = np.empty(len(directions))
-    for s in range(0, len(directions), 65536):
-        c = directions[s:s + 65536] @ n.T
-        with np.errstate(divide="ignore"):
-            out[s:s + 65536] = np.where(c > 1e-12, off / c, np.inf).min(axis=1)
-    return out
-
-
-def scan_mesh(poly, subdivisions, noise=1e-3, dents=3, depth=0.03, rng=None):
-    """A synthetic scan of the convex grain ``poly`` (d = 1): (vertices,
-    triangles) of an icosphere of ``subdivisions`` ray-cast onto it, with
-    uniform radial noise of +-noise and ``dents`` Gaussian dents of the given
-    depth (relative to d) and width 0.25 rad."""
-    import trimesh
-
-    rng = rng or np.random.default_rng(0)
-    s = trimesh.creation.icosphere(subdivisions=subdivisions)
-    u = s.vertices / np.linalg.norm(s.vertices, axis=1)[:, None]
-    r = ray_cast_convex(u, poly.vertices, poly.triangles)
-    for _ in range(dents):
-        c = rng.normal(size=3)
-        c /= np.linalg.norm(c)
-        r -= depth * np.exp(-np.sum((u - c) ** 2, axis=1) / 0.25 ** 2)
-    r += noise * rng.uniform(-1, 1, len(r))
-    return u * r[:, None], np.asarray(s.faces)
-
-
-def smooth_mesh(subdivisions, axes=(1.0, 0.75, 0.5)):
-    import trimesh
-
-    s = trimesh.creation.icosphere(subdivisions=subdivisions)
-    return np.asarray(s.vertices) * np.asarray(axes), np.asarray(s.faces)
-
-
-def write_stl(path, v, t):
-    import trimesh
-
-    trimesh.Trimesh(v, t, process=False).export(path)
+from shapes.scans import scan_mesh, smooth_mesh, write_stl  # noqa: E402
 
 
 def time_import(path, repeat):
@@ -110,26 +65,7 @@ def main(argv=None):
     ap.add_argument("--levels", type=int, nargs="+", default=[4, 5, 6, 7, 8])
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "bench-import"))
     ap.add_argument("--figure", default=os.path.join(ROOT, "docs", "figures", "import-speed.png"))
-    ap.add_argument("--write-scans", metavar="DIR",
-                    help="only write --n synthetic scans of generated grains (seed 11, 20 480 triangles "
-                         "each) as binary STL into DIR, to try the import on")
-    ap.add_argument("--n", type=int, default=40)
-    ap.add_argument("--calibrate", action="store_true",
-                    help="only the default error target's calibration: --n scans of generated grains "
-                         "(seed 3, 20 480 triangles each) imported at several error targets, the vertex "
-                         "counts found against the grains' own")
     args = ap.parse_args(argv)
-    if args.calibrate:
-        calibrate(args.n)
-        return
-    if args.write_scans:
-        os.makedirs(args.write_scans, exist_ok=True)
-        rng = np.random.default_rng(11)
-        for k, g in enumerate(generate_library(args.n, seed=11)[0]):
-            v, t = scan_mesh(g, 5, rng=rng)
-            write_stl(os.path.join(args.write_scans, f"stone{k:03d}.stl"), v * 40.0, t)   # d = 40 mm
-        print(f"bench_import: {args.n} scans in {args.write_scans}")
-        return
     os.makedirs(args.out, exist_ok=True)
     grain = generate_library(1, seed=0)[0][0]
     rows = []
@@ -154,31 +90,6 @@ def main(argv=None):
         json.dump({"cores": os.cpu_count(), "repeat": args.repeat, "rows": rows}, fh, indent=1)
     plot(rows, args.figure)
     print(f"bench_import: {args.out}/import-speed.json, figure {args.figure}")
-
-
-def calibrate(n, targets=(0.01, 0.015, 0.02, 0.03, 0.05)):
-    """Scans of n generated grains (their vertex counts known: the paper's
-    8-37, mean 20), imported at each error target: the mean count found,
-    its correlation with the true count, the errors and the misses."""
-    shapes = generate_library(n, seed=3)[0]
-    rng = np.random.default_rng(0)
-    meshes = [scan_mesh(s, 5, rng=rng) for s in shapes]
-    true = np.array([s.n_vertices for s in shapes])
-    print(f"{n} generated grains: vertices {true.min()}-{true.max()}, mean {true.mean():.1f}")
-    for e in targets:
-        gs = [import_mesh(v, t, Budget(max_error=e)) for v, t in meshes]
-        nv = np.array([g.polyhedron.n_vertices for g in gs])
-        err = np.array([g.reduction_hausdorff for g in gs])
-        print(f"max error {e:<5g}: vertices {nv.min()}-{nv.max()}, mean {nv.mean():.1f}, correlation with the "
-              f"true counts {np.corrcoef(nv, true)[0, 1]:.2f}; error median {np.median(err):.4f} d, max "
-              f"{err.max():.4f} d; target missed {sum(not g.target_met for g in gs)}; volume change mean "
-              f"{np.mean([g.reduction_volume_change for g in gs]):+.3f}", flush=True)
-    axes = [(1.0, e, e * f) for e, f in ((0.6, 0.6), (0.75, 0.7), (0.9, 0.85))]
-    for a in axes:
-        v, t = smooth_mesh(5, a)
-        g = import_mesh(v * (1 + 1e-3 * rng.uniform(-1, 1, (len(v), 1))), t, Budget())
-        print(f"ellipsoid {a[0]:.2f} : {a[1]:.2f} : {a[2]:.2f} with 0.1 % noise, default budget: "
-              f"{g.polyhedron.n_vertices} vertices, error {g.reduction_hausdorff:.4f} d")
 
 
 def plot(rows, path):
