@@ -139,8 +139,8 @@ def random_tilts(dump, n=20000, seed=0):
 
     Returns
     -------
-    ndarray, shape (n,)
-        Their tilts phi (deg).
+    ndarray
+        The n tilts phi (deg).
     """
     count, snaps, close, shapes = open_source(dump)
     close()

@@ -259,7 +259,7 @@ def _fmt(x, d=3):
 def write_blocks(studies, out="runs/leaning-blocks", types=("points", "lmgc90"), grids=(1, 2, 3, 4),
                  min_grains=25.0):
     """The block leanings of one or more studies, tabulated (see the module
-    docstring): writes OUT/blocks.csv, OUT/blocks.md and OUT/cache/*.npz.
+    docstring): writes OUT/blocks.csv, OUT/blocks.md and ``OUT/cache/*.npz``.
 
     Parameters
     ----------
