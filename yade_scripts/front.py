@@ -97,7 +97,7 @@ PLANS["kernel"] = {
     "polyhedra": _grid(KERNEL_POINTS + [(300, 2e-2, 500)], (1, 2, 3), 200),
     "spheres": _grid(KERNEL_POINTS, (1, 2, 3), 1000) + _grid([(300, 2e-2, 4000)], (1,), 1000),
 }
-# The time-step sweep (benchmarks/timestep_front.py): S1 on the default
+# The time-step sweep (python -m yade_scripts.timestep_front): S1 on the default
 # preset (kappa = 3000, I = 5e-3) at 200 grains, the time step at 0.3 (the
 # default when it was measured), 0.45 (today's default), 0.6 and 0.9 of the
 # critical step, 3 seeds, seed-major; the
@@ -132,7 +132,7 @@ PLANS["default"] = {
     "spheres": _grid(DEFAULT_FRONT_POINTS["spheres"], (1, 2, 3), 1000),
 }
 # The face-pair tilt against the overlap thickness
-# (benchmarks/facepair_tilt.py): S1 on the default preset at 200 grains,
+# (python -m yade_scripts.facepair_tilt): S1 on the default preset at 200 grains,
 # kappa 10 000, 3000, 1000 and 300 at the default I (longest first), sheared to
 # eps_1 = 0.15, 3 seeds, seed-major; the same seed starts from the same grains
 # and positions at every kappa.

@@ -107,7 +107,7 @@ COST_GROWTH = {"polyhedra": (5000, 1.04), "spheres": (5000, 1.0)}
 #: grain sets (yade_scripts/timestep.py): N grains drawn from the default
 #: library (1000 shapes, seed 0) hold a more limiting one the larger N is.
 #: E[1/dt] of N grains relative to 1000 grains, exact order statistics of the
-#: draws (benchmarks/timestep_draws.py, 2026-11-27): 200 grains 0.8725, 2000
+#: draws (python -m yade_scripts.timestep_draws, 2026-11-27): 200 grains 0.8725, 2000
 #: 1.0479, 5000 1.0967, 10 000 1.1089, 36 933 1.1100 (the library's limit,
 #: every sample holding its most limiting shape in the smallest class);
 #: linear in log N between, constant beyond. Spheres: the smallest class sets
