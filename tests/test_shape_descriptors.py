@@ -96,22 +96,21 @@ def check_reproduced(shapes, grains):
 
 
 def test_generated_grains_written_as_stl_reimport_with_their_descriptors(generated, tmp_path):
+    """60 grains of the seed-0 library through STL (float32) and back: each
+    grain's descriptors within the bounds of the rounding
+    (:func:`check_reproduced`), so the library's distributions keep their
+    order: the KS distance between the two is at most one grain in 60.
+    (The same check on all 1000 grains of ``make shapes`` took 70-170 s and
+    found at most 2 of 1000 moving rank; the per-grain bounds are the
+    stronger check.)"""
     shapes = generated[:60]
-    check_reproduced(shapes, reimport(shapes, str(tmp_path / "stl")))
-
-
-@pytest.mark.slow
-def test_the_whole_generated_library_reimports_with_its_descriptors(tmp_path):
-    generated = generate_library(1000, seed=0)[0]
-    grains = reimport(generated, str(tmp_path / "stl"))
-    assert len(grains) == 1000
-    worst = check_reproduced(generated, grains)
-    print("largest differences from the float64 grains:", worst)
-    a = {k: np.array([grain_descriptors(s.vertices, s.triangles)[k] for s in generated]) for k in NAMES[:9]}
+    grains = reimport(shapes, str(tmp_path / "stl"))
+    check_reproduced(shapes, grains)
+    a = {k: np.array([grain_descriptors(s.vertices, s.triangles)[k] for s in shapes]) for k in NAMES[:9]}
     b = {k: np.array([grain_descriptors(g.polyhedron.vertices, g.polyhedron.triangles)[k] for g in grains])
          for k in NAMES[:9]}
     for k, st in compare(a, b, NAMES[:9]).items():
-        assert st["ks_D"] <= 0.002, k                 # at most 2 of 1000 grains change rank order
+        assert st["ks_D"] <= 1 / 60 + 1e-12, k
 
 
 def test_descriptors_are_invariant_and_compare_is_zero_on_itself(generated):
