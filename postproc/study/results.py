@@ -269,3 +269,76 @@ def update_readme(readme, results):
     with open(readme, "w") as fh:
         fh.write(text.replace(old, new))
     return True
+
+
+def compare(results, reference):
+    """What differs between a study's results and the committed ones.
+
+    Parameters
+    ----------
+    results, reference : dict
+        Results as :func:`collect` gives them (``reference``: the committed
+        file, :func:`load_results`).
+
+    Returns
+    -------
+    list of str
+        One line per difference, empty when the two agree: the study's facts
+        (preset, seeds per sample), each claim's verdict, every quantity of
+        ``comparison`` at the README's precision (two decimals, mean and 95 %
+        interval: what the claims table shows), and each row of claim 6 per
+        contact count and band factor (verdict and leanings). Numbers that
+        agree to the table's precision count as the same.
+
+    Examples
+    --------
+    >>> ref = {"study": {"preset": "default", "seeds": {"polyhedra": 3, "spheres": 3}},
+    ...        "claims": [{"id": 3, "verdict": "not reproduced"}],
+    ...        "comparison": [{"quantity": "a_l", "sample": "polyhedra", "ours": -0.041,
+    ...                        "ci_low": -0.052, "ci_high": -0.031}], "claim6": []}
+    >>> compare(ref, ref)
+    []
+    >>> here = {**ref, "claims": [{"id": 3, "verdict": "inconclusive"}],
+    ...         "comparison": [{"quantity": "a_l", "sample": "polyhedra", "ours": -0.0312,
+    ...                         "ci_low": -0.0489, "ci_high": -0.0135}]}
+    >>> for line in compare(here, ref):
+    ...     print(line)
+    claim 3: inconclusive (committed: not reproduced)
+    a_l, polyhedra: −0.03 [−0.05, −0.01] (committed: −0.04 [−0.05, −0.03])
+    """
+    out = []
+    mine, theirs = results.get("study", {}), reference.get("study", {})
+    for key in ("preset", "seeds"):
+        if mine.get(key) != theirs.get(key):
+            out.append(f"{key}: {mine.get(key)} (committed: {theirs.get(key)})")
+    claims = {c["id"]: c for c in results.get("claims", [])}
+    for c in reference.get("claims", []):
+        here = claims.get(c["id"])
+        if here is None:
+            out.append(f"claim {c['id']}: missing (committed: {c['verdict']})")
+        elif here["verdict"] != c["verdict"]:
+            out.append(f"claim {c['id']}: {here['verdict']} (committed: {c['verdict']})")
+
+    def rows(res):
+        return {(r["quantity"], r["sample"]): r for r in res.get("comparison", [])}
+
+    a, b = rows(results), rows(reference)
+    for key in list(b) + [k for k in a if k not in b]:
+        x, y = _ours(a.get(key)), _ours(b.get(key))
+        if x != y:
+            out.append(f"{key[0]}, {key[1]}: {x if key in a else 'missing'} (committed: {y if key in b else 'none'})")
+
+    def c6(res):
+        return {(r["count"], r["factor"]): r for r in res.get("claim6") or []}
+
+    a6, b6 = c6(results), c6(reference)
+    for key in list(b6) + [k for k in a6 if k not in b6]:
+        x, y = a6.get(key), b6.get(key)
+        if x is None or y is None:
+            out.append(f"claim 6 ({key[0]}, factor {key[1]:g}): {'missing' if x is None else 'not committed'}")
+            continue
+        for field in ("verdict", "VF", "EE"):
+            if x.get(field) != y.get(field):
+                out.append(f"claim 6 ({key[0]}, factor {key[1]:g}) {field}: {x.get(field)} "
+                           f"(committed: {y.get(field)})")
+    return out
