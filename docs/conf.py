@@ -41,3 +41,9 @@ def plain_text_docstrings(app, what, name, obj, options, lines):
 
 def setup(app):
     app.connect("autodoc-process-docstring", plain_text_docstrings)
+# numpydoc types name array shapes by their parameters, e.g. "(n, 3) float":
+# napoleon turns each word of a type into a cross-reference, and a word such as
+# n or vertices is also an attribute of several classes; such an ambiguous
+# reference renders as plain text, so its warning ("more than one target
+# found") is not an error here
+suppress_warnings = ["ref.python"]
