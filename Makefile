@@ -19,7 +19,7 @@ SHAPES ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study results test-slurm system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study results compare test-slurm system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
@@ -96,6 +96,14 @@ shapes: $(SHAPES_LIB)
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES))
+	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ]; then \
+	  $(PY) -m postproc.cli compare-results $(STUDY) || true; fi
+
+# After make study: its results against the committed ones, which the README's
+# claims table shows ("same as the README", or each difference; exit 1 then).
+# make study prints the same when it ran the default (3 seeds, generated grains).
+compare: venv
+	$(PY) -m postproc.cli compare-results $(STUDY)
 
 # The committed results of the default study, from STUDY's report (after
 # make study): reference_data/default-study.json, the README's claims table

@@ -78,6 +78,11 @@ def main(argv=None):
                                                  "reference_data/default-study.json)")
     rs.add_argument("--readme", help="README whose generated claims table is rewritten from the results")
     rs.add_argument("--figure", help="copy the report's q/p figure (report/fig_qp.png) there")
+    cr = sub.add_parser("compare-results", help="a study's results against the committed ones (the README's "
+                                                "table): the same, or what differs")
+    cr.add_argument("study", help="study folder with its report (make study: runs/study)")
+    cr.add_argument("--reference", default=None, help="committed results (default: "
+                                                      "reference_data/default-study.json)")
     sz = sub.add_parser("size-front", help="the study's quantities against the number of grains (several studies)")
     sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
     sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
@@ -177,6 +182,29 @@ def main(argv=None):
         path = build_report(args.study, args.out)
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
         return 0
+    if args.cmd == "compare-results":
+        from .study.results import RESULTS, collect, compare, load_results
+
+        ref_path = args.reference or RESULTS
+        try:
+            reference = load_results(ref_path)
+            if reference is None:
+                raise InputError(f"{ref_path}: no committed results to compare with")
+            differences = compare(collect(args.study), reference)
+        except (InputError, OSError, ValueError, KeyError) as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        if not differences:
+            print(f"same as the README: every verdict, and every number at the table's precision, equals "
+                  f"{os.path.relpath(ref_path)}")
+            return 0
+        print(f"differs from {os.path.relpath(ref_path)} (the README's table) in {len(differences)} place(s):")
+        for line in differences:
+            print(f"  {line}")
+        print("A run on another machine can follow another trajectory from its first differing bit (numpy and "
+              "glibc's libm choose their code by the CPU): numbers move within their intervals and a verdict "
+              "near its threshold can change (docs/study.md, \"Reproducing the committed results\").")
+        return 1
     if args.cmd == "results":
         from .study.results import update_readme, write_results
 

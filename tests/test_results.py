@@ -192,3 +192,44 @@ def test_the_readme_is_short_and_names_no_file_outside_the_repository():
     for target in re.findall(r"\]\(([^)#]+)(?:#[^)]*)?\)", text):
         if not target.startswith(("http://", "https://")):
             assert os.path.exists(os.path.join(ROOT, target)), target
+
+
+def test_compare_results_says_same_or_lists_what_differs(tmp_path, capsys):
+    """``postproc compare-results``: a study against the committed file
+    written from it is "same as the README" (exit 0); a number moved below
+    the table's precision is still the same; a changed verdict, a number
+    moved at the table's precision and a changed claim-6 leaning are listed,
+    one line each (exit 1); no committed file or no report: one line, exit 2."""
+    study = make_study(tmp_path / "study")
+    ref = tmp_path / "ref.json"
+    assert main(["results", str(study), "--out", str(ref)]) == 0
+    capsys.readouterr()
+    assert main(["compare-results", str(study), "--reference", str(ref)]) == 0
+    assert capsys.readouterr().out.startswith("same as the README: every verdict")
+    rep = study / "report"
+    comp = pd.read_csv(rep / "comparison.csv")
+    row = (comp["quantity"] == "a_l") & (comp["sample"] == "polyhedra")
+    comp.loc[row, "ours"] = -0.0314                      # -0.03 at two decimals, as before: the same
+    comp.to_csv(rep / "comparison.csv", index=False)
+    assert main(["compare-results", str(study), "--reference", str(ref)]) == 0
+    capsys.readouterr()
+    comp.loc[row, ["ours", "ci_low", "ci_high"]] = [-0.0412, -0.0521, -0.0303]
+    comp.to_csv(rep / "comparison.csv", index=False)
+    claims = pd.read_csv(rep / "claims.csv")
+    claims.loc[claims["id"] == 3, "verdict"] = "not reproduced"
+    claims.to_csv(rep / "claims.csv", index=False)
+    c6 = pd.read_csv(rep / "claim6.csv")
+    c6.loc[(c6["count"] == "commonplane") & (c6["factor"] == 1.0), "EE"] = "-0.010 [-0.040, 0.020]"
+    c6.to_csv(rep / "claim6.csv", index=False)
+    assert main(["compare-results", str(study), "--reference", str(ref)]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].endswith("in 3 place(s):")
+    assert out[1:4] == ["  claim 3: not reproduced (committed: inconclusive)",
+                        "  a_l, polyhedra: −0.04 [−0.05, −0.03] (committed: −0.03 [−0.05, −0.01])",
+                        "  claim 6 (commonplane, factor 1) EE: -0.010 [-0.040, 0.020] (committed: "
+                        "-0.036 [-0.069, -0.003])"]
+    assert "another machine" in out[4]
+    assert main(["compare-results", str(study), "--reference", str(tmp_path / "none.json")]) == 2
+    assert main(["compare-results", str(tmp_path / "nothing"), "--reference", str(ref)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("postproc: error:") == 2 and "Traceback" not in err

@@ -297,32 +297,18 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, m
     assert is_png(out / "report-failed" / "fig_qp.png")
 
 
-def test_single_seed_study_runs_s1_on_the_kernel_with_every_core(tmp_path, shape_library, capsys):
-    """The path of plain `make study`: one seed per sample, side by side, S1
-    on the compiled kernel started as yade -jN (so the kernel gets N threads)."""
-    import os
-
-    from postproc.schema import DumpReader
-    from yade_scripts.study import main
-
-    rc = main(["--preset", "tiny", "--out", str(tmp_path), "--library", shape_library])
-    assert rc == 0
-    info = json.loads((tmp_path / "polyhedra" / "run.info.json").read_text())
-    assert info["kernel"]["threads"] == (os.cpu_count() or 1) and info["kernel"]["touch_steps"] > 0
-    with DumpReader(str(tmp_path / "polyhedra" / "run.h5")) as r:
-        assert r.complete and r.parameters["contact_engine"] == "kernel"
-    assert (tmp_path / "report" / "report.md").exists()
-
-
 def test_study_runs_s1_on_an_imported_library(tmp_path, monkeypatch):
     """``make study SHAPES=LIB.h5`` with a library imported from meshes (as a
     user's scans would be): the tiny S1 runs on the imported grains (the
     dump's shapes are the library's), and the report names the library and
-    shows its descriptors."""
+    shows its descriptors. It is also the path of plain `make study`: one
+    seed per sample, side by side, S1 on the compiled kernel started as
+    yade -jN (so the kernel gets N threads)."""
     import h5py
     import numpy as np
     import trimesh
 
+    from postproc.schema import DumpReader
     from shapes.__main__ import main as shapes_main
     from shapes.library import ShapeLibrary
     from yade_scripts.study import main
@@ -343,6 +329,10 @@ def test_study_runs_s1_on_an_imported_library(tmp_path, monkeypatch):
     out = tmp_path / "study"
     saved = record(monkeypatch)
     assert main(["--preset", "tiny", "--out", str(out), "--library", str(lib)]) == 0
+    info = json.loads((out / "polyhedra" / "run.info.json").read_text())
+    assert info["kernel"]["threads"] == (os.cpu_count() or 1) and info["kernel"]["touch_steps"] > 0
+    with DumpReader(str(out / "polyhedra" / "run.h5")) as r:
+        assert r.complete and r.parameters["contact_engine"] == "kernel"
     with h5py.File(out / "polyhedra" / "run.h5", "r") as h:
         counts = np.diff(np.asarray(h["shapes"]["vertex_offsets"]))
     imported = {len(library[i][0]) for i in range(len(library))}
