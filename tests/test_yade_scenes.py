@@ -100,7 +100,7 @@ KINDS = ("polyhedra", "polyhedra-yade", "spheres")
 # contacts' run, the longest of the fixture on YADE's slow stock contacts, is
 # as small as still checks that path: 12 grains from their bounding spheres at
 # 0.3 (the preset's 0.12 is of the grains), sheared to 1.2 % with three shear
-# snapshots (about 11 100 steps, against 15 000 with the preset's 20 grains)
+# snapshots (about 11 100 steps, against 14 700 with the preset's 20 grains)
 VARIANTS = {"polyhedra": {}, "polyhedra-yade": {"contact_engine": "yade", "placement": "spheres",
                                                 "initial_fraction": 0.3, "n_particles": 12,
                                                 "final_strain": 0.012, "dump_strain": 0.004}, "spheres": {},
