@@ -184,7 +184,8 @@ def test_claim6_says_how_many_seeds_would_decide_a_straddling_leaning():
     assert t.ppf(0.975, n - 1) * sd / np.sqrt(n) < 0.2 / 3 <= t.ppf(0.975, n - 2) * sd / np.sqrt(n - 1)
     c6 = evaluate(s)[5]
     assert c6["verdict"] == "inconclusive"
-    assert f"EE signed branch anisotropy -0.07 [-0.45, 0.31] (< 0, about {n} seeds would tell it from 0)" \
+    assert f"EE signed branch anisotropy -0.07 [-0.45, 0.31] (< 0, about {n} seeds would tell it from 0; leaning " \
+           "undecided, none inside ±0.03)" \
         in c6["numbers"], c6["numbers"]
     assert c6["numbers"].count("seeds would tell") == 1
 
