@@ -1,6 +1,7 @@
 """Plateau estimates, confidence intervals and the claim verdicts on
 summaries built with known answers."""
 import numpy as np
+from scipy.stats import t
 import pandas as pd
 import pytest
 
@@ -201,3 +202,91 @@ def test_claim6_names_the_criterion_it_was_read_with():
             df["ct_method"], df["ct_threshold"] = method, 0.1
         c6 = evaluate(s)[5]
         assert c6["verdict"] == "reproduced" and words in c6["numbers"], c6["numbers"]
+
+
+def _rule_rates(mu, sigma, n, reps, rng):
+    """Monte Carlo of claim 6's leaning rule: ``reps`` ensembles of ``n``
+    seeds drawn from N(mu, sigma^2); returns the share of each decision and
+    the coverage of the 95 % interval."""
+    from postproc.study.claims import leaning_decision
+
+    x = rng.normal(mu, sigma, size=(reps, n))
+    m, se = x.mean(axis=1), x.std(axis=1, ddof=1) / np.sqrt(n)
+    counts = {"lateral": 0, "axial": 0, "none": 0, "undecided": 0}
+    covered = 0
+    for a, b in zip(m, se):
+        e = Estimate(a, b, n - 1, n, "seeds")
+        counts[leaning_decision(e)] += 1
+        lo, hi = e.ci()
+        covered += lo <= mu <= hi
+    return {k: v / reps for k, v in counts.items()}, covered / reps
+
+
+def _rule_exact(mu, sigma, n, margin):
+    """The rule's decision probabilities for normal seeds, exactly: the mean
+    ~ N(mu, sigma^2/n) and (n-1) s^2 / sigma^2 ~ chi^2(n-1), independent;
+    with h = t_{0.975, n-1} s / sqrt(n), "lateral" is mean + h < 0, "none"
+    is |mean| + h < margin (it comes first), integrated over s."""
+    from scipy import integrate
+    from scipy.stats import chi2, norm
+
+    k = t.ppf(0.975, n - 1) / np.sqrt(n)
+    sm = sigma / np.sqrt(n)
+
+    def over_s(f):
+        return integrate.quad(lambda c: f(sigma * np.sqrt(c / (n - 1))) * chi2.pdf(c, n - 1), 0, np.inf,
+                              limit=200)[0]
+
+    def band(a, b):                                  # P(a < mean < b)
+        return max(0.0, norm.cdf((b - mu) / sm) - norm.cdf((a - mu) / sm))
+
+    none = over_s(lambda s: band(-margin + k * s, margin - k * s))
+    # "lateral": the interval below 0 and not inside the margin
+    lateral = over_s(lambda s: norm.cdf((-k * s - mu) / sm) - band(-margin + k * s, -k * s))
+    return {"lateral": lateral, "none": none}
+
+
+@pytest.mark.parametrize("mu, sigma, n", [(0.0, 0.02, 6), (0.03, 0.02, 6), (-0.03, 0.01, 3), (-0.05, 0.03, 6),
+                                          (0.01, 0.015, 10)])
+def test_the_leaning_rule_decides_at_its_stated_rates(mu, sigma, n):
+    """Claim 6's leaning rule on synthetic ensembles of known mean: the share
+    of "lateral" and of "none" decisions equals its exact probability, the
+    95 % interval covers the true mean 95 % of the time, and a leaning of
+    the margin's size (|mu| = 0.03) is called "none" at most 2.5 % of the
+    time (the equivalence test's level). Tolerances: 4 binomial standard
+    errors of the 4000 replications."""
+    from postproc.study.claims import NO_LEANING
+
+    reps = 4000
+    rates, coverage = _rule_rates(mu, sigma, n, reps, np.random.default_rng(abs(hash((mu, sigma, n))) % 2**32))
+    exact = _rule_exact(mu, sigma, n, NO_LEANING)
+    tol = lambda p: 4 * np.sqrt(max(p * (1 - p), 1 / reps) / reps)
+    assert sum(rates.values()) == pytest.approx(1.0)
+    for k in ("lateral", "none"):
+        assert abs(rates[k] - exact[k]) <= tol(exact[k]), (k, rates[k], exact[k])
+    assert abs(coverage - 0.95) <= tol(0.95)
+    if abs(mu) >= NO_LEANING:
+        assert exact["none"] <= 0.025 and rates["none"] <= 0.025 + tol(0.025)
+
+
+def test_a_leaning_called_none_or_axial_contradicts_claim_6():
+    """The rule inside claim 6: VF and EE leanings both "none" (intervals
+    inside +-0.03) make the claim not reproduced; both lateral, with FF
+    strong and axial, reproduced; one undecided, inconclusive."""
+    from postproc.study.claims import claim6
+
+    def seeds(vf, ee, spread):
+        out = []
+        for k in range(5):
+            eps = np.linspace(0, 0.3, 40)
+            d = {"eps_q": eps, "stage": ["shear"] * 40, "ct_fratio_FF": 1.7, "ct_fabric_FF": 0.3,
+                 "ct_fratio_VF": 0.7, "ct_fratio_EE": 0.75, "strong_frac_FF": 0.3 + 0.002 * k,
+                 "weak_frac_FF": 0.1 + 0.002 * k,
+                 "ct_fabric_VF": vf + spread * (k - 2), "ct_fabric_EE": ee + spread * (k - 2)}
+            out.append(pd.DataFrame(d))
+        return out
+
+    assert claim6(seeds(0.0, 0.001, 0.003))["verdict"] == "not reproduced"
+    assert "leaning none, none inside ±0.03" in claim6(seeds(0.0, 0.001, 0.003))["numbers"]
+    assert claim6(seeds(-0.1, -0.08, 0.003))["verdict"] == "reproduced"
+    assert claim6(seeds(-0.1, 0.0, 0.03))["verdict"] == "inconclusive"

@@ -97,10 +97,12 @@ def leaning_decision(est, margin=NO_LEANING):
     Returns
     -------
     str
-        "lateral" when the 95 % interval lies below 0, "axial" when above 0,
-        "none" when it lies inside (-margin, +margin) (an equivalence test:
-        each side at 2.5 %, so a leaning of size ``margin`` is called "none"
-        at most 2.5 % of the time), else "undecided".
+        "none" when the 95 % interval lies inside (-margin, +margin) (an
+        equivalence test, each side at 2.5 %: a leaning of size ``margin``
+        or more is called "none" at most 2.5 % of the time), else "lateral"
+        when it lies below 0, "axial" when above 0, else "undecided". A
+        leaning told from 0 but inside the margin is "none": too small to
+        call a lean.
 
     Examples
     --------
@@ -115,12 +117,12 @@ def leaning_decision(est, margin=NO_LEANING):
     lo, hi = est.ci()
     if not (np.isfinite(lo) and np.isfinite(hi)):
         return "undecided"
+    if -margin < lo and hi < margin:
+        return "none"
     if hi < 0:
         return "lateral"
     if lo > 0:
         return "axial"
-    if -margin < lo and hi < margin:
-        return "none"
     return "undecided"
 
 
