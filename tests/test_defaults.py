@@ -229,6 +229,12 @@ def test_the_core_hours_the_docs_quote():
     s1 = estimate(resolve("intermediate", "polyhedra"))["core_hours"]
     s2 = estimate(resolve("intermediate", "spheres"))["core_hours"]
     assert f"(16 × ({s1:.2f} + {s2:.2f}))" in scenes
+    study = " ".join(text("docs/study.md").split())
+    assert f"3 + 3 seeds, about {3 * pair('intermediate'):.1f} core-hours by the cost model" in study
+    # the size front: 3 + 3 seeds at each of 200, 1000 and 5000 grains
+    front = 3 * (pair("small") + pair("default") + pair("intermediate"))
+    makefile = " ".join(text("Makefile").replace("#", " ").split())
+    assert f"3 + 3 seeds each, about {front:.1f} core-hours by the model" in makefile
 
 
 def test_the_scene_parameters_the_docs_quote():
