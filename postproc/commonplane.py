@@ -5,7 +5,10 @@
   overlap, Cundall's plane as LMGC90 iterates it, its face topology, and
   either today's point stage or the older planplan one); it gives LMGC90's
   compiled count on 99 % of the grain pairs of our packings
-  (docs/lmgc90-contacts.md, tests/test_lmgc90_fixtures.py).
+  (docs/lmgc90-contacts.md, tests/test_lmgc90_fixtures.py). Its third route,
+  ``--types lmgc90-2009``, is planplan with the length-tolerant intersection
+  LMGC90 used before Clipper2 (:func:`tolerant_intersection`, written from
+  its description; no compiled LMGC90 of that age was run to check it).
 * :func:`contact_points` (``--types commonplane``) is the earlier band count
   described below: the band idea of LMGC90's older route with our own
   geometry, kept for the study's earlier numbers; it is not LMGC90's count
@@ -453,17 +456,21 @@ def _feature(adjacent, idx):
 # ``wcp_compute_contact_PRPRx`` does for one pair of convex POLYR bodies
 # (``DETECTION_COMMON_PLANE`` of ``mod_PRPRx.f90``, with the geometry of
 # ``mod_DiscreteGeometry.f90`` and the face topology of ``mod_POLYR.f90``),
-# so that the count is LMGC90's, not a count of the same idea. Two routes:
-# ``"lmgc90"`` (today's default point stage, ``new_ccpm = .true.``) and
-# ``"lmgc90-planplan"`` (the older route, ``use_old_ccpm_PRPRx``).
+# so that the count is LMGC90's, not a count of the same idea. Three routes:
+# ``"lmgc90"`` (today's default point stage, ``new_ccpm = .true.``),
+# ``"lmgc90-planplan"`` (the older route, ``use_old_ccpm_PRPRx``) and
+# ``"lmgc90-2009"`` (the older route with the length-tolerant intersection
+# planplan used before Clipper2, :func:`tolerant_intersection`; presumably
+# the paper's, not checked against a 2009 LMGC90).
 
-LMGC90_ROUTES = ("lmgc90", "lmgc90-planplan")
+LMGC90_ROUTES = ("lmgc90", "lmgc90-planplan", "lmgc90-2009")
 DEFAULT_ALERT = 0.1           # alert distance, in units of the smallest grain radius (LMGC90's examples)
 LMGC90_ITERATIONS = 200       # cundall_iter: the compas_lmgc90 glue's value (LMGC90's module default: 100)
 TOPO_ANGLE = 5.0              # deg, POLYR topo_angle: adjacent triangles closer than this form one face
 F2F_TOL = 1e-3                # f2f_tol: a face is "seen" when 1 - cos(face, plane) <= this (2.6 deg)
 TOL_ANGLE = 1e-2              # tol_angle: a point is kept when 1 - cos(its normal, plane) <= this (8.1 deg)
 CLIP_EPS = 1e-8               # Clipper2 precision of polytopes_intersection_wc (8 decimals of the length unit)
+TOL_2009 = 1e-2               # lmgc90-2009: the intersection's length tolerance, in units of the band's ref
 _TOL_NORMALES = 1e-3          # compute_shadow_overlap
 # LMGC90 writes these as default-real (single precision) literals in
 # double-precision variables: their values are the float32 roundings
@@ -864,20 +871,296 @@ def _planplan(cd, an, cd_vis, an_vis, center, t, normal, s, clip_eps):
     I = _simplify(I, clip_eps)
     if len(I) < 3 or _area2(I) <= 0:
         return np.zeros((0, 3))
-    if len(I) > 4:
-        # keep the 4 corners with the sharpest turns (smallest cosine)
-        m = len(I)
-        cosang = np.empty(m)
-        for i in range(m):
-            v1, v2 = I[i] - I[i - 1], I[(i + 1) % m] - I[i]
-            cosang[i] = (v1 @ v2) / (np.hypot(*v1) * np.hypot(*v2))
-        I = I[np.sort(np.argsort(cosang, kind="stable")[:4])]
+    if len(I) > MAX_POINTS:
+        I = _sharpest_corners(I)
     return center + I[:, :1] * s + I[:, 1:2] * t
+
+
+def _sharpest_corners(I, k=MAX_POINTS):
+    """planplan's reduction of a polygon with more than k corners: the k
+    corners (m, 2) -> (k, 2), in their order along the contour, with the
+    sharpest turns (the smallest cosine between the incoming and outgoing
+    edge; the first on a tie)."""
+    m = len(I)
+    cosang = np.empty(m)
+    for i in range(m):
+        v1, v2 = I[i] - I[i - 1], I[(i + 1) % m] - I[i]
+        cosang[i] = (v1 @ v2) / (np.hypot(*v1) * np.hypot(*v2))
+    return I[np.sort(np.argsort(cosang, kind="stable")[:k])]
 
 
 def _area2(P):
     x, y = P[:, 0], P[:, 1]
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+# ---------------------------------------------------------------------------
+# The 2009 route: planplan with a length-tolerant convex intersection
+# ---------------------------------------------------------------------------
+#
+# Before Clipper2, LMGC90's planplan intersected the two projected hulls with
+# ``polytopes_intersection``, which works with a length tolerance, so that a
+# side whose kept vertices project to a point or a segment still gives points
+# (docs/lmgc90-contacts.md). Its code is not reproduced here; the functions
+# below implement the intersection from that description.
+
+
+def _points_2d(P, name):
+    """P as a float (k, 2) array, k >= 1, finite; InputError (one line) otherwise."""
+    try:
+        A = np.asarray(P, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be an array of 2-D points, got {type(P).__name__}") from None
+    if A.ndim != 2 or A.shape[1] != 2 or len(A) < 1:
+        raise InputError(f"{name} must have shape (k, 2) with k >= 1, got {A.shape}")
+    if not np.isfinite(A).all():
+        raise InputError(f"{name} must be finite")
+    return A
+
+
+def _length_tolerance(tol):
+    """tol as a float; InputError (one line) unless finite and >= 0."""
+    try:
+        a = float(tol)
+    except (TypeError, ValueError):
+        raise InputError(f"the length tolerance must be a number, got {tol!r}") from None
+    if not (np.isfinite(a) and a >= 0):
+        raise InputError(f"the length tolerance must be finite and >= 0, got {tol!r}")
+    return a
+
+
+def convex_set_2d(P, tol):
+    """The convex set spanned by 2-D points, with its dimension decided
+    within a length tolerance: a point, a segment or a polygon.
+
+    Parameters
+    ----------
+    P : array_like, shape (k, 2), k >= 1
+        Points (m), e.g. the kept vertices of one side projected on the
+        common plane.
+    tol : float
+        Length tolerance (m), >= 0.
+
+    Returns
+    -------
+    ndarray, shape (m, 2)
+        m = 1: a point (the mean of the hull's corners), when the points
+        lie within tol of each other (the hull's diameter is <= tol);
+        m = 2: a segment, its two ends (the hull's diameter pair, exact
+        input points), when every point lies within tol of the line
+        through them; m >= 3: a polygon, its corners counter-clockwise
+        (exact input points), the hull's corners closer than tol to the
+        line through their neighbours, or to a neighbour, dropped.
+
+    Raises
+    ------
+    InputError
+        P not (k, 2) with k >= 1, not finite, or tol not finite and >= 0.
+
+    Examples
+    --------
+    >>> convex_set_2d([[0, 0], [1, 0], [2, 1e-9]], 1e-6).tolist()
+    [[0.0, 0.0], [2.0, 1e-09]]
+    >>> len(convex_set_2d([[0, 0], [1, 0], [0, 1]], 1e-6))
+    3
+    """
+    P = _points_2d(P, "P")
+    tol = _length_tolerance(tol)
+    H = _hull2(P)
+    if len(H) == 1:
+        return H
+    D = np.sqrt(((H[:, None, :] - H[None, :, :]) ** 2).sum(axis=2))
+    i, j = np.unravel_index(int(np.argmax(D)), D.shape)
+    i, j = min(i, j), max(i, j)
+    if D[i, j] <= tol:
+        return H.mean(axis=0, keepdims=True)
+    if len(H) == 2:
+        return H
+    p, q = H[i], H[j]
+    u = (q - p) / D[i, j]
+    off = np.abs(u[0] * (H[:, 1] - p[1]) - u[1] * (H[:, 0] - p[0]))
+    if off.max() <= tol:
+        return np.array([p, q])
+    S = _simplify(H, tol)
+    return S if len(S) >= 3 else np.array([p, q])
+
+
+def _clip_tolerant(X, closed, a, b, tol):
+    """The part of the chain X (k, 2) (closed: a convex polygon; else a
+    point or a segment) on the left of the directed line a -> b, a vertex
+    kept when it lies at most tol on the right. Where an edge leaves the
+    kept side from a vertex strictly on the left, the exact crossing with
+    the line is added (so an overlap's corners are exact); from a vertex
+    within tol on the right, that vertex is the end."""
+    e = b - a
+    side = (e[0] * (X[:, 1] - a[1]) - e[1] * (X[:, 0] - a[0])) / np.hypot(*e)
+    keep = side >= -tol
+    m = len(X)
+    if m == 1:
+        return X if keep[0] else X[:0]
+    out = []
+    if not closed and keep[0]:
+        out.append(X[0])
+    for i in range(m if closed else m - 1):
+        j = (i + 1) % m
+        if closed and keep[i]:
+            out.append(X[i])
+        if keep[i] != keep[j]:
+            s_in = side[i] if keep[i] else side[j]
+            if s_in > 0:
+                out.append(X[i] + side[i] / (side[i] - side[j]) * (X[j] - X[i]))
+        if not closed and keep[j]:
+            out.append(X[j])
+    return np.array(out).reshape(-1, 2)
+
+
+def _segment_segment(A, B, tol):
+    """Two segments (2, 2): the ends of their overlap when they lie on one
+    line within tol, else their crossing (within tol of both), else an
+    end within tol of the other segment; (k, 2), k = 0, 1 or 2."""
+    if np.hypot(*(A[1] - A[0])) < np.hypot(*(B[1] - B[0])):
+        A, B = B, A
+    p, L = A[0], np.hypot(*(A[1] - A[0]))
+    u = (A[1] - A[0]) / L
+    X = np.concatenate([A, B])
+    h = u[0] * (X[:, 1] - p[1]) - u[1] * (X[:, 0] - p[0])
+    if np.all(np.abs(h) <= tol):                                  # one line: the overlap
+        s = (X - p) @ u
+        lo_a, lo_b = (0, 1) if s[0] <= s[1] else (1, 0)
+        lo_c, lo_d = (2, 3) if s[2] <= s[3] else (3, 2)
+        lo = lo_a if s[lo_a] >= s[lo_c] else lo_c               # the later start
+        hi = lo_b if s[lo_b] <= s[lo_d] else lo_d                # the earlier end
+        if s[hi] < s[lo] - tol:
+            return np.zeros((0, 2))
+        if s[hi] - s[lo] <= tol:
+            return (0.5 * (X[lo] + X[hi]))[None]
+        return X[[lo, hi]]
+    a, b, c, d = X
+    r, w = b - a, d - c
+    den = _cross2(r, w)
+    if den != 0:
+        t = _cross2(c - a, w) / den
+        v = _cross2(c - a, r) / den
+        La, Lb = np.hypot(*r), np.hypot(*w)
+        if -tol <= t * La <= La + tol and -tol <= v * Lb <= Lb + tol:
+            return (a + t * r)[None]
+    # no crossing: an end within tol of the other segment (nearly parallel, touching)
+    best, where = np.inf, None
+    for P, (q0, q1) in ((a, (c, d)), (b, (c, d)), (c, (a, b)), (d, (a, b))):
+        e = q1 - q0
+        z = np.clip((P - q0) @ e / (e @ e), 0.0, 1.0)
+        dist = np.hypot(*(P - q0 - z * e))
+        if dist < best:
+            best, where = dist, P
+    return where[None] if best <= tol else np.zeros((0, 2))
+
+
+def tolerant_intersection(P, Q, tol, max_points=MAX_POINTS):
+    """Contact points of two projected sides as the 2009 planplan route
+    finds them: the intersection of their convex sets in the plane with a
+    length tolerance, so that a point or a segment gives points too.
+
+    Each side's points make a point, a segment or a polygon
+    (:func:`convex_set_2d`, within tol). Then:
+
+    * polygon and polygon: the corners of their intersection polygon
+      (the exact crossings of the two contours and the corners of either
+      inside the other), its own dimension decided within tol again, so a
+      sliver of width <= tol gives the 2 ends of a segment;
+    * segment and polygon: the two ends of the segment clipped by the
+      polygon (exact crossings with its edges), 1 point when they are
+      within tol of each other;
+    * segment and segment: on one line within tol (every end within tol of
+      the longer one's line), the ends of their overlap (input points; 1
+      point, their midpoint, when the overlap is <= tol long); else their
+      crossing when it lies within tol of both;
+    * point and anything: the point when within tol of the other set
+      (two points: their midpoint).
+
+    "Within tol" of a polygon is on the inner side of every edge line or
+    at most tol outside it (a vertex that far out is kept as it is).
+    More than ``max_points`` corners are reduced as planplan reduces them:
+    the ``max_points`` sharpest corners (smallest cosine of the turn).
+
+    Parameters
+    ----------
+    P, Q : array_like, shape (k, 2), k >= 1
+        The two sides' points (m), in the same plane coordinates.
+    tol : float
+        Length tolerance (m), >= 0. The route uses :data:`TOL_2009` times
+        the band's reference length (:func:`lmgc90_pair`).
+    max_points : int
+        At most this many points (planplan: 4).
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        The points, n = 0 (no contact) to ``max_points``.
+
+    Raises
+    ------
+    InputError
+        Points not (k, 2) with k >= 1 or not finite; tol not finite and
+        >= 0; max_points not an integer >= 1.
+
+    Examples
+    --------
+    A segment lying across a unit square gives its two clipped ends:
+
+    >>> square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    >>> tolerant_intersection([[-1, 0.5], [2, 0.5]], square, 1e-3).tolist()
+    [[0.0, 0.5], [1.0, 0.5]]
+    >>> len(tolerant_intersection([[0.5, 1.01]], square, 1e-3))
+    0
+    """
+    A, B = convex_set_2d(_points_2d(P, "P"), tol), convex_set_2d(_points_2d(Q, "Q"), tol)
+    tol = float(tol)
+    if not (isinstance(max_points, (int, np.integer)) and max_points >= 1):
+        raise InputError(f"max_points must be an integer >= 1, got {max_points!r}")
+    if len(A) > len(B):
+        A, B = B, A
+    if len(B) >= 3:                                              # B a polygon: clip A by its edges
+        R = A
+        m = len(B)
+        for i in range(m):
+            R = _clip_tolerant(R, len(R) >= 3, B[i], B[(i + 1) % m], tol)
+            if not len(R):
+                return np.zeros((0, 2))
+        if len(A) == 1:
+            I = R
+        elif len(A) == 2:
+            I = R[[0, -1]] if np.hypot(*(R[-1] - R[0])) > tol else (0.5 * (R[0] + R[-1]))[None]
+        else:
+            I = convex_set_2d(R, tol)
+    elif len(A) == 2:                                            # two segments
+        I = _segment_segment(A, B, tol)
+    elif len(B) == 2:                                            # a point and a segment
+        e = B[1] - B[0]
+        z = np.clip((A[0] - B[0]) @ e / (e @ e), 0.0, 1.0)
+        I = A if np.hypot(*(A[0] - B[0] - z * e)) <= tol else np.zeros((0, 2))
+    else:                                                        # two points
+        I = (0.5 * (A + B)) if np.hypot(*(A[0] - B[0])) <= tol else np.zeros((0, 2))
+    if len(I) > max_points:
+        I = _sharpest_corners(I, max_points)
+    return I
+
+
+def _planplan_2009(cd, an, cd_vis, an_vis, center, t, normal, s, tol):
+    """planplan with the length-tolerant intersection (the 2009 route): the
+    kept vertices of each side projected on the common plane (LMGC90's
+    (s, t) coordinates), :func:`tolerant_intersection` with tol (m).
+    Returns (k, 3) contact points, k = 0 to 4."""
+    B2 = np.stack([s, t], 1)
+
+    def proj(X, keep):
+        r = X[keep > 0] - center
+        r = r - np.outer(r @ normal, normal)
+        return r @ B2
+    Pa, Pc = proj(an.X, an_vis), proj(cd.X, cd_vis)
+    if not (len(Pa) and len(Pc)):
+        return np.zeros((0, 3))
+    I = tolerant_intersection(Pc, Pa, tol)
+    return center + I[:, :1] * s + I[:, 1:2] * t
 
 
 def _node_node(x1, x2, ntr):
@@ -1128,8 +1411,9 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     distance (m). Returns a dict: ``points`` (k, 3) m, ``gaps`` (k,) m,
     ``normal`` (3,) the common plane's (from an to cd), ``gap`` the plane's
     gap, ``stage`` the contact-type code (cd 1/2/3 + an 10/20/30, -1 when the
-    shadow overlap separates the pair); the planplan route reports the
-    same code though it does not use it)."""
+    shadow overlap separates the pair); the planplan and 2009 routes report
+    the same code though they do not use it). route: one of
+    :data:`LMGC90_ROUTES` (:func:`lmgc90_points`)."""
     if sep is None:
         sep = cd.c - an.c
         sep = sep / np.linalg.norm(sep)
@@ -1159,6 +1443,9 @@ def _point_stage(cd, an, adist, route, neighbor, clip_eps, normal, t, s, gap, jm
     res = {"normal": normal, "gap": gap, "stage": code}
     if route == "lmgc90-planplan":
         P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
+        return {**res, "points": P, "gaps": np.full(len(P), gap)}
+    if route == "lmgc90-2009":
+        P = _planplan_2009(cd, an, cd_k, an_k, center, t, normal, s, TOL_2009 * ref)
         return {**res, "points": P, "gaps": np.full(len(P), gap)}
     X, A = cd.X, an.X
     pts = []
@@ -1228,8 +1515,24 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     centres of mass; quat (C, 4) (w, x, y, z) local -> global. alert : the
     alert distance (m; pairs whose gap exceeds it have no point, and with
     route "lmgc90" so has every point whose own gap exceeds it). route :
-    "lmgc90" (today's default point stage) or "lmgc90-planplan" (the older
-    route). neighbor : LMGC90's cundall_neighbor (the band, 0.1). iterations
+    "lmgc90" (today's default point stage), "lmgc90-planplan" (the older
+    route: planplan, the hulls intersected by Clipper2, so 3 or 4 points or
+    none) or "lmgc90-2009" (the older route with the intersection planplan
+    used before Clipper2, which has a length tolerance:
+    :func:`tolerant_intersection`, so a point or a segment gives 1 or 2
+    points). The 2009 route's tolerance is ``TOL_2009 * ref`` = 1e-2 ref,
+    ref the band's reference length (the smaller distance, along the
+    plane's normal, from a body's centre to its extreme vertex; 0.5-1 cm on
+    the default study's grains, so about 1e-4 m): the distance below which
+    LMGC90's older ``polytopes_intersection`` called two points one (its
+    squared distances below 1e-4 of its reference length squared), the
+    length scale of that intersection relative to the grain size, as
+    planplan's Clipper grid (1e-8 m) is today's. It is far above round-off
+    and Clipper's grid (about 1e-6 ref) and a tenth of the band (0.1 ref),
+    so it decides only the degenerate meetings: a point or a segment on a
+    contour, segments on one line, slivers. Which reference length
+    planplan passed to ``polytopes_intersection`` is not in the source
+    found; ref is the length the band is made of. neighbor : LMGC90's cundall_neighbor (the band, 0.1). iterations
     : cundall_iter. min_radius : m, the smallest grain radius of the sample
     (LMGC90's convergence scale; default the smallest shape of ``tables``).
     clip_eps : m, the Clipper2 precision (1e-8 of LMGC90's length unit: the
