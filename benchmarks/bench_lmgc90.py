@@ -2,8 +2,8 @@
 
     python benchmarks/bench_lmgc90.py DUMP.h5 SNAPSHOT
 
-The classifier's cost per contact of ``lmgc90``, ``lmgc90-planplan`` and
-``commonplane`` on that snapshot of the dump (an index; negative from the
+The classifier's cost per contact of ``lmgc90``, ``lmgc90-planplan``,
+``lmgc90-2009`` and ``commonplane`` on that snapshot of the dump (an index; negative from the
 end), in one run, as the median of 3 repetitions each, and their ratios.
 (Their agreement with LMGC90's compiled code is ``postproc
 lmgc90-agreement``.)
@@ -25,7 +25,7 @@ def speed(dump, which):
         shapes = r.shapes()
         snap = r.read(int(which) % len(r))
     cost = {}
-    for m in ("commonplane", "lmgc90", "lmgc90-planplan"):
+    for m in ("commonplane", "lmgc90", "lmgc90-planplan", "lmgc90-2009"):
         c = Classifier(shapes, m)
         c.classify(snap, variants=False)                   # tables built once, as in an analysis
         ts = []
@@ -36,7 +36,7 @@ def speed(dump, which):
         n = int(cl.poly.sum())
         cost[m] = float(np.median(ts)) / n
         print(f"{m:16s} {n} contacts: {cost[m] * 1e3:.2f} ms a contact (median of 3)")
-    for m in ("lmgc90", "lmgc90-planplan"):
+    for m in ("lmgc90", "lmgc90-planplan", "lmgc90-2009"):
         print(f"ratio {m} / commonplane: {cost[m] / cost['commonplane']:.2f}")
 
 

@@ -1,6 +1,6 @@
 """Contact classes of a snapshot under one chosen criterion.
 
-Six criteria, one interface (:class:`Classifier`):
+Seven criteria, one interface (:class:`Classifier`):
 
 * ``"points"`` (the default): our count of contact points from the
   overlap (:mod:`postproc.contactpoints`): the vertices of each side within the
@@ -35,7 +35,10 @@ Six criteria, one interface (:class:`Classifier`):
   with the alert distance as ``--tolerance`` in units of the smallest grain
   radius (default 0.1, what LMGC90's granular examples set);
   ``"lmgc90-planplan"``: the same detection with LMGC90's older point stage
-  (planplan: 3 or 4 points, or none).
+  (planplan: 3 or 4 points, or none); ``"lmgc90-2009"``: planplan with the
+  length-tolerant intersection it used before Clipper2
+  (:func:`postproc.commonplane.tolerant_intersection`: a point or a segment
+  gives 1 or 2 points too), presumably the paper's route.
 
 :meth:`Classifier.classify` returns the class of every contact of a
 snapshot ("VV".."FF", "sphere", "wall") at the chosen parameter and, for
@@ -127,7 +130,7 @@ class Classifier:
     of the "points" method (delta = alpha V/area; default
     :data:`postproc.contactpoints.DEFAULT_ALPHA`), tau of the
     "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`),
-    or the alert distance of the "lmgc90" and "lmgc90-planplan" methods in
+    or the alert distance of the LMGC90 methods ("lmgc90", "lmgc90-planplan", "lmgc90-2009") in
     units of the smallest grain radius (of the shapes; default
     :data:`postproc.commonplane.DEFAULT_ALERT`).
     reference : how the "commonplane" method measures ref, the length its
@@ -149,8 +152,8 @@ class Classifier:
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
         self.reference = cpl.check_reference(reference)
-        default = {"commonplane": cpl.DEFAULT_NEIGHBOR, "lmgc90": cpl.DEFAULT_ALERT,
-                   "lmgc90-planplan": cpl.DEFAULT_ALERT}.get(method, cpm.DEFAULT_ALPHA)
+        default = {"commonplane": cpl.DEFAULT_NEIGHBOR,
+                   **{m: cpl.DEFAULT_ALERT for m in cpl.LMGC90_ROUTES}}.get(method, cpm.DEFAULT_ALPHA)
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
@@ -165,7 +168,7 @@ class Classifier:
         """The criterion's parameter: alpha, t (units of d), theta (deg), tau,
         or the alert distance (units of the smallest grain radius)."""
         return {"points": self.tolerance, "footprint": self.threshold, "commonplane": self.tolerance,
-                "lmgc90": self.tolerance, "lmgc90-planplan": self.tolerance}.get(self.method, self.theta_deg)
+                **{m: self.tolerance for m in cpl.LMGC90_ROUTES}}.get(self.method, self.theta_deg)
 
     @property
     def lmgc90_tables(self):

@@ -44,16 +44,17 @@ def main(argv=None):
                                     "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
     an.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
-                                        "lmgc90-planplan"), default="points",
+                                        "lmgc90-planplan", "lmgc90-2009"), default="points",
                     help="contact-type criterion (polyhedra): a count of contact points from the "
                          "overlap (default), the overlap's footprint, the angular one, our common-plane "
                          "band count, or LMGC90's own count (its CpCundall detection with today's point "
-                         "stage, lmgc90, or the older planplan stage, lmgc90-planplan)")
+                         "stage, lmgc90, or the older planplan stage, lmgc90-planplan, or planplan with "
+                         "the length-tolerant intersection it used before Clipper2, lmgc90-2009)")
     an.add_argument("--tolerance", type=float, default=None,
                     help="points criterion: alpha, the distance tolerance in units of the overlap's "
-                         "mean thickness V/area (default 0.1); lmgc90, lmgc90-planplan: the alert distance in "
-                         "units of the smallest grain radius (default 0.1); commonplane: tau, the band in units of "
-                         "the centre-to-extreme-vertex distance (default 0.1)")
+                         "mean thickness V/area (default 0.1); lmgc90, lmgc90-planplan, lmgc90-2009: the alert "
+                         "distance in units of the smallest grain radius (default 0.1); commonplane: tau, the band in "
+                         "units of the centre-to-extreme-vertex distance (default 0.1)")
     an.add_argument("--threshold", type=float, default=None,
                     help="footprint threshold in units of the pair size d (default 0.1)")
     an.add_argument("--theta", type=float, default=None,
@@ -166,7 +167,7 @@ def main(argv=None):
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
     vt.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
-                                        "lmgc90-planplan"), default="points",
+                                        "lmgc90-planplan", "lmgc90-2009"), default="points",
                     help="contact-type criterion (default points)")
     vt.add_argument("--tolerance", type=float, default=None, help="points tolerance alpha (units of V/area), commonplane tau, or the lmgc90 "
                          "alert distance (units of the smallest grain radius)")

@@ -135,11 +135,12 @@ class AnalysisOptions:
     types : contact-type criterion of polyhedra: "points" (our count of
         contact points from the overlap), "footprint", "angular",
         "commonplane" (our common-plane band count), "lmgc90" (LMGC90's own
-        count: its CpCundall detection and today's default point stage) or
-        "lmgc90-planplan" (the same with LMGC90's older planplan stage).
+        count: its CpCundall detection and today's default point stage),
+        "lmgc90-planplan" (the same with LMGC90's older planplan stage) or
+        "lmgc90-2009" (planplan with its older length-tolerant intersection).
     tolerance : alpha of "points", in units of the overlap's mean thickness;
         tau of "commonplane", in units of the centre-to-extreme-vertex
-        distance; the alert distance of "lmgc90" and "lmgc90-planplan", in
+        distance; the alert distance of "lmgc90", "lmgc90-planplan" and "lmgc90-2009", in
         units of the smallest grain radius (default 0.1).
     threshold : "footprint" threshold, in units of the pair size d.
     theta_deg : "angular" tolerance, degrees.

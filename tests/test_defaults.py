@@ -149,7 +149,7 @@ def test_the_criteria_and_their_options():
     from postproc.classify import DEFAULT_METHOD, METHODS
 
     assert DEFAULT_METHOD == "points"
-    words = {2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six"}
+    words = {2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six", 7: "Seven"}
     assert text("postproc/classify.py").split("\n")[2].startswith(f"{words[len(METHODS)]} criteria")
     assert f"[--types {'|'.join(METHODS)}]" in text("docs/postproc.md")
     for m in METHODS:

@@ -54,7 +54,8 @@ NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each cr
 STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
 LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
 CRITERION = {"points": "our contact-point count", "commonplane": "the earlier band count on a common plane",
-             "lmgc90": "LMGC90's own count"}
+             "lmgc90": "LMGC90's own count", "lmgc90-planplan": "LMGC90's own count, its planplan stage",
+             "lmgc90-2009": "LMGC90's own count, planplan with its 2009 intersection"}
 
 
 def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):

@@ -274,8 +274,9 @@ def _criterion_text(df, tag=""):
         return f"contact-point count, tolerance {factor * df['ct_threshold'].iloc[0]:g} V/area"
     if method == "commonplane":
         return f"the earlier band count on a common plane, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
-    if method in ("lmgc90", "lmgc90-planplan"):
-        stage = "today's point stage" if method == "lmgc90" else "its older planplan point stage"
+    if method in ("lmgc90", "lmgc90-planplan", "lmgc90-2009"):
+        stage = {"lmgc90": "today's point stage", "lmgc90-planplan": "its older planplan point stage",
+                 "lmgc90-2009": "planplan with its older length-tolerant intersection"}[method]
         return (f"LMGC90's own count ({stage}), alert distance {factor * df['ct_threshold'].iloc[0]:g} x the "
                 f"smallest grain radius")
     if "ct_theta_deg" in df:
