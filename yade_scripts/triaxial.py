@@ -108,7 +108,7 @@ from shapes import sizes  # noqa: E402
 from shapes.library import ShapeLibrary  # noqa: E402
 from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
 from yade_scripts import sample as sampling  # noqa: E402
-from yade_scripts.attempt import Attempt, Progress  # noqa: E402
+from yade_scripts.attempt import Attempt, Progress, leave  # noqa: E402
 from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
 from yade_scripts.runlock import RunBusy  # noqa: E402
 from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
@@ -592,16 +592,16 @@ log_file.close()
 if outcome == "terminated":
     say(f"stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} snapshot(s) are kept: "
         f"run again in this folder to resume (exit {EXIT_TERM})")
-    sys.exit(EXIT_TERM)
+    leave(EXIT_TERM)
 try:                              # packing checks every snapshot against what was recorded when it was written
     if run.failed:
         writer.close(pack=True, complete=False)
         run.finish()              # a blow-up replays identically from a checkpoint: nothing to resume
-        sys.exit(EXIT_FAILED)
+        leave(EXIT_FAILED)
     writer.close(pack=True)
 except DumpFormatError as exc:    # the parts do not add up (a second writer?): kept as they are, never complete
     say(f"the dump cannot be closed: {exc}")
-    sys.exit(EXIT_FAILED)
+    leave(EXIT_FAILED)
 run.finish()
 history = run.history()
 info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"],
@@ -617,3 +617,4 @@ if KERNEL:   # the kernel's own split and exact touching contact-steps
 with open(run.files.info, "w") as fh:
     json.dump(info, fh, indent=1)
 say(f"done in {run.wall_seconds() - run.earlier_wall_seconds:.0f} s, {O.iter} steps; dump {out}")
+leave(0)                          # all written: out without YADE's static destructors (attempt.leave)

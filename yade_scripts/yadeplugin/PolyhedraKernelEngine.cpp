@@ -213,14 +213,16 @@ public:
 	// clang-format on
 };
 // Registered with YADE's class factory (so that YADE's Python knows the
-// class), but not with Boost.Serialization as REGISTER_SERIALIZABLE and
-// YADE_PLUGIN would: a second copy of the serialization registry's entries
-// for Serializable, Engine and GlobalEngine, made in this library, was
-// freed twice at exit by any process that had saved or loaded a scene
-// ("double free or corruption", exit -6, after the run had ended well). The
+// class), not with Boost.Serialization as REGISTER_SERIALIZABLE and
+// YADE_PLUGIN would: with that registration every process that had saved or
+// loaded a scene with this library loaded aborted at exit ("double free or
+// corruption", exit -6), whether the plugin stepped or not; without it such a
+// process exits cleanly when the plugin did not step, and one whose plugin
+// stepped still sometimes aborts there, which the scene avoids by ending
+// with yade_scripts/attempt.py's leave (os._exit once all is written). The
 // engine is never saved: a checkpoint swaps in its PyRunner form first
-// (KernelContacts.portable, yade_scripts/kernel_contacts.py), and O.save of a scene that holds it
-// raises "unregistered class".
+// (KernelContacts.portable, yade_scripts/kernel_contacts.py), and O.save of a
+// scene that holds it raises "unregistered class".
 REGISTER_FACTORABLE(PolyhedraKernelEngine);
 
 } // namespace yade
