@@ -210,6 +210,17 @@ def test_report_figures_and_claims_are_produced(study, capsys):
     assert (claims["basis"] == "seeds").all()
     comp = pd.read_csv(rep / "comparison.csv")
     assert comp["ours"].map(math.isfinite).all() and (comp["interval"] == "seeds").all()
+    # make compare on this tiny study: against results written from itself, the same; against
+    # the committed default study's, it says what differs (the tiny preset is not the default)
+    from postproc.cli import main as postproc_main
+
+    capsys.readouterr()
+    assert postproc_main(["results", str(out), "--out", str(out / "own.json")]) == 0
+    assert postproc_main(["compare-results", str(out), "--reference", str(out / "own.json")]) == 0
+    assert capsys.readouterr().out.startswith("same as the README")
+    assert postproc_main(["compare-results", str(out)]) == 1
+    said = capsys.readouterr().out.splitlines()
+    assert "  preset: tiny (committed: default)" in said and "another machine" in said[-1]
     # the verdicts are the rules applied to the analyses the manifest lists
     from postproc.study.claims import NEGLIGIBLE, evaluate
     from postproc.study.report import run_summaries, discover
