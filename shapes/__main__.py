@@ -52,6 +52,11 @@ def _parser():
     b.add_argument("--report", help="folder for the report (default: next to the library)")
     b.add_argument("--like", metavar="TARGET.h5",
                    help="draw grains whose elongation, flatness and vertex counts follow this library's")
+    b.add_argument("--max-draws", type=int, default=None, metavar="N",
+                   help="with --like: generator draws allowed per grain before the build stops "
+                        "(default 2000)")
+    b.add_argument("--max-seconds", type=float, default=3600.0, metavar="S",
+                   help="with --like: wall-clock seconds allowed for all the grains (default 3600)")
     b.add_argument("--name", help="the library's name (default: the file's stem)")
     i = sub.add_parser("import", help="grains from mesh files (STL, OBJ, PLY, OFF)")
     i.add_argument("paths", nargs="+", metavar="MESH_OR_FOLDER")
@@ -107,15 +112,26 @@ def _build(args):
     recipe = Recipe()
     if args.like:
         from .descriptors import library_descriptors
-        from .match import generate_like
+        from .match import MATCHED, MAX_DRAWS, generate_like
         from .polyhedron import ShapeError
+
+        draws = MAX_DRAWS if args.max_draws is None else args.max_draws
+        if draws < 1 or not args.max_seconds > 0:
+            return _err("--max-draws must be at least 1 and --max-seconds above 0")
+
+        def progress(k, n, s):
+            print(f"shapes: --like: {k} of {n} grains in {s:.0f} s", file=sys.stderr)
 
         try:
             target = ShapeLibrary(args.like)
-            shapes, rejections = generate_like(library_descriptors(target), args.n, args.seed, recipe)
+            names = [os.path.basename(x.decode() if isinstance(x, bytes) else str(x))
+                     for x in target.source] if getattr(target, "source", None) is not None else None
+            shapes, rejections = generate_like(library_descriptors(target), args.n, args.seed, recipe,
+                                               max_draws=draws, max_seconds=args.max_seconds,
+                                               progress=progress, names=names)
         except (LibraryError, ShapeError) as exc:
             return _err(str(exc))
-        spec = {**recipe.as_dict(), "like": args.like, "matched": ["elongation", "flatness", "n_vertices"],
+        spec = {**recipe.as_dict(), "like": args.like, "matched": list(MATCHED), "max_draws": draws,
                 "method": "smoothed bootstrap of the target, generated grains stretched along their "
                           "principal axes (shapes/match.py)"}
         created = f"python -m shapes build --like {os.path.basename(args.like)}"
@@ -129,10 +145,15 @@ def _build(args):
     msg = (f"shapes: {args.n} shapes -> {args.out} in {seconds:.1f} s; mean vertices "
            f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}")
     if args.like:
-        cmp = write_comparison(target, lib, report, "target", lib.name)
-        ks = ", ".join(f"{k} {cmp[k]['ks_D']:.3f}" for k in ("elongation", "flatness", "n_vertices"))
+        from .report import LABELS
+
+        cmp = write_comparison(target, lib, report, "target", lib.name, matched=MATCHED)
+        ks = ", ".join(f"{k} {cmp[k]['ks_D']:.3f}" for k in MATCHED)
+        differ = [k for k in cmp if k not in MATCHED and cmp[k]["ks_D"] > cmp[k]["ks_D_crit95"]]
         msg += (f"\nshapes: match to {args.like} ({len(target)} grains), KS D: {ks} (95 % critical value "
-                f"{cmp['elongation']['ks_D_crit95']:.3f}); {report}/compare.md")
+                f"{cmp['elongation']['ks_D_crit95']:.3f}); not matched, and differing from the target: "
+                + (", ".join(f"{LABELS[k]} {cmp[k]['ks_D']:.3f}" for k in differ) or "none")
+                + f"; {report}/compare.md")
     print(msg, file=sys.stderr)
     return 0
 

@@ -26,11 +26,24 @@ resampled and each draw is realised by the generator of
    grain is checked again (:func:`shapes.polyhedron.check_polyhedron`) and
    redrawn (same V) when the stretch made it invalid;
 3. the generator's near-sphere rejection (S/L > 0.8) is off: the target
-   decides.
+   decides;
+4. each grain has a budget of ``max_draws`` generator draws (2000 by
+   default), and the whole build an optional time limit: a grain that
+   cannot be made within them stops the build with one line naming it,
+   the target grain it was drawn from and the rejections, rather than
+   drawing on (a very flat target grain with many vertices can be out of
+   the generator's reach: its nearly flat edges are rejected).
 
-The match is measured, not assumed: :func:`shapes.descriptors.compare`
-gives the two-sample Kolmogorov-Smirnov statistic of each descriptor with
-its 95 % critical value, and the quantile differences.
+Only elongation, flatness and the vertex count are matched (``MATCHED``).
+The other descriptors (faces, sphericity, angularity, sharpest edge) are
+the generator's for those proportions and counts, and need not follow the
+target's: the generated grains' faces are all triangles (F = 2V - 4),
+where a reduced scan has coplanar triangles merged, and their edges are
+the generator's. The match is measured, not assumed:
+:func:`shapes.descriptors.compare` gives the two-sample
+Kolmogorov-Smirnov statistic of each descriptor with its 95 % critical
+value, and the quantile differences; ``build --like`` prints the
+descriptors that differ.
 """
 from __future__ import annotations
 
@@ -41,6 +54,9 @@ import numpy as np
 
 from .generate import Recipe, generate_shape
 from .polyhedron import ShapeError, check_polyhedron, normalise
+
+#: the descriptors ``build --like`` matches (shapes.descriptors names); the others are not matched
+MATCHED = ("elongation", "flatness", "n_vertices")
 
 
 def smoothed_bootstrap(x, idx, rng):
@@ -89,7 +105,12 @@ def smoothed_bootstrap(x, idx, rng):
     return m + (x[idx] - m + h * eps) / np.sqrt(1 + h * h / (s * s))
 
 
-def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
+#: generator draws allowed per grain of ``build --like`` (module docstring, step 4)
+MAX_DRAWS = 2000
+
+
+def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_seconds=None, progress=None,
+                  names=None):
     """``n`` generated grains whose elongation, flatness and vertex count
     follow those of a target table (module docstring; what ``python -m
     shapes build --like`` runs).
@@ -106,12 +127,22 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
         Seed of ``numpy.random.default_rng``: the same seed, target and
         recipe give the same grains.
     recipe : shapes.generate.Recipe
-        The generator's other parameters (jitter, spacing, tries); its
-        vertex range, proportions and near-sphere limit are replaced per
-        grain.
-    max_tries : int
-        Attempts per grain (a stretched grain that fails the checks is
-        redrawn) before ShapeError.
+        The generator's other parameters (jitter, spacing, repair steps);
+        its vertex range, proportions, near-sphere limit and tries are
+        replaced per grain.
+    max_draws : int
+        Generator draws allowed per grain (each a grain drawn, repaired
+        and stretched, or rejected; default ``MAX_DRAWS``, 2000) before
+        ShapeError.
+    max_seconds : float, optional
+        s, wall clock allowed for all the grains before ShapeError
+        (default: no limit).
+    progress : callable, optional
+        ``progress(k, n, seconds)`` is called after grain k (1-based) every
+        ``max(1, n // 20)`` grains and after the last.
+    names : sequence of str, optional
+        The target grains' names (e.g. their source files), quoted in the
+        refusal.
 
     Returns
     -------
@@ -123,6 +154,14 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
         Redrawn attempts by reason (the generator's, and ``"stretched:
         ..."`` for a stretched grain that failed the checks).
 
+    Raises
+    ------
+    ShapeError
+        In one line, when a grain cannot be made within ``max_draws`` draws
+        or the time is up: which grain, the target grain it was drawn
+        from, its vertex count, elongation and flatness, the draws and
+        seconds spent and the rejections by reason.
+
     Examples
     --------
     >>> target = {"elongation": [0.5, 0.55, 0.6], "flatness": [0.4, 0.45, 0.5], "n_vertices": [10, 12, 14]}
@@ -132,7 +171,18 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
     >>> e = [g.dims[1] / g.dims[0] for g in grains]
     >>> bool(0.45 < min(e) and max(e) < 0.65)   # near the target's 0.5-0.6
     True
+
+    A target the generator cannot reach in the draws allowed:
+
+    >>> flat = {"elongation": [0.9], "flatness": [0.05], "n_vertices": [37]}
+    >>> generate_like(flat, 2, max_draws=3, names=["slab.stl"])
+    Traceback (most recent call last):
+    ...
+    shapes.polyhedron.ShapeError: grain 1 of 2: no valid grain with 37 vertices, elongation 0.900 and flatness 0.050 (drawn from target grain 0, slab.stl: 0.900, 0.050) in 3 draws ...
     """
+    import time
+
+    t0 = time.perf_counter()
     rng = np.random.default_rng(seed)
     e_t = np.asarray(target["elongation"], float)
     f_t = np.asarray(target["flatness"], float)
@@ -142,20 +192,41 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_tries=200):
     f_star = np.clip(smoothed_bootstrap(f_t, idx, rng), 0.05, 1.0)
     events = Counter()
     shapes = []
+    every = max(1, n // 20)
     for k in range(n):
         V = int(max(4, v_t[idx[k]]))
         r = dataclasses.replace(recipe, v_min=V, v_max=V, elongation=(e_star[k],) * 2,
-                                flatness=(f_star[k],) * 2, max_s_over_l=1.0)
-        for _ in range(max_tries):
+                                flatness=(f_star[k],) * 2, max_s_over_l=1.0, max_tries=1)
+        mine = Counter()
+        poly, late = None, False
+        for draw in range(max_draws):
+            if max_seconds is not None and time.perf_counter() - t0 > max_seconds:
+                late = True
+                break
             try:
-                poly = stretch_to(generate_shape(rng, r, events), e_star[k], f_star[k])
+                grain = generate_shape(rng, r, mine)
+            except ShapeError:
+                continue                            # counted in mine by the generator
+            try:
+                poly = stretch_to(grain, e_star[k], f_star[k])
                 break
             except ShapeError as exc:
-                events[f"stretched: {str(exc).split(':')[0]}"] += 1
-        else:
-            raise ShapeError(f"no valid grain with {V} vertices, elongation {e_star[k]:.3f} and "
-                             f"flatness {f_star[k]:.3f} in {max_tries} draws: {dict(events)}")
+                mine[f"stretched: {str(exc).split(':')[0]}"] += 1
+        events.update(mine)
+        if poly is None:
+            i = int(idx[k])
+            who = f"target grain {i}" + (f", {names[i]}" if names is not None else "")
+            spent = f"{sum(mine.values())} draws, {time.perf_counter() - t0:.0f} s in all"
+            reasons = ", ".join(f"{why} {c}" for why, c in mine.most_common(4)) or "none"
+            raise ShapeError(
+                f"grain {k + 1} of {n}: no valid grain with {V} vertices, elongation {e_star[k]:.3f} and "
+                f"flatness {f_star[k]:.3f} (drawn from {who}: {e_t[i]:.3f}, {f_t[i]:.3f}) in "
+                + (f"the time allowed ({max_seconds:g} s; {spent})" if late else f"{max_draws} draws ({spent})")
+                + f"; rejected: {reasons}; the generator cannot make that grain: remove it from the target, "
+                "or allow more draws or time")
         shapes.append(poly)
+        if progress is not None and ((k + 1) % every == 0 or k + 1 == n):
+            progress(k + 1, n, time.perf_counter() - t0)
     return shapes, events
 
 

@@ -352,7 +352,7 @@ def plot_descriptors(libs, path):
     plt.close(fig)
 
 
-def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
+def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None, matched=None):
     """Two libraries side by side in a folder (what ``python -m shapes
     report --against`` and ``build --like`` write).
 
@@ -370,6 +370,10 @@ def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
     label_a, label_b : str, optional
         Their labels (default: their names; equal labels get " (a)" and
         " (b)" added).
+    matched : sequence of str, optional
+        The descriptors b was made to match a's (``build --like``):
+        compare.md then says which are matched and which are not, with
+        each one's KS D against its critical value.
 
     Returns
     -------
@@ -404,6 +408,17 @@ def write_comparison(lib_a, lib_b, outdir, label_a=None, label_b=None):
              f"* {lb}: `{lib_b.path}`, {len(lib_b)} grains, made by `{lib_b.attrs.get('created_by')}`", "",
              "KS D: two-sample Kolmogorov–Smirnov statistic of each descriptor; the two libraries' "
              "distributions differ at the 5 % level when D exceeds its critical value.", ""]
+    if matched is not None:
+        def ks(k):
+            s = stats[k]
+            return (f"{LABELS[k]} D = {s['ks_D']:.3f} (p = {s['ks_p']:.2g}, "
+                    f"{'differs' if s['ks_D'] > s['ks_D_crit95'] else 'alike'})")
+        crit = stats[matched[0]]["ks_D_crit95"]
+        rest = [k for k in stats if k not in matched]
+        lines += [f"Matched by construction ({lb} draws these from {la}): "
+                  + "; ".join(ks(k) for k in matched) + f". 95 % critical value {crit:.3f}.", "",
+                  "Not matched (the generator's for those proportions and counts; they need not follow): "
+                  + "; ".join(ks(k) for k in rest) + ".", ""]
     lines += descriptor_table({la: da, lb: db}, stats)
     lines += ["", f"Quantile differences ({lb} − {la}):", "",
               "| descriptor | p10 | p50 | p90 | KS p-value |", "|---|---|---|---|---|"]

@@ -175,6 +175,8 @@ def test_build_like_matches_the_target_and_the_default_does_not(tmp_path, defaul
     assert main(["build", "--like", str(target.path), "--n", "150", "--seed", "2", "--out", str(out)]) == 0
     err = capsys.readouterr().err
     assert "KS D" in err
+    # progress on stderr, every n // 20 grains and at the end
+    assert "shapes: --like: 7 of 150 grains in" in err and "shapes: --like: 150 of 150 grains in" in err
     like = ShapeLibrary(str(out))
     stats = json.loads((tmp_path / "like-report" / "compare.json").read_text())["stats"]
     default = library_descriptors(ShapeLibrary(str(default_library)))
@@ -188,10 +190,59 @@ def test_build_like_matches_the_target_and_the_default_does_not(tmp_path, defaul
     assert json.loads(like.attrs["recipe"])["like"] == str(target.path)
     md = (tmp_path / "like-report" / "compare.md").read_text()
     assert "target" in md and "KS D" in md and is_png(tmp_path / "like-report" / "compare.png")
+    # compare.md says which descriptors are matched and which are not, each with its measured D;
+    # the summary names the unmatched ones that differ
+    matched = next(x for x in md.splitlines() if x.startswith("Matched by construction"))
+    rest = next(x for x in md.splitlines() if x.startswith("Not matched"))
+    for k, label in (("elongation", "elongation I/L"), ("flatness", "flatness S/I"), ("n_vertices", "vertices")):
+        assert f"{label} D = {stats[k]['ks_D']:.3f}" in matched
+    for k, label in (("sphericity", "Wadell sphericity"), ("n_faces", "faces"),
+                     ("sharpest_edge_deg", "sharpest edge (deg)")):
+        assert f"{label} D = {stats[k]['ks_D']:.3f}" in rest and label not in matched
+        differs = stats[k]["ks_D"] > stats[k]["ks_D_crit95"]
+        assert (f"{label} {stats[k]['ks_D']:.3f}" in err.split("not matched")[1]) == differs
     # compare.png: the target's and the new library's descriptors overlaid, as labelled
     check_descriptor_figure(saved.at(tmp_path / "like-report" / "compare.png"),
                             {"target": (target, library_descriptors(target)),
                              like.name: (like, library_descriptors(like))})
+
+
+def flat_disc(n_side=16, thickness=0.05):
+    """A regular n-gon prism, thickness x its diameter: flatness S/I =
+    thickness, elongation 1, 2 n vertices."""
+    a = 2 * np.pi * np.arange(n_side) / n_side
+    ring = np.stack([np.cos(a), np.sin(a), np.zeros(n_side)], axis=1) / 2
+    v, t = hull(np.vstack([ring, ring + [0, 0, thickness]]))
+    return P.normalise(v, t)
+
+
+def test_build_like_refuses_an_unreachable_target_in_one_line_and_in_bounded_time(tmp_path, capsys):
+    """A target of one very flat grain with 32 vertices (once: hours of
+    redraws at grain 852 of 1000): the build stops within its draws, or its
+    time, in one line naming the grain, the target grain and the
+    rejections."""
+    import time
+
+    disc = flat_disc()
+    e, f = disc.dims[1] / disc.dims[0], disc.dims[2] / disc.dims[1]
+    assert disc.n_vertices == 32 and 0.98 < e <= 1 and 0.05 <= f < 0.052
+    write_library(str(tmp_path / "flat.h5"), [disc], -1, {}, TOL, name="flat", extra={"source": ["slab.stl"]})
+    t0 = time.perf_counter()
+    rc = main(["build", "--like", str(tmp_path / "flat.h5"), "--n", "3", "--max-draws", "30",
+               "--out", str(tmp_path / "like.h5")])
+    err = capsys.readouterr().err
+    assert rc == 2 and time.perf_counter() - t0 < 60 and not (tmp_path / "like.h5").exists()
+    lines = [x for x in err.strip().splitlines()]
+    assert len(lines) == 1 and "Traceback" not in err, err
+    assert lines[0].startswith(f"shapes: error: grain 1 of 3: no valid grain with 32 vertices, elongation {e:.3f} "
+                               f"and flatness {f:.3f} (drawn from target grain 0, slab.stl: {e:.3f}, {f:.3f}) "
+                               "in 30 draws")
+    assert "rejected: " in lines[0]
+    # the time limit stops it too
+    rc = main(["build", "--like", str(tmp_path / "flat.h5"), "--n", "3", "--max-draws", "100000",
+               "--max-seconds", "2", "--out", str(tmp_path / "like.h5")])
+    err = capsys.readouterr().err
+    assert rc == 2 and "in the time allowed (2 s;" in err and len(err.strip().splitlines()) == 1
 
 
 @pytest.fixture(scope="module")
