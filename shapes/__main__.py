@@ -2,7 +2,8 @@
 
 ::
 
-    python -m shapes build --n 1000 --seed 0 --out LIB.h5 [--report DIR] [--like TARGET.h5]
+    python -m shapes build --n 1000 --seed 0 --out LIB.h5 [--report DIR]
+                    [--like TARGET.h5 [--max-draws N] [--max-seconds S]]
     python -m shapes import MESH_OR_FOLDER... --out LIB.h5 [--report DIR]
                      [--vertices N | --max-error E] [--max-vertices M] [--components] [--name NAME]
     python -m shapes report LIB.h5 --report DIR [--against OTHER.h5]
@@ -197,22 +198,35 @@ def _import(args):
     from .library import ShapeLibrary
 
     report = args.report or args.out.rsplit(".", 1)[0] + "-report"
-    missed = sum(not g.target_met for g in grains)
     nv = np.array([g.polyhedron.n_vertices for g in grains])
     err = extra["reduction_hausdorff"]
+    dvol = extra["reduction_volume_change"]
+    missed = [(g.source, g.polyhedron.n_vertices, g.reduction_hausdorff, g.reduction_volume_change, g.miss)
+              for g in grains if not g.target_met]
     notes = [f"{budget_text(budget.as_dict())}; the import took {seconds:.1f} s",
-             f"reduction error (Hausdorff / d): median {np.median(err):.3g}, max {err.max():.3g}"]
+             f"reduction error (Hausdorff / d): median {np.median(err):.3g}, max {err.max():.3g}; volume "
+             f"change median {np.median(dvol):+.3g}, worst {dvol.min():+.3g}"]
+    miss_line = ""
     if missed:
-        notes.append(f"{missed} grains above the error target {budget.max_error} d: at {budget.max_vertices} "
-                     "vertices, or where every nearer choice fails the validity checks (a nearly flat edge)")
+        target = budget.max_error if budget.vertices is None else None
+        over = np.array([m[2] for m in missed])
+        at_cap = sum(m[4].startswith("at the ") for m in missed)
+        by = f"by up to {over.max() / target:.2f}x, " if target else ""
+        miss_line = (f"{len(missed)} of {len(grains)} above the error target {target} d ({by}median "
+                     f"{np.median(over):.3g} d): {at_cap} at the {budget.max_vertices}-vertex cap, "
+                     f"{len(missed) - at_cap} where every nearer choice failed the validity checks"
+                     if target is not None else
+                     f"{len(missed)} of {len(grains)} without a valid grain of {budget.vertices} vertices")
+        notes.append(miss_line + " (listed below)")
     if ignored:
         notes.append(f"{ignored} files in the folders were not meshes and were ignored")
-    write_report(ShapeLibrary(args.out), report, seconds=seconds, refused=refused, notes=notes)
+    write_report(ShapeLibrary(args.out), report, seconds=seconds, refused=refused, notes=notes,
+                 missed=missed, target=budget.max_error if budget.vertices is None else None)
     print(f"shapes: {len(grains)} grains imported -> {args.out} in {seconds:.1f} s, {len(refused)} refused"
           + (" (listed above)" if refused else "")
           + f"; vertices {nv.min()}-{nv.max()} (mean {nv.mean():.1f}), reduction error median "
-          f"{np.median(err):.3g} d, max {err.max():.3g} d"
-          + (f", {missed} above the error target (see the report)" if missed else "")
+          f"{np.median(err):.3g} d, max {err.max():.3g} d, volume change worst {dvol.min():+.3g}"
+          + (f"; {miss_line} (each in the report)" if missed else "")
           + (f"; {ignored} non-mesh file{'s' if ignored > 1 else ''} ignored" if ignored else "")
           + f"; report in {report}", file=sys.stderr)
     return 1 if refused else 0

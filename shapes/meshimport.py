@@ -19,27 +19,29 @@ ones (:mod:`shapes.polyhedron`):
    centre of mass and its size d_hull = 2 x the largest distance from that
    centre to a hull vertex; the **convexity deficit** 1 - V_mesh / V_hull
    (0 for a convex mesh).
-3. **Reduction** to a vertex budget (:func:`reduce_hull`): the hull's vertices
-   are added greedily, each time the one furthest outside the hull of those
-   already chosen (quickhull's order), starting from four extreme points,
-   until the budget is met:
+3. **Reduction** to a vertex budget (:func:`reduce_hull`): the reduced
+   grain's vertices are hull vertices, chosen along one sequence of sets,
+   the same whatever the budget. From four extreme points, a valid set
+   grows by the hull vertex furthest outside its hull (quickhull's order);
+   a set that fails the validity checks of :mod:`shapes.polyhedron` (two
+   vertices closer than 0.02 d, an edge bending by 1-3 deg, a sliver
+   triangle) is repaired by removing the vertex of the defect whose removal
+   leaves the hull nearest to the points, and banning the points within
+   ``BAN_RADIUS`` (0.005 d_hull) of it. Points within 0.02 d of a chosen
+   vertex are never chosen (they could not be vertices of a valid grain).
+   A second pass starts again and repairs only at the cap. The budget picks
+   the first valid set that meets it:
 
    * ``vertices=N``: N vertices (fewer when the hull has fewer);
-   * ``max_error=E``: the fewest vertices whose hull is within E d_hull of
-     the full hull (Hausdorff), at most ``max_vertices`` (default 37, the
-     paper's largest grain).
+   * ``max_error=E``: within E d_hull of the full hull (Hausdorff), at
+     most ``max_vertices`` (default 37, the paper's largest grain).
 
    Points within ``ZERO_ERROR`` (1e-6 d_hull) of the chosen hull count as on
-   it (a float32 STL rounds coordinates by 6e-8 d). Points within 0.02 d of a
-   chosen vertex are never chosen (they could not be vertices of a valid
-   grain). A chosen set whose hull fails the validity checks of
-   :mod:`shapes.polyhedron` (two vertices closer than 0.02 d, an edge
-   bending by 1-3 deg, a sliver triangle) is repaired by removing the vertex
-   of the defect whose removal leaves the hull nearest to the points, and
-   banning the points within ``BAN_RADIUS`` (0.005 d_hull) of it; the greedy
-   then goes on. An error target can so be missed; the error is measured
-   and reported all the same. Above ``MAX_CANDIDATES`` hull vertices the
-   greedy runs on a grid-thinned subset (:func:`thin_points`).
+   it (a float32 STL rounds coordinates by 6e-8 d). When no valid set
+   meets the budget, the valid set of least error is kept, and the grain
+   says why (``miss``): the cap, or the validity checks. A stricter target
+   so never gives a larger error. Above ``MAX_CANDIDATES`` hull vertices
+   the greedy runs on a grid-thinned subset (:func:`thin_points`).
 4. **Error of the reduction**, measured exactly: the reduced hull lies inside
    the full hull (its vertices are hull vertices), so their Hausdorff
    distance is the largest distance from a full-hull vertex to the reduced
@@ -56,8 +58,10 @@ relative quantity is scale-free.
 """
 from __future__ import annotations
 
+import io
 import os
 import time
+from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -194,6 +198,10 @@ class ImportedGrain:
     target_met : bool
         False when an error target was not met (at ``max_vertices``, or
         where the validity checks forbade the nearer choices).
+    miss : str
+        Why the target was missed, in one line ("" when it was met): the
+        vertex cap, or the validity checks, with the repairs by defect
+        (:func:`reduce_hull`'s ``details["why"]``).
     seconds : dict
         Timings of the steps, s: ``check``, ``hull``, ``reduce`` (wall
         clock) and the same with ``_cpu`` (process time); :func:`import_paths`
@@ -205,7 +213,7 @@ class ImportedGrain:
         The parameters, as given.
     mesh_volume, hull_volume, hull_vertices, d_hull, source_d
         The parameters, as given.
-    convexity_deficit, reduction_hausdorff, reduction_volume_change, target_met, seconds
+    convexity_deficit, reduction_hausdorff, reduction_volume_change, target_met, miss, seconds
         The parameters, as given.
 
     Examples
@@ -240,6 +248,7 @@ class ImportedGrain:
     reduction_hausdorff: float
     reduction_volume_change: float
     target_met: bool = True
+    miss: str = ""
     seconds: dict = field(default_factory=dict)
 
 
@@ -682,8 +691,8 @@ def _hull_of(q):
 
 def _defects(vq, tri):
     """The defects that would fail the validity checks of a chosen hull (vq
-    (m, 3), outward triangles), each as the local indices of the vertices
-    involved: two vertices closer than VERTEX_TOL d; the two triangles'
+    (m, 3), outward triangles), each as (kind, the local indices of the
+    vertices involved): two vertices closer than VERTEX_TOL d; the two triangles'
     four vertices at an edge bending by COPLANAR_DEG to CREASE_DEG; a
     sliver triangle's three. Empty when there are none."""
     from scipy.spatial.distance import pdist, squareform
@@ -693,16 +702,18 @@ def _defects(vq, tri):
     dist = squareform(pdist(vq))
     np.fill_diagonal(dist, np.inf)
     i, j = np.nonzero(np.triu(dist < VERTEX_TOL * d))
-    out += [(int(a), int(b)) for a, b in zip(i, j)]
+    out += [("close vertices", (int(a), int(b))) for a, b in zip(i, j)]
     edges, pairs, bend = bend_angles(vq, tri)
     for k in np.flatnonzero((bend >= COPLANAR_DEG) & (bend < CREASE_DEG)):
-        out.append(tuple(int(x) for x in np.unique(np.concatenate([tri[pairs[k, 0]], tri[pairs[k, 1]]]))))
+        out.append(("nearly flat edge",
+                    tuple(int(x) for x in np.unique(np.concatenate([tri[pairs[k, 0]], tri[pairs[k, 1]]])))))
     tf = geometric_faces(vq, tri)
     own = np.bincount(tf, minlength=tf.max() + 1)[tf] == 1
     _, area = triangle_normals(vq, tri)
     longest = np.max(np.stack([np.linalg.norm(vq[tri[:, a]] - vq[tri[:, (a + 1) % 3]], axis=1)
                                for a in range(3)]), axis=0)
-    out += [tuple(int(x) for x in tri[k]) for k in np.flatnonzero(own & (2 * area / longest < HEIGHT_TOL * d))]
+    out += [("sliver triangle", tuple(int(x) for x in tri[k]))
+            for k in np.flatnonzero(own & (2 * area / longest < HEIGHT_TOL * d))]
     return out
 
 
@@ -911,10 +922,13 @@ def thin_points(q, max_points=MAX_CANDIDATES):
         delta *= 1.5
 
 
-def _cheapest_removal(q, sub, chosen, involved):
+def _cheapest_removal(q, sub, chosen, involved, max_points=4000):
     """Of the chosen points at local indices ``involved``, the one (index
     into q) whose removal leaves the hull of the rest nearest to the points
-    q[sub] (Hausdorff distance)."""
+    q[sub] (Hausdorff distance; over at most ``max_points`` of them, spread
+    by :func:`thin_points`, as this only ranks the choices)."""
+    if len(sub) > max_points:
+        sub = sub[thin_points(q[sub], max_points)]
     best, arg = np.inf, chosen[involved[0]]
     for i in involved:
         rest = [k for j, k in enumerate(chosen) if j != i]
@@ -927,14 +941,31 @@ def _cheapest_removal(q, sub, chosen, involved):
     return arg
 
 
-def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
+def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None, details=None):
     """Choose the reduced grain's vertices among the full hull's vertices,
     by greedy furthest-point insertion with validity repairs (module
     docstring, step 3).
 
+    The search is one sequence of chosen sets, the same whatever the error
+    target, in two passes from four extreme points. In the first, a valid
+    set (one that passes the validity checks) grows by the point furthest
+    outside its hull, until ``budget.cap`` vertices or until every point is
+    on the hull, and a set that fails the checks is repaired at once (the
+    vertex of its first defect whose loss costs least is removed, and the
+    points within ``BAN_RADIUS`` of it are banned). The second pass starts
+    again and grows through invalid sets, repairing only when it can grow
+    no further (at the cap). Each pass has ``max_steps`` steps. The answer
+    is the first valid set of the sequence that meets the budget (the
+    error target, or the vertex count); when none does, the valid set of
+    the least error seen. So a stricter target never gives a larger error:
+    it stops later on the same sequence, or takes its best set (exact for
+    hulls of up to ``max_candidates`` vertices; above, the sets are
+    compared by their error on the thinned points).
+
     Above ``max_candidates`` points the greedy runs on a thinned subset
     (:func:`thin_points`) and the error is still measured on every point;
-    an error target is then met by adding the worst points themselves.
+    once the thinned points are all on the hull, the worst of all points is
+    added.
 
     Parameters
     ----------
@@ -947,10 +978,18 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
         largest distance from the points' mean to a point); tolerances and
         errors are relative to it.
     max_steps : int, optional
-        Greedy steps before the search stops adding (default 20 x cap +
-        100); the hull is then made valid by removals alone.
+        Steps (an addition or a repair) of each pass (default 20 x cap +
+        100).
     max_candidates : int, optional
         Default ``MAX_CANDIDATES``.
+    details : dict, optional
+        Filled with what the search did: ``steps`` (int), ``repairs`` (a
+        dict, defect kind -> count: ``close vertices``, ``nearly flat
+        edge``, ``sliver triangle``), ``valid_sets`` (valid sets seen),
+        ``reached_cap`` (whether a valid set had ``budget.cap`` vertices)
+        and ``why`` (None when the budget is met, else one line: the
+        vertex cap, or the validity checks that forbade the nearer
+        choices, with the repairs).
 
     Returns
     -------
@@ -965,7 +1004,8 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     target_met : bool
         False when an error target was not reached: at
         ``budget.max_vertices``, or because the validity repairs forbade
-        the nearer choices (always True for a vertex count).
+        the nearer choices (for a vertex count: False when no valid set of
+        that many vertices was found).
 
     Raises
     ------
@@ -985,6 +1025,13 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     >>> idx, tri, err, met = reduce_hull(ball, Budget(max_error=0.05))
     >>> len(idx), bool(err <= 0.05), met
     (35, True, True)
+
+    A target the cap cannot reach: the best set found, and why.
+
+    >>> info = {}
+    >>> idx, tri, err, met = reduce_hull(ball, Budget(max_error=0.01, max_vertices=20), details=info)
+    >>> len(idx), met, info["why"]
+    (20, False, 'at the 20-vertex cap (--max-vertices), after repairs of the validity checks (nearly flat edge 2)')
     """
     p = np.asarray(points, float)
     c = p.mean(axis=0)
@@ -992,84 +1039,139 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None):
     q = (p - c) / d                     # unit-size coordinates: tolerances are absolute
     cap = min(budget.cap, len(q))
     stop = max(budget.max_error if budget.max_error is not None else 0.0, ZERO_ERROR)
+    info = details if details is not None else {}
+    repairs = Counter()
+    info.update(steps=0, repairs=repairs, valid_sets=0, reached_cap=False, why=None)
     if len(q) <= cap and (budget.vertices is not None or stop <= ZERO_ERROR):
         # the whole hull fits the budget: it is the answer when it is a valid grain
         hq = _hull_of(q)
         if hq is not None and len(hq[0]) == len(q) and not _defects(q[hq[0]], hq[1]):
+            info["valid_sets"], info["reached_cap"] = 1, True
             return hq[0], hq[1], 0.0, True
-    sub = thin_points(q, max_candidates or MAX_CANDIDATES)
+    sub0 = thin_points(q, max_candidates or MAX_CANDIDATES)
     first = _initial_simplex(q)
     if first is None:
         raise ShapeError("all points on a line or a plane: no volume")
-    sub = np.union1d(sub, first)
-    chosen = list(first)                # indices into q
-    banned = np.zeros(len(q), bool)
-    greedy = _Greedy(q[sub])
-    pos = {int(k): i for i, k in enumerate(sub)}
+    sub0 = np.union1d(sub0, first)
+    thinned = len(sub0) < len(q)
     max_steps = max_steps or 20 * cap + 100
+    valid = []                          # (error or a lower bound, vertices, chosen, tri, exact?) of valid sets
 
-    def hull_of_chosen():
-        hq = _hull_of(q[chosen])
-        if hq is None:
-            raise ShapeError("the chosen points are coplanar: no volume")
-        return [chosen[k] for k in hq[0]], hq[1]      # qhull drops points on a face
+    def met(n, err):
+        return n == cap or err <= ZERO_ERROR if budget.vertices is not None else err <= stop
 
-    def crowded(pts):
-        """Points within VERTEX_TOL d of a chosen vertex (d as the checks
-        take it): they cannot be vertices of a valid grain."""
-        cq = q[chosen]
-        r = VERTEX_TOL * 2 * np.max(np.linalg.norm(cq - cq.mean(axis=0), axis=1))
-        near = np.zeros(len(pts), bool)
-        for x in cq:
-            near |= np.einsum("ij,ij->i", pts - x, pts - x) < r * r
-        return near
+    def walk(eager):
+        """One pass of the sequence: the first valid set that meets the
+        budget, or None (``valid`` then holds the valid sets seen)."""
+        sub = sub0
+        chosen = list(first)            # indices into q
+        banned = np.zeros(len(q), bool)
+        greedy = _Greedy(q[sub])
+        pos = {int(k): i for i, k in enumerate(sub)}
 
-    for _ in range(max_steps):
-        chosen, tri = hull_of_chosen()
-        h = greedy.update([pos[k] for k in chosen], tri)
-        live = sub[greedy.live]
-        cand = np.flatnonzero(~banned[live])
-        cand = cand[~crowded(q[live[cand]])]
-        grow = None
-        if len(chosen) < cap and len(cand) and h[cand].max() > stop:
-            grow = int(live[cand[np.argmax(h[cand])]])
-        elif len(chosen) < cap:
-            # the planes say done: the exact distances of every eligible point decide
-            idx = live if len(sub) == len(q) else np.arange(len(q))
-            idx = idx[~banned[idx]]
-            idx = idx[~crowded(q[idx])]
-            err, k = hausdorff_to_convex(q[idx], q[chosen], tri)
-            if err > stop:
-                grow = int(idx[k])
-                if grow not in pos:     # a point the thinning left out: the greedy takes it in
-                    sub = np.union1d(sub, [grow])
-                    pos = {int(x): i for i, x in enumerate(sub)}
-                    greedy = _Greedy(q[sub])
-        if grow is not None:
-            chosen.append(grow)
-            continue
-        bad = _defects(q[chosen], tri)
-        if not bad:
-            err, _ = hausdorff_to_convex(q, q[chosen], tri)
-            return np.array(chosen), tri, err, budget.vertices is not None or err <= stop
-        # repair the first defect: drop the vertex involved whose loss costs least (the error
-        # over the greedy's points), and ban the points within BAN_RADIUS of it
-        drop = _cheapest_removal(q, sub, chosen, bad[0])
-        banned |= np.linalg.norm(q - q[drop], axis=1) < BAN_RADIUS
-        chosen = [k for k in chosen if k != drop]
-        greedy.reset()                  # the hull shrank: points inside may be outside again
-        if len(chosen) < 4:
-            raise ShapeError("no valid polyhedron: repairs left fewer than 4 vertices")
-    # out of steps: remove defects without adding until the hull is valid
-    while len(chosen) >= 4:
-        chosen, tri = hull_of_chosen()
-        bad = _defects(q[chosen], tri)
-        if not bad:
-            err, _ = hausdorff_to_convex(q, q[chosen], tri)
-            return np.array(chosen), tri, err, budget.vertices is not None or err <= stop
-        drop = _cheapest_removal(q, sub, chosen, bad[0])
-        chosen = [k for k in chosen if k != drop]
-    raise ShapeError(f"no valid polyhedron within {max_steps} greedy steps")
+        def crowded(pts):
+            """Points within VERTEX_TOL d of a chosen vertex (d as the checks
+            take it): they cannot be vertices of a valid grain."""
+            from scipy.spatial import cKDTree
+
+            cq = q[chosen]
+            r = VERTEX_TOL * 2 * np.max(np.linalg.norm(cq - cq.mean(axis=0), axis=1))
+            if not len(pts):
+                return np.zeros(0, bool)
+            dist, _ = cKDTree(cq).query(pts, distance_upper_bound=r)
+            return dist < r
+
+        for _ in range(max_steps):
+            info["steps"] += 1
+            hq = _hull_of(q[chosen])
+            if hq is None:
+                raise ShapeError("the chosen points are coplanar: no volume")
+            chosen, tri = [chosen[k] for k in hq[0]], hq[1]      # qhull drops points on a face
+            h = greedy.update([pos[k] for k in chosen], tri)
+            bad = _defects(q[chosen], tri)
+            if not bad:
+                info["valid_sets"] += 1
+                info["reached_cap"] |= len(chosen) >= cap
+                lower = float(h.max()) if len(h) else 0.0       # a plane distance: at most the error
+                if met(len(chosen), lower):
+                    err, _ = hausdorff_to_convex(q[sub], q[chosen], tri)
+                    full = hausdorff_to_convex(q, q[chosen], tri)[0] if thinned and met(len(chosen), err) else err
+                    if met(len(chosen), full):
+                        return np.array(chosen), tri, float(full), True
+                    # compared later by the error on the first thinned points
+                    valid.append((lower, len(chosen), list(chosen), tri, False) if thinned else
+                                 (err, len(chosen), list(chosen), tri, True))
+                else:                   # its error is needed only if it may be the best: later
+                    valid.append((lower, len(chosen), list(chosen), tri, False))
+            grow = None
+            if len(chosen) < cap and not (eager and bad):
+                live = sub[greedy.live]
+                cand = np.flatnonzero(~banned[live])
+                cand = cand[~crowded(q[live[cand]])]
+                if len(cand) and h[cand].max() > ZERO_ERROR:
+                    grow = int(live[cand[np.argmax(h[cand])]])
+                else:
+                    # the planes say done: the exact distances of every eligible point decide
+                    idx = live if not thinned else np.arange(len(q))
+                    idx = idx[~banned[idx]]
+                    idx = idx[~crowded(q[idx])]
+                    err, k = hausdorff_to_convex(q[idx], q[chosen], tri)
+                    if err > ZERO_ERROR:
+                        grow = int(idx[k])
+                        if grow not in pos:     # a point the thinning left out: the greedy takes it in
+                            sub = np.union1d(sub, [grow])
+                            pos = {int(x): i for i, x in enumerate(sub)}
+                            greedy = _Greedy(q[sub])
+            if grow is not None:
+                chosen.append(grow)
+                continue
+            if not bad:
+                return None             # valid, and nothing left to add: the pass ends
+            # repair the first defect: drop the vertex involved whose loss costs least (the error
+            # over the greedy's points), and ban the points within BAN_RADIUS of it
+            kind, involved = bad[0]
+            repairs[kind] += 1
+            drop = _cheapest_removal(q, sub, chosen, involved)
+            banned |= np.linalg.norm(q - q[drop], axis=1) < BAN_RADIUS
+            chosen = [k for k in chosen if k != drop]
+            greedy.reset()              # the hull shrank: points inside may be outside again
+            if len(chosen) < 4:
+                return None
+        return None
+
+    for eager in (True, False):         # repairs at once, then (a second pass) only at the cap
+        found = walk(eager)
+        if found is not None:
+            return found
+    if not valid:
+        raise ShapeError(f"no valid polyhedron in {info['steps']} steps ({_kinds(repairs)})")
+    # the valid set of least error (then fewest vertices): exact errors by increasing lower bound,
+    # until the next bound exceeds the best error found (on the thinned points above max_candidates)
+    best = None
+    for bound, n, chosen, tri, exact in sorted(valid, key=lambda s: s[:2]):
+        if best is not None and bound > best[0]:
+            break
+        err = bound if exact else hausdorff_to_convex(q[sub0], q[chosen], tri)[0]
+        if best is None or (err, n) < best[:2]:
+            best = (err, n, chosen, tri)
+    err, n, chosen, tri = best
+    if thinned:
+        err, _ = hausdorff_to_convex(q, q[chosen], tri)
+    if budget.vertices is not None:
+        info["why"] = (f"no valid set of {cap} vertices in {info['steps']} steps: the validity checks "
+                       f"forbade the nearer choices ({_kinds(repairs)}); {n} vertices kept")
+    elif info["reached_cap"]:
+        info["why"] = f"at the {cap}-vertex cap (--max-vertices)" + (
+            f", after repairs of the validity checks ({_kinds(repairs)})" if repairs else "")
+    else:
+        info["why"] = (f"every nearer choice failed the validity checks ({_kinds(repairs)}; "
+                       f"{info['steps']} steps)")
+    return np.array(chosen), tri, float(err), False
+
+
+def _kinds(counter):
+    """'nearly flat edge 12, close vertices 3' from a Counter of repairs."""
+    return ", ".join(f"{k} {n}" for k, n in counter.most_common()) or "no repairs"
 
 
 # ---------------------------------------------------------------- one grain
@@ -1113,7 +1215,7 @@ def import_mesh(vertices, triangles, budget=None, source=""):
     >>> g.source, g.mesh_triangles, g.hull_vertices, g.polyhedron.n_vertices, round(g.polyhedron.size, 12)
     ('ball', 320, 162, 37, 1.0)
     >>> round(g.d_hull, 6), round(g.reduction_hausdorff, 3), g.target_met, round(g.reduction_volume_change, 3)
-    (2.0, 0.057, False, -0.138)
+    (2.0, 0.049, False, -0.137)
     """
     budget = budget or Budget()
     sec = {}
@@ -1140,7 +1242,8 @@ def import_mesh(vertices, triangles, budget=None, source=""):
     sec["hull"], sec["hull_cpu"] = time.perf_counter() - t0, time.process_time() - p0
     t0, p0 = time.perf_counter(), time.process_time()
     try:
-        idx, rt, err, met = reduce_hull(hv, budget, d=d_hull)
+        info = {}
+        idx, rt, err, met = reduce_hull(hv, budget, d=d_hull, details=info)
         rv = hv[idx]
         check_polyhedron(rv, rt)
         poly = normalise(rv - rv.mean(axis=0), rt)      # centred first: no cancellation far from the origin
@@ -1153,7 +1256,7 @@ def import_mesh(vertices, triangles, budget=None, source=""):
                          source_d=2 * float(np.max(np.linalg.norm(rv - rcom, axis=1))),
                          convexity_deficit=max(0.0, 1 - vol / hull_volume),
                          reduction_hausdorff=err, reduction_volume_change=reduced_volume / hull_volume - 1,
-                         target_met=bool(met), seconds=sec)
+                         target_met=bool(met), miss=info.get("why") or "", seconds=sec)
 
 
 def _volume_and_centre(v, t):
@@ -1253,7 +1356,7 @@ def import_paths(paths, budget=None, split=False, log=None):
     >>> open(os.path.join(folder, "notes.txt"), "w").close()
     >>> grains, refused, ignored = import_paths([folder, "missing.stl"])
     >>> [(os.path.basename(g.source), g.polyhedron.n_vertices) for g in grains], ignored
-    ([('ball.stl', 37), ('cube.obj', 8)], 1)
+    ([('ball.stl', 30), ('cube.obj', 8)], 1)
     >>> [(os.path.basename(name), reason[:18]) for name, reason in refused]
     [('broken.off', 'unreadable OFF fil'), ('missing.stl', 'no such file or fo')]
     """

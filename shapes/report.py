@@ -68,7 +68,8 @@ def library_stats(lib):
     return out
 
 
-def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused=None, notes=()):
+def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused=None, notes=(), missed=None,
+                 target=None):
     """Write a library's report into a folder (what ``python -m shapes
     build``, ``import`` and ``report`` write): ``stats.json``, ``report.md``
     (the descriptor table beside the published ranges), ``counts.png``
@@ -95,13 +96,19 @@ def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused
         report.
     notes : sequence of str
         Extra lines for the report, each written as a list item.
+    missed : list of tuple, optional
+        (source, vertices, reduction error / d, volume change, why) of
+        the imported grains above their error target, listed in a table.
+    target : float, optional
+        The import's error target (relative to d), quoted in that table.
 
     Returns
     -------
     dict
         What ``stats.json`` holds: :func:`library_stats`, and
         ``n_shapes``, ``rejections``, ``build_seconds``, ``descriptors``
-        (per descriptor min, mean, max, p10, p50, p90) and ``refused``.
+        (per descriptor min, mean, max, p10, p50, p90), ``refused`` and
+        ``missed``.
 
     Examples
     --------
@@ -128,6 +135,7 @@ def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused
     desc = library_descriptors(lib)
     st["descriptors"] = {k: _summary(x) for k, x in desc.items()}
     st["refused"] = [list(r) for r in (refused or [])]
+    st["missed"] = [list(m) for m in (missed or [])]
     with open(os.path.join(outdir, "stats.json"), "w") as fh:
         json.dump(st, fh, indent=1)
     plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, "descriptors.png"))
@@ -187,6 +195,11 @@ def write_report(lib, outdir, rejections=None, seconds=None, n_sheet=12, refused
              + (f" in {seconds:.1f} s" if seconds else ""), ""]
     lines += descriptor_table({lib.name: desc})
     lines += [f"* {x}" for x in notes]
+    if missed:
+        lines += ["", f"Above the error target{f' {target} d' if target is not None else ''} ({len(missed)}):", "",
+                  "| grain | vertices | error / d | x target | volume change | why |", "|---|---|---|---|---|---|"]
+        lines += [f"| `{s}` | {n} | {e:.3g} | {e / target:.2f} | {dv:+.3f} | {why} |" if target else
+                  f"| `{s}` | {n} | {e:.3g} | | {dv:+.3f} | {why} |" for s, n, e, dv, why in missed]
     if refused:
         lines += ["", f"Refused ({len(refused)}):", ""] + [f"* `{f}`: {r}" for f, r in refused]
     lines += ["", f"Redrawn attempts by reason: {st['rejections'] or 'none'}", "",
