@@ -5,7 +5,8 @@
     python -m shapes build --n 1000 --seed 0 --out LIB.h5 [--report DIR]
                     [--like TARGET.h5 [--max-draws N] [--max-seconds S]]
     python -m shapes import MESH_OR_FOLDER... --out LIB.h5 [--report DIR]
-                     [--vertices N | --max-error E] [--max-vertices M] [--components] [--name NAME]
+                     [--vertices N | --max-error E] [--max-vertices M] [--components]
+                     [--merge-tolerance T] [--name NAME]
     python -m shapes report LIB.h5 --report DIR [--against OTHER.h5]
 
 Exit codes: 0 done; 1 (import) some meshes refused, the library holds the
@@ -70,7 +71,10 @@ def _parser():
     i.add_argument("--max-vertices", type=int, default=DEFAULT_MAX_VERTICES,
                    help=f"at most this many vertices with --max-error (default {DEFAULT_MAX_VERTICES})")
     i.add_argument("--components", action="store_true",
-                   help="each connected piece of a file is a grain (file#k, largest first)")
+                   help="each connected piece of a file is a grain (file#k, largest first); inward-facing "
+                        "shells and slivers are refused as scan artefacts")
+    i.add_argument("--merge-tolerance", type=float, default=0.0, metavar="T",
+                   help="merge vertices closer than T, in the mesh's units (default 0: exact duplicates only)")
     i.add_argument("--name", help="the library's name (default: the file's stem)")
     r = sub.add_parser("report", help="report on an existing library, or two side by side")
     r.add_argument("library")
@@ -163,7 +167,7 @@ def _import(args):
     import numpy as np
 
     from .library import write_library
-    from .meshimport import Budget, import_paths
+    from .meshimport import Budget, import_paths, mixed_units
     from .report import budget_text, write_report
 
     try:
@@ -172,9 +176,11 @@ def _import(args):
                   if args.max_error is not None else Budget(max_vertices=args.max_vertices))
     except ValueError as exc:
         return _err(str(exc))
+    if not (args.merge_tolerance >= 0):
+        return _err(f"--merge-tolerance must be at least 0 (the mesh's units), got {args.merge_tolerance}")
     t0 = time.perf_counter()
     grains, refused, ignored = import_paths(
-        args.paths, budget, split=args.components,
+        args.paths, budget, split=args.components, merge_tolerance=args.merge_tolerance,
         log=lambda name, reason: print(f"shapes: refused {name}: {reason}", file=sys.stderr))
     seconds = time.perf_counter() - t0
     if not grains:
@@ -183,13 +189,14 @@ def _import(args):
         return 2
     extra = {"source": [g.source for g in grains],
              "source_d": np.array([g.source_d for g in grains]),
+             "source_d_hull": np.array([g.d_hull for g in grains]),
              "mesh_triangles": np.array([g.mesh_triangles for g in grains], np.int64),
              "hull_vertices": np.array([g.hull_vertices for g in grains], np.int64),
              "convexity_deficit": np.array([g.convexity_deficit for g in grains]),
              "reduction_hausdorff": np.array([g.reduction_hausdorff for g in grains]),
              "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
     spec = {"source": "meshes", "inputs": list(args.paths), "budget": budget.as_dict(),
-            "components": bool(args.components)}
+            "components": bool(args.components), "merge_tolerance": args.merge_tolerance}
     problem = _make_folder_of(args.out)
     if problem:
         return _err(problem)
@@ -218,6 +225,10 @@ def _import(args):
                      if target is not None else
                      f"{len(missed)} of {len(grains)} without a valid grain of {budget.vertices} vertices")
         notes.append(miss_line + " (listed below)")
+    units = mixed_units(extra["source_d"])
+    if units:
+        notes.append(f"warning: {units}")
+        print(f"shapes: warning: {units}", file=sys.stderr)
     if ignored:
         notes.append(f"{ignored} files in the folders were not meshes and were ignored")
     write_report(ShapeLibrary(args.out), report, seconds=seconds, refused=refused, notes=notes,

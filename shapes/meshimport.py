@@ -10,11 +10,14 @@ ones (:mod:`shapes.polyhedron`):
    ``.ply``, ``.off``), no processing; then our own checks, each refusal an
    :class:`ImportRefused` with a one-line reason: finite coordinates, at
    least 4 distinct vertices, exact duplicate vertices merged (STL stores
-   each triangle's corners apart), triangles with a repeated corner after
-   the merge dropped, one connected piece, closed (every edge in exactly two
-   triangles), manifold, consistently oriented (every directed edge once),
-   enclosed volume not zero. A wholly inside-out mesh (negative volume) is turned
-   round.
+   each triangle's corners apart; with a tolerance, near ones too),
+   triangles with a repeated corner after the merge dropped, one connected
+   piece, closed (every edge in exactly two triangles), manifold,
+   consistently oriented (every directed edge once), enclosed volume not
+   zero. A wholly inside-out mesh (negative volume) is turned round. A
+   broken surface names its cause where one is seen: float32 coordinates
+   far from the origin, or a seam of near-duplicate vertices; several
+   pieces name the scan artefacts among them (:func:`piece_artefacts`).
 2. **Hull**: the convex hull of the vertices (qhull), its volume V_hull, its
    centre of mass and its size d_hull = 2 x the largest distance from that
    centre to a hull vertex; the **convexity deficit** 1 - V_mesh / V_hull
@@ -50,7 +53,8 @@ ones (:mod:`shapes.polyhedron`):
    and the volume change V_reduced / V_hull - 1 (<= 0).
 5. **Normalised** as the generated grains are
    (:func:`shapes.polyhedron.normalise`): centre of mass, principal frame,
-   d = 1. The grain's size in the file's units (``source_d``) is kept.
+   d = 1. The reduced grain's size in the file's units (``source_d``) is
+   kept, and d_hull.
 
 Pure functions over arrays, and :func:`import_paths` for files and folders
 (what ``python -m shapes import`` runs). Units: any (the mesh's); every
@@ -81,6 +85,13 @@ DEFAULT_MAX_VERTICES = 37
 MAX_CANDIDATES = 30000
 #: a vertex removed by a repair bans the points this near it (units of d_hull)
 BAN_RADIUS = 0.005
+#: a piece of a mesh enclosing less than this fraction of the largest piece's volume is a sliver
+SLIVER_VOLUME = 1e-3
+#: vertices closer than this fraction of the median edge length are near-duplicates (a seam)
+NEAR_DUPLICATE = 0.01
+#: float32 coordinates whose step at the largest coordinate exceeds this fraction of the mesh's
+#: size have lost the precision a scan needs
+FLOAT32_STEP = 1e-5
 
 
 class ImportRefused(ValueError):
@@ -263,7 +274,9 @@ def read_mesh(path):
     path : str
         A ``.stl`` (ASCII or binary), ``.obj``, ``.ply`` or ``.off`` file
         (the extension decides, in any case). A file of several objects
-        gives one mesh, their transforms applied.
+        gives one mesh, their transforms applied. A PLY header whose
+        lines end in a bare carriage return (old Mac line ends, as some
+        CAD exports write) is read as if they were line feeds.
 
     Returns
     -------
@@ -298,8 +311,18 @@ def read_mesh(path):
     if ext not in FORMATS:
         raise ImportRefused(f"unknown format '{ext or '(no extension)'}' (reads "
                             f"{', '.join(sorted(FORMATS))})")
+    source = path
+    if FORMATS[ext] == "ply":
+        try:
+            with open(path, "rb") as fh:
+                data = fh.read()
+        except OSError as exc:
+            raise ImportRefused(f"unreadable PLY file ({exc.strerror})") from None
+        fixed = _ply_newlines(data)
+        if fixed is not data:
+            source = io.BytesIO(fixed)
     try:
-        m = trimesh.load(path, file_type=FORMATS[ext], process=False)
+        m = trimesh.load(source, file_type=FORMATS[ext], process=False)
         if isinstance(m, trimesh.Scene):          # several objects: one mesh, transforms applied
             m = m.dump(concatenate=True) if m.geometry else None
     except Exception as exc:          # any failure of a foreign parser is one line
@@ -316,6 +339,21 @@ def read_mesh(path):
     return v, t
 
 
+def _ply_newlines(data):
+    """A PLY file's bytes with a header whose lines end in a bare carriage
+    return (as some CAD programs write it) rewritten with line feeds; the
+    bytes themselves (the same object) when the header has line feeds or
+    no ``end_header``. The body (binary or ASCII) is left as it is."""
+    end = data.find(b"end_header")
+    if end < 0 or b"\r" not in data[:end] or b"\n" in data[:end]:
+        return data
+    after = end + len(b"end_header")
+    tail = data[after + 1:] if data[after:after + 1] == b"\r" else data[after:]
+    if tail[:1] == b"\n":
+        tail = tail[1:]
+    return data[:end].replace(b"\r", b"\n") + b"end_header\n" + tail
+
+
 def _mix64(x):
     """splitmix64's finaliser on a uint64 array (a bijection that spreads
     every input bit over the output)."""
@@ -326,9 +364,10 @@ def _mix64(x):
     return x ^ (x >> np.uint64(31))
 
 
-def merge_vertices(vertices, triangles):
-    """Merge vertices with exactly equal coordinates and drop triangles left
-    with a repeated corner (and vertices no triangle uses).
+def merge_vertices(vertices, triangles, tolerance=0.0):
+    """Merge vertices with exactly equal coordinates (and, with a
+    tolerance, vertices closer than it) and drop triangles left with a
+    repeated corner (and vertices no triangle uses).
 
     Parameters
     ----------
@@ -336,6 +375,12 @@ def merge_vertices(vertices, triangles):
         Vertex positions, any units (-0.0 and 0.0 count as equal).
     triangles : (T, 3) int
         Vertex indices.
+    tolerance : float
+        The mesh's units: vertices closer than this are merged too (as
+        chains: a vertex within it of one merged with a third joins both),
+        each group into its vertex of the lowest index after the exact
+        merge (``python -m shapes import --merge-tolerance``). Default 0:
+        exact duplicates only.
 
     Returns
     -------
@@ -364,6 +409,14 @@ def merge_vertices(vertices, triangles):
     >>> mv, mt = merge_vertices(corners, np.arange(len(corners)).reshape(-1, 3))
     >>> corners.shape, mv.shape, mt.shape
     ((36, 3), (8, 3), (12, 3))
+
+    A seam: one corner's copies 1e-9 apart, merged by a tolerance.
+
+    >>> corners[0] += 1e-9
+    >>> len(merge_vertices(corners, np.arange(36).reshape(-1, 3))[0])
+    9
+    >>> len(merge_vertices(corners, np.arange(36).reshape(-1, 3), tolerance=1e-6)[0])
+    8
     """
     v = np.asarray(vertices, np.float64) + 0.0               # a contiguous copy; -0.0 -> 0.0
     t = np.asarray(triangles, np.int64)
@@ -382,6 +435,19 @@ def merge_vertices(vertices, triangles):
         _, first, inv = np.unique(v, axis=0, return_index=True, return_inverse=True)
         inv = inv.ravel()
     t = inv[t]
+    if tolerance > 0 and np.isfinite(v).all():
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import connected_components
+        from scipy.spatial import cKDTree
+
+        pairs = cKDTree(v[first]).query_pairs(tolerance, output_type="ndarray")
+        if len(pairs):
+            m = len(first)
+            _, lab = connected_components(coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                                                     shape=(m, m)), directed=False)
+            rep = np.full(lab.max() + 1, m)
+            np.minimum.at(rep, lab, np.arange(m))
+            t = rep[lab][t]
     keep = (t[:, 0] != t[:, 1]) & (t[:, 1] != t[:, 2]) & (t[:, 2] != t[:, 0])
     if not keep.all():
         t = t[keep]
@@ -439,6 +505,62 @@ def components(vertices, triangles):
         sub = t[tl == c]
         used, local = np.unique(sub, return_inverse=True)
         out.append((vertices[used], local.reshape(-1, 3)))
+    return out
+
+
+def piece_artefacts(pieces):
+    """Which connected pieces of a mesh are scan artefacts rather than
+    grains: an inward-facing shell (signed volume negative, or zero, while
+    the largest piece's is positive: e.g. the inner wall of a scan), or a
+    sliver (a volume below ``SLIVER_VOLUME`` of the largest piece's, e.g.
+    a flap of a few triangles).
+
+    Parameters
+    ----------
+    pieces : list of (vertices, triangles)
+        The pieces (:func:`components`): (V_k, 3) float and (T_k, 3) int
+        each, any units.
+
+    Returns
+    -------
+    list of str or None
+        Per piece, None for a grain, or the one-line reason it is an
+        artefact. The piece of the largest absolute volume is always a
+        grain (a wholly inside-out mesh is turned round later).
+
+    Examples
+    --------
+    A cube of side 2 (volume 8), the same cube 0.9 times smaller inside it
+    facing inwards (an inner shell), and a flap of 4 nearly flat
+    triangles:
+
+    >>> import itertools
+    >>> from shapes.polyhedron import hull
+    >>> v, t = hull(2.0 * np.array(list(itertools.product((0, 1), repeat=3)), float))
+    >>> inner = (0.1 + 0.9 * v, t[:, ::-1])
+    >>> flap_v = np.array([[5, 0, 0], [6, 0, 0], [5, 1, 0], [6, 1, 0.01], [5.5, 0.5, 0.001]])
+    >>> flap = (flap_v, np.array([[0, 1, 4], [1, 3, 4], [3, 2, 4], [2, 0, 4]]))
+    >>> for why in piece_artefacts([(v, t), inner, flap]):
+    ...     print(why)
+    None
+    inward-facing shell: signed volume -5.83 against +8 for the largest piece (a scan artefact, e.g. an inner wall)
+    sliver: 4 triangles enclosing 0.0004, 5e-05 of the largest piece (a scan artefact)
+    """
+    vols = np.array([mesh_volume(pv, pt) for pv, pt in pieces])
+    ref = int(np.argmax(np.abs(vols)))
+    big = vols[ref]
+    out = []
+    for k, ((pv, pt), vol) in enumerate(zip(pieces, vols)):
+        if k == ref or big == 0:
+            out.append(None)
+        elif vol * np.sign(big) < 0 and abs(vol) >= SLIVER_VOLUME * abs(big):
+            out.append(f"inward-facing shell: signed volume {vol * np.sign(big):+.3g} against "
+                       f"{abs(big):+.3g} for the largest piece (a scan artefact, e.g. an inner wall)")
+        elif abs(vol) < SLIVER_VOLUME * abs(big):
+            out.append(f"sliver: {len(pt)} triangles enclosing {abs(vol):.3g}, {abs(vol) / abs(big):.2g} of "
+                       "the largest piece (a scan artefact)")
+        else:
+            out.append(None)
     return out
 
 
@@ -534,19 +656,28 @@ def check_closed(vertices, triangles):
     cut = np.flatnonzero(und[1:] != und[:-1]) + 1
     counts = np.diff(np.concatenate([[0], cut, [len(und)]]))
     if np.any(counts == 1):
-        raise ImportRefused(f"open mesh: {int((counts == 1).sum())} boundary edges (each in one "
+        cause = _topology_cause(v, t, und[np.concatenate([[0], cut])][counts == 1], n)
+        raise ImportRefused(cause or f"open mesh: {int((counts == 1).sum())} boundary edges (each in one "
                             "triangle); a grain must be a closed surface")
     if np.any(counts > 2):
-        raise ImportRefused(f"non-manifold: {int((counts > 2).sum())} edges are shared by more "
-                            "than two triangles")
+        raise ImportRefused(_topology_cause(v, t) or f"non-manifold: {int((counts > 2).sum())} edges are "
+                            "shared by more than two triangles")
     rep = int(np.count_nonzero((key[0::2] & 1) == (key[1::2] & 1)))
     if rep:
-        raise ImportRefused(f"inconsistently oriented: {rep} edges run the same way in both their "
-                            "triangles (some triangles face inwards)")
+        raise ImportRefused(_topology_cause(v, t) or f"inconsistently oriented: {rep} edges run the same way "
+                            "in both their triangles (some triangles face inwards)")
     pieces = _count_pieces(und[0::2], n)
     if pieces > 1:
-        raise ImportRefused(f"{pieces} separate pieces in one mesh (import each as a grain with "
-                            "--components)")
+        why = piece_artefacts(components(v, t))
+        junk = Counter(w.split(":")[0] for w in why if w)
+        listed = ", ".join(f"{c} {k}{'s' if c > 1 else ''}" for k, c in junk.items())
+        if len(why) - sum(junk.values()) == 1:
+            n_junk = sum(junk.values())
+            raise ImportRefused(f"{pieces} separate pieces in one mesh: one grain and {n_junk} scan "
+                                f"artefact{'s' if n_junk > 1 else ''} ({listed}); remove "
+                                f"{'them' if n_junk > 1 else 'it'} from the mesh (keep its largest piece)")
+        raise ImportRefused(f"{pieces} separate pieces in one mesh (import each as a grain with --components"
+                            + (f", which refuses the {listed}" if junk else "") + ")")
     vol = mesh_volume(v, t)
     ext = np.ptp(v, axis=0).max()
     # |V| within the round-off of the summed triple products: no volume at all
@@ -554,6 +685,45 @@ def check_closed(vertices, triangles):
         raise ImportRefused(f"no volume: the closed surface encloses {vol:.3g} (units^3), "
                             "a flat or collapsed mesh")
     return vol
+
+
+def _topology_cause(v, t, boundary=None, n=None):
+    """The likely cause of a mesh that is open, non-manifold or
+    inconsistently oriented, as the one-line refusal, or "" when none is
+    found: float32 coordinates far from the origin (their rounding joins
+    vertices), or a seam of near-duplicate vertices (closer than
+    NEAR_DUPLICATE x the median edge length) along the boundary edges
+    (``boundary``: their keys a * n + b)."""
+    from scipy.spatial import cKDTree
+
+    big = float(np.abs(v).max())
+    size = float(np.ptp(v, axis=0).max())
+    step = float(np.spacing(np.float32(big)))
+    if size > 0 and step > FLOAT32_STEP * size and np.array_equal(v.astype(np.float32).astype(np.float64), v):
+        return (f"float32 coordinates far from the origin: up to {big:.3g} for a mesh of size {size:.3g}, where "
+                f"float32 steps are {step:.2g} ({step / size:.1g} of the size), so nearby vertices were "
+                "joined and the surface broken; export it centred at the origin, or in double precision "
+                "(OBJ, PLY)")
+    e = np.linalg.norm(v[t[:, 0]] - v[t[:, 1]], axis=1)
+    tol = NEAR_DUPLICATE * float(np.median(e))
+    if boundary is not None and len(boundary):
+        ends = np.unique(np.concatenate([boundary // n, boundary % n]))
+        dist, _ = cKDTree(v[ends]).query(v[ends], k=2)
+        near = dist[:, 1] < tol
+        if near.mean() >= 0.5:
+            worst = float(dist[near, 1].max())
+            sugg = float(f"{2 * worst:.0e}") if worst > 0 else tol
+            return (f"open mesh along a seam of near-duplicate vertices: {int(near.sum())} of the "
+                    f"{len(ends)} boundary vertices lie within {worst:.2g} of another ({worst / size:.1g} of the "
+                    f"mesh's size), unjoined; merge them with --merge-tolerance {sugg:g} (the mesh's units)")
+        return ""
+    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
+    if len(pairs):
+        worst = float(np.linalg.norm(v[pairs[:, 0]] - v[pairs[:, 1]], axis=1).max())
+        sugg = float(f"{2 * worst:.0e}") if worst > 0 else tol
+        return (f"{len(pairs)} pairs of near-duplicate vertices (within {worst:.2g}, {worst / size:.1g} of the mesh's "
+                f"size) break the surface; merge them with --merge-tolerance {sugg:g} (the mesh's units)")
+    return ""
 
 
 def _count_pieces(edge_keys, n):
@@ -1176,7 +1346,7 @@ def _kinds(counter):
 
 # ---------------------------------------------------------------- one grain
 
-def import_mesh(vertices, triangles, budget=None, source=""):
+def import_mesh(vertices, triangles, budget=None, source="", merge_tolerance=0.0):
     """One closed mesh to a library grain: checked, its hull reduced,
     measured and normalised (module docstring, steps 1-5).
 
@@ -1192,6 +1362,9 @@ def import_mesh(vertices, triangles, budget=None, source=""):
         at most 37 vertices).
     source : str
         The grain's name, kept in the result.
+    merge_tolerance : float
+        The mesh's units: vertices closer than this are merged
+        (:func:`merge_vertices`; default 0, exact duplicates only).
 
     Returns
     -------
@@ -1220,7 +1393,7 @@ def import_mesh(vertices, triangles, budget=None, source=""):
     budget = budget or Budget()
     sec = {}
     t0, p0 = time.perf_counter(), time.process_time()
-    v, t = merge_vertices(vertices, triangles)
+    v, t = merge_vertices(vertices, triangles, merge_tolerance)
     if not np.isfinite(v).all():
         raise ImportRefused(f"{int((~np.isfinite(v).all(axis=1)).sum())} vertices have NaN or "
                             "infinite coordinates")
@@ -1316,7 +1489,7 @@ def mesh_files(path):
     return [path], 0
 
 
-def import_paths(paths, budget=None, split=False, log=None):
+def import_paths(paths, budget=None, split=False, log=None, merge_tolerance=0.0):
     """Import every mesh named by files and folders (what ``python -m
     shapes import`` runs). Nothing raises for a bad file: it is refused and
     the others go on.
@@ -1329,10 +1502,15 @@ def import_paths(paths, budget=None, split=False, log=None):
         The reduction's budget (default ``Budget()``).
     split : bool
         Each connected piece of a file is a grain, named ``file#k`` (k = 0
-        the largest; :func:`components`). Default False: one file, one
+        the largest; :func:`components`), except the pieces that are scan
+        artefacts (:func:`piece_artefacts`: inward-facing shells and
+        slivers), refused with their reason. Default False: one file, one
         grain.
     log : callable, optional
         ``log(name, reason)`` is called at each refusal as it happens.
+    merge_tolerance : float
+        The meshes' units: vertices closer than this are merged
+        (:func:`merge_vertices`; default 0, exact duplicates only).
 
     Returns
     -------
@@ -1385,7 +1563,7 @@ def import_paths(paths, budget=None, split=False, log=None):
             load = time.perf_counter() - t0
             if split:
                 try:
-                    mv, mt = merge_vertices(v, t)
+                    mv, mt = merge_vertices(v, t, merge_tolerance)
                     if not np.isfinite(mv).all():
                         raise ImportRefused(f"{int((~np.isfinite(mv).all(axis=1)).sum())} vertices have "
                                             "NaN or infinite coordinates")
@@ -1393,15 +1571,68 @@ def import_paths(paths, budget=None, split=False, log=None):
                 except ImportRefused as exc:
                     refuse(f, str(exc))
                     continue
-                named = [(f"{f}#{k}", pv, pt) for k, (pv, pt) in enumerate(pieces)]
+                why = piece_artefacts(pieces) if len(pieces) > 1 else [None]
+                named = []
+                for k, ((pv, pt), w) in enumerate(zip(pieces, why)):
+                    if w:
+                        refuse(f"{f}#{k}", w)
+                    else:
+                        named.append((f"{f}#{k}", pv, pt))
             else:
                 named = [(f, v, t)]
             for name, pv, pt in named:
                 try:
-                    g = import_mesh(pv, pt, budget, source=name)
+                    g = import_mesh(pv, pt, budget, source=name, merge_tolerance=merge_tolerance)
                 except ImportRefused as exc:
                     refuse(name, str(exc))
                     continue
                 g.seconds["load"] = load / len(named)
                 grains.append(g)
     return grains, refused, ignored
+
+
+def mixed_units(sizes):
+    """A warning when a library's sizes in their files' units fall in
+    clusters about 10, 100 or 1000 times apart: files that mix metres,
+    centimetres and millimetres.
+
+    The sorted log10 sizes are cut where consecutive ones differ by more
+    than half a decade (a factor 3.2); the clusters' median sizes are
+    then compared, and a ratio within a factor 10^0.25 (1.8) of 10, 100
+    or 1000 is a warning.
+
+    Parameters
+    ----------
+    sizes : (n,) float
+        The grains' sizes in their files' units (``source_d``), > 0.
+
+    Returns
+    -------
+    str
+        One line naming the clusters (count, median size) and their
+        ratio, or "" when the sizes do not fall so.
+
+    Examples
+    --------
+    >>> print(mixed_units([41.0, 38.5, 45.2, 0.040, 0.043, 39.9]))
+    sizes in the files fall in clusters about 1000x apart (2 grains near 0.0415, 4 near 40.4): the files may mix units (m, cm, mm); the grains are normalised to d = 1 but source_d is in each file's units
+    >>> mixed_units([41.0, 38.5, 12.0, 70.0])
+    ''
+    """
+    s = np.log10(np.asarray(sizes, float))
+    s = np.sort(s[np.isfinite(s)])
+    if len(s) < 2:
+        return ""
+    groups = np.split(s, np.flatnonzero(np.diff(s) > 0.5) + 1)
+    if len(groups) < 2:
+        return ""
+    med = [float(np.median(g)) for g in groups]
+    apart = [med[k + 1] - med[k] for k in range(len(med) - 1)]
+    near = [a for a in apart if round(a) in (1, 2, 3) and abs(a - round(a)) <= 0.25]
+    if not near:
+        return ""
+    ratio = "/".join(f"{10 ** k:d}x" for k in sorted({round(a) for a in near}))
+    parts = ", ".join(f"{len(g)} grain{'s' if len(g) > 1 else ''} near {10 ** m:.3g}" if k == 0 else
+                      f"{len(g)} near {10 ** m:.3g}" for k, (g, m) in enumerate(zip(groups, med)))
+    return (f"sizes in the files fall in clusters about {ratio} apart ({parts}): the files may mix units "
+            "(m, cm, mm); the grains are normalised to d = 1 but source_d is in each file's units")

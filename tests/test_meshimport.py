@@ -419,3 +419,113 @@ def test_missed_targets_are_listed_per_grain_with_how_much_and_why(tmp_path, cap
     assert "20-vertex cap" in row
     stats = json.loads((tmp_path / "stone-report" / "stats.json").read_text())
     assert stats["missed"][0][0].endswith("stone_041.obj")
+    # source_d is the reduced grain's d, source_d_hull the full hull's
+    from shapes.meshimport import read_mesh
+
+    g = import_mesh(*read_mesh(STONE), Budget(max_error=0.01, max_vertices=20))
+    assert lib.source_d[0] == pytest.approx(g.source_d, rel=FP) and lib.source_d_hull[0] == pytest.approx(g.d_hull, rel=FP)
+    assert lib.source_d[0] != pytest.approx(lib.source_d_hull[0], rel=1e-6)
+
+
+def shell_and_sliver():
+    """A cube of side 20 (volume 8000), an inward-facing smaller cube inside
+    it (a scan's inner wall, signed volume -5832) and a closed flap of four
+    triangles (a flat tetrahedron, volume 0.03) beside it."""
+    v, t = cube(20.0)
+    inner_v, inner_t = 0.9 * v, t[:, ::-1]
+    flap_v = np.array([[30, 0, 0], [32, 0, 0], [30, 2, 0], [31, 1, 0.05]], float)
+    flap_t = outward(flap_v - flap_v.mean(axis=0), np.array([[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3]]))
+    return (np.vstack([v, inner_v, flap_v]), np.vstack([t, inner_t + 8, flap_t + 16]))
+
+
+def test_components_refuse_shells_and_slivers_and_no_advice_to_use_them(tmp_path, capsys):
+    v, t = shell_and_sliver()
+    write(tmp_path / "scan.stl", v, t)
+    grains, refused, _ = import_paths([str(tmp_path / "scan.stl")], split=True)
+    assert len(grains) == 1 and grains[0].polyhedron.n_vertices == 8
+    assert grains[0].mesh_volume == pytest.approx(8000, rel=FP)
+    why = sorted(reason for _, reason in refused)
+    assert len(why) == 2 and all(name.startswith(str(tmp_path / "scan.stl#")) for name, _ in refused)
+    assert why[0].startswith("inward-facing shell: signed volume -5.83e+03 against +8e+03")
+    assert why[1].startswith("sliver: 4 triangles")
+    # without --components: one line, naming the artefacts, not recommending --components
+    assert main(["import", str(tmp_path / "scan.stl"), "--out", str(tmp_path / "x.h5")]) == 2
+    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
+    assert "one grain and 2 scan artefacts (1 inward-facing shell, 1 sliver)" in line and "--components" not in line
+    # real grains beside an artefact: --components is the advice, and it refuses the artefact
+    tv, tt = tetrahedron(30.0)
+    write(tmp_path / "two.stl", np.vstack([v, tv + 100]), np.vstack([t, tt + len(v)]))
+    assert main(["import", str(tmp_path / "two.stl"), "--out", str(tmp_path / "y.h5")]) == 2
+    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
+    assert "with --components, which refuses the 1 inward-facing shell, 1 sliver" in line
+
+
+def test_a_seam_of_near_duplicate_vertices_is_named_and_merged_by_a_tolerance(tmp_path, capsys):
+    """A 40 mm ball whose two halves' shared vertices are 1 um apart (a
+    seam): open, but the cause named, and closed by --merge-tolerance."""
+    s = trimesh.creation.icosphere(subdivisions=3, radius=20.0)
+    v, t = np.asarray(s.vertices), np.asarray(s.faces)
+    right = v[t].mean(axis=1)[:, 0] > 0
+    shared = np.intersect1d(t[right].ravel(), t[~right].ravel())
+    copy = {int(k): len(v) + i for i, k in enumerate(shared)}
+    seam = v[shared] + np.array([1e-3, 0, 0])                     # 1 um in mm
+    t2 = t.copy()
+    t2[right] = np.vectorize(lambda k: copy.get(int(k), k))(t[right])
+    write(tmp_path / "seam.ply", np.vstack([v, seam]), t2)
+    assert main(["import", str(tmp_path / "seam.ply"), "--out", str(tmp_path / "a.h5")]) == 2
+    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
+    assert "seam of near-duplicate vertices" in line and f"{2 * len(shared)} of the {2 * len(shared)}" in line
+    assert "--merge-tolerance 0.002" in line
+    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "0.002", "--out",
+                 str(tmp_path / "b.h5")]) == 0
+    lib = ShapeLibrary(str(tmp_path / "b.h5"))
+    assert lib.mesh_triangles[0] == len(t) and json.loads(lib.attrs["recipe"])["merge_tolerance"] == 0.002
+    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "-1", "--out",
+                 str(tmp_path / "c.h5")]) == 2
+    assert "--merge-tolerance must be at least 0" in capsys.readouterr().err
+
+
+def test_float32_far_from_the_origin_is_named_as_the_cause(tmp_path, capsys):
+    """A 40 mm ball 2e7 mm from the origin in a binary STL: float32 steps
+    there are 2 mm, its vertices (0.7 mm apart) collapse into a broken
+    surface."""
+    s = trimesh.creation.icosphere(subdivisions=5, radius=20.0)
+    write(tmp_path / "far.stl", np.asarray(s.vertices) + 2e7, np.asarray(s.faces))
+    assert main(["import", str(tmp_path / "far.stl"), "--out", str(tmp_path / "a.h5")]) == 2
+    err = capsys.readouterr().err
+    line = next(x for x in err.splitlines() if x.startswith("shapes: refused"))
+    assert "float32 coordinates far from the origin" in line and "Traceback" not in err
+    assert "non-manifold" not in line and "open mesh" not in line
+
+
+def test_a_ply_header_with_bare_carriage_returns_is_read(tmp_path):
+    v, t = grid_grain()
+    for enc in ("binary", "ascii"):
+        data = trimesh.Trimesh(v, t, process=False).export(file_type="ply", encoding=enc)
+        data = data if isinstance(data, bytes) else data.encode()
+        end = data.index(b"end_header\n") + len(b"end_header\n")
+        (tmp_path / f"rhino_{enc}.ply").write_bytes(data[:end].replace(b"\n", b"\r") + data[end:])
+    grains, refused, _ = import_paths([str(tmp_path)], Budget(vertices=37, max_error=None))
+    assert refused == [] and len(grains) == 2
+    ref = import_mesh(v, t, Budget(vertices=37, max_error=None))
+    for g in grains:
+        np.testing.assert_allclose(entry(g), entry(ref), rtol=0, atol=FP)
+
+
+def test_a_library_mixing_units_is_warned(tmp_path, capsys):
+    """A cube, a tetrahedron and a box, one of them in metres and two in
+    millimetres."""
+    def three(sizes):
+        write(tmp_path / "a.stl", *cube(sizes[0]))
+        write(tmp_path / "b.stl", *tetrahedron(sizes[1]))
+        box = trimesh.creation.box(extents=(sizes[2], 0.7 * sizes[2], 0.4 * sizes[2]))
+        write(tmp_path / "c.stl", np.asarray(box.vertices), np.asarray(box.faces))
+
+    three((0.04, 40.0, 45.0))
+    assert main(["import", str(tmp_path), "--out", str(tmp_path / "mixed.h5")]) == 0
+    err = capsys.readouterr().err
+    assert "warning: sizes in the files fall in clusters about 1000x apart" in err
+    assert "1000x apart" in (tmp_path / "mixed-report" / "report.md").read_text()
+    three((30.0, 40.0, 45.0))
+    assert main(["import", str(tmp_path), "--out", str(tmp_path / "same.h5")]) == 0
+    assert "warning" not in capsys.readouterr().err
