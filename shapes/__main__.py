@@ -56,7 +56,7 @@ def _parser():
                    help="draw grains whose elongation, flatness and vertex counts follow this library's")
     b.add_argument("--max-draws", type=int, default=None, metavar="N",
                    help="with --like: generator draws allowed per grain before the build stops "
-                        "(default 2000)")
+                        "(default 200)")
     b.add_argument("--max-seconds", type=float, default=3600.0, metavar="S",
                    help="with --like: wall-clock seconds allowed for all the grains (default 3600)")
     b.add_argument("--name", help="the library's name (default: the file's stem)")

@@ -27,7 +27,7 @@ resampled and each draw is realised by the generator of
    redrawn (same V) when the stretch made it invalid;
 3. the generator's near-sphere rejection (S/L > 0.8) is off: the target
    decides;
-4. each grain has a budget of ``max_draws`` generator draws (2000 by
+4. each grain has a budget of ``max_draws`` generator draws (200 by
    default), and the whole build an optional time limit: a grain that
    cannot be made within them stops the build with one line naming it,
    the target grain it was drawn from and the rejections, rather than
@@ -106,7 +106,7 @@ def smoothed_bootstrap(x, idx, rng):
 
 
 #: generator draws allowed per grain of ``build --like`` (module docstring, step 4)
-MAX_DRAWS = 2000
+MAX_DRAWS = 200
 
 
 def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_seconds=None, progress=None,
@@ -132,8 +132,10 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
         replaced per grain.
     max_draws : int
         Generator draws allowed per grain (each a grain drawn, repaired
-        and stretched, or rejected; default ``MAX_DRAWS``, 2000) before
-        ShapeError.
+        and stretched, or rejected; default ``MAX_DRAWS``, 200) before
+        ShapeError. A draw of a grain the generator can make rarely needs
+        more than a few; a draw of a very flat grain with many vertices
+        can take seconds.
     max_seconds : float, optional
         s, wall clock allowed for all the grains before ShapeError
         (default: no limit).
@@ -216,12 +218,12 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
         if poly is None:
             i = int(idx[k])
             who = f"target grain {i}" + (f", {names[i]}" if names is not None else "")
-            spent = f"{sum(mine.values())} draws, {time.perf_counter() - t0:.0f} s in all"
             reasons = ", ".join(f"{why} {c}" for why, c in mine.most_common(4)) or "none"
             raise ShapeError(
                 f"grain {k + 1} of {n}: no valid grain with {V} vertices, elongation {e_star[k]:.3f} and "
                 f"flatness {f_star[k]:.3f} (drawn from {who}: {e_t[i]:.3f}, {f_t[i]:.3f}) in "
-                + (f"the time allowed ({max_seconds:g} s; {spent})" if late else f"{max_draws} draws ({spent})")
+                + (f"the time allowed ({max_seconds:g} s; {sum(mine.values())} draws)" if late else
+                   f"{max_draws} draws ({time.perf_counter() - t0:.0f} s in all)")
                 + f"; rejected: {reasons}; the generator cannot make that grain: remove it from the target, "
                 "or allow more draws or time")
         shapes.append(poly)

@@ -1201,7 +1201,7 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None, det
     >>> info = {}
     >>> idx, tri, err, met = reduce_hull(ball, Budget(max_error=0.01, max_vertices=20), details=info)
     >>> len(idx), met, info["why"]
-    (20, False, 'at the 20-vertex cap (--max-vertices), after repairs of the validity checks (nearly flat edge 2)')
+    (20, False, 'at the 20-vertex cap (--max-vertices): no valid set of up to 20 vertices met it (repairs of the validity checks: nearly flat edge 2)')
     """
     p = np.asarray(points, float)
     c = p.mean(axis=0)
@@ -1331,8 +1331,8 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None, det
         info["why"] = (f"no valid set of {cap} vertices in {info['steps']} steps: the validity checks "
                        f"forbade the nearer choices ({_kinds(repairs)}); {n} vertices kept")
     elif info["reached_cap"]:
-        info["why"] = f"at the {cap}-vertex cap (--max-vertices)" + (
-            f", after repairs of the validity checks ({_kinds(repairs)})" if repairs else "")
+        info["why"] = (f"at the {cap}-vertex cap (--max-vertices): no valid set of up to {cap} vertices met it"
+                       + (f" (repairs of the validity checks: {_kinds(repairs)})" if repairs else ""))
     else:
         info["why"] = (f"every nearer choice failed the validity checks ({_kinds(repairs)}; "
                        f"{info['steps']} steps)")
