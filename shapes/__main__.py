@@ -212,7 +212,7 @@ def _import(args):
               for g in grains if not g.target_met]
     notes = [f"{budget_text(budget.as_dict())}; the import took {seconds:.1f} s",
              f"reduction error (Hausdorff / d): median {np.median(err):.3g}, max {err.max():.3g}; volume "
-             f"change median {np.median(dvol):+.3g}, worst {dvol.min():+.3g}"]
+             f"change median {np.median(dvol):+.3f}, worst {dvol.min():+.3f}"]
     miss_line = ""
     if missed:
         target = budget.max_error if budget.vertices is None else None
@@ -236,7 +236,7 @@ def _import(args):
     print(f"shapes: {len(grains)} grains imported -> {args.out} in {seconds:.1f} s, {len(refused)} refused"
           + (" (listed above)" if refused else "")
           + f"; vertices {nv.min()}-{nv.max()} (mean {nv.mean():.1f}), reduction error median "
-          f"{np.median(err):.3g} d, max {err.max():.3g} d, volume change worst {dvol.min():+.3g}"
+          f"{np.median(err):.3g} d, max {err.max():.3g} d, volume change worst {dvol.min():+.3f}"
           + (f"; {miss_line} (each in the report)" if missed else "")
           + (f"; {ignored} non-mesh file{'s' if ignored > 1 else ''} ignored" if ignored else "")
           + f"; report in {report}", file=sys.stderr)
