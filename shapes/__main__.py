@@ -124,8 +124,9 @@ def _build(args):
         if draws < 1 or not args.max_seconds > 0:
             return _err("--max-draws must be at least 1 and --max-seconds above 0")
 
-        def progress(k, n, s):
-            print(f"shapes: --like: {k} of {n} grains in {s:.0f} s", file=sys.stderr)
+        def progress(k, n, s, note):
+            print(f"shapes: --like: {k} of {n} grains in {s:.0f} s" + (f"; slow: {note}" if note else ""),
+                  file=sys.stderr)
 
         try:
             target = ShapeLibrary(args.like)

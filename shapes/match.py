@@ -110,7 +110,7 @@ MAX_DRAWS = 200
 
 
 def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_seconds=None, progress=None,
-                  names=None):
+                  names=None, heartbeat=30.0):
     """``n`` generated grains whose elongation, flatness and vertex count
     follow those of a target table (module docstring; what ``python -m
     shapes build --like`` runs).
@@ -140,11 +140,17 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
         s, wall clock allowed for all the grains before ShapeError
         (default: no limit).
     progress : callable, optional
-        ``progress(k, n, seconds)`` is called after grain k (1-based) every
-        ``max(1, n // 20)`` grains and after the last.
+        ``progress(k, n, seconds, note)`` is called after grain k (1-based)
+        every ``max(1, n // 20)`` grains and after the last (``note`` None),
+        and while a grain takes long, every ``heartbeat`` seconds, with k
+        the grains done and ``note`` one line on the slow grain (its
+        number, vertex count, proportions, draws so far and their
+        rejections).
     names : sequence of str, optional
         The target grains' names (e.g. their source files), quoted in the
         refusal.
+    heartbeat : float
+        s, the interval of ``progress``'s notes on a slow grain (default 30).
 
     Returns
     -------
@@ -201,10 +207,17 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
                                 flatness=(f_star[k],) * 2, max_s_over_l=1.0, max_tries=1)
         mine = Counter()
         poly, late = None, False
+        start = beat = time.perf_counter()
         for draw in range(max_draws):
-            if max_seconds is not None and time.perf_counter() - t0 > max_seconds:
+            now = time.perf_counter()
+            if max_seconds is not None and now - t0 > max_seconds:
                 late = True
                 break
+            if progress is not None and now - beat >= heartbeat and draw:
+                beat = now
+                reasons = ", ".join(f"{why} {c}" for why, c in mine.most_common(3))
+                progress(k, n, now - t0, f"grain {k + 1} ({V} vertices, elongation {e_star[k]:.3f}, flatness "
+                                         f"{f_star[k]:.3f}): {draw} draws in {now - start:.0f} s, rejected: {reasons}")
             try:
                 grain = generate_shape(rng, r, mine)
             except ShapeError:
@@ -228,7 +241,7 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
                 "or allow more draws or time")
         shapes.append(poly)
         if progress is not None and ((k + 1) % every == 0 or k + 1 == n):
-            progress(k + 1, n, time.perf_counter() - t0)
+            progress(k + 1, n, time.perf_counter() - t0, None)
     return shapes, events
 
 

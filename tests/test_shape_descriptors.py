@@ -238,6 +238,14 @@ def test_build_like_refuses_an_unreachable_target_in_one_line_and_in_bounded_tim
                                f"and flatness {f:.3f} (drawn from target grain 0, slab.stl: {e:.3f}, {f:.3f}) "
                                "in 5 draws (")
     assert "rejected: nearly flat edge" in lines[0] and "remove it from the target" in lines[0]
+    # a slow grain is shown while it is drawn (here every draw: a heartbeat of 0 s)
+    notes = []
+    with pytest.raises(P.ShapeError, match="grain 1 of 2: no valid grain with 32 vertices"):
+        generate_like(library_descriptors(ShapeLibrary(str(tmp_path / "flat.h5"))), 2, max_draws=3,
+                      heartbeat=0.0, progress=lambda k, n, s, note: notes.append((k, n, note)))
+    assert [(k, n) for k, n, _ in notes] == [(0, 2), (0, 2)]
+    assert notes[0][2].startswith(f"grain 1 (32 vertices, elongation {e:.3f}, flatness {f:.3f}): 1 draws in ")
+    assert "rejected: nearly flat edge" in notes[1][2]
     # the time limit stops it too
     rc = main(["build", "--like", str(tmp_path / "flat.h5"), "--n", "3", "--max-draws", "100000",
                "--max-seconds", "2", "--out", str(tmp_path / "like.h5")])
