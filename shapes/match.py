@@ -186,7 +186,8 @@ def generate_like(target, n, seed=0, recipe=Recipe(), max_draws=MAX_DRAWS, max_s
     >>> generate_like(flat, 2, max_draws=3, names=["slab.stl"])
     Traceback (most recent call last):
     ...
-    shapes.polyhedron.ShapeError: grain 1 of 2: no valid grain with 37 vertices, elongation 0.900 and flatness 0.050 (drawn from target grain 0, slab.stl: 0.900, 0.050) in 3 draws ...
+    shapes.polyhedron.ShapeError: grain 1 of 2: no valid grain with 37 vertices, elongation 0.900 and
+    flatness 0.050 (drawn from target grain 0, slab.stl: 0.900, 0.050) in 3 draws ...
     """
     import time
 

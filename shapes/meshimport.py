@@ -1200,8 +1200,11 @@ def reduce_hull(points, budget, d=None, max_steps=None, max_candidates=None, det
 
     >>> info = {}
     >>> idx, tri, err, met = reduce_hull(ball, Budget(max_error=0.01, max_vertices=20), details=info)
-    >>> len(idx), met, info["why"]
-    (20, False, 'at the 20-vertex cap (--max-vertices): no valid set of up to 20 vertices met it (repairs of the validity checks: nearly flat edge 2)')
+    >>> len(idx), met
+    (20, False)
+    >>> print(info["why"])
+    at the 20-vertex cap (--max-vertices): no valid set of up to 20 vertices met it (repairs of the
+    validity checks: nearly flat edge 2)
     """
     p = np.asarray(points, float)
     c = p.mean(axis=0)
@@ -1615,7 +1618,8 @@ def mixed_units(sizes):
     Examples
     --------
     >>> print(mixed_units([41.0, 38.5, 45.2, 0.040, 0.043, 39.9]))
-    sizes in the files fall in clusters about 1000x apart (2 grains near 0.0415, 4 near 40.4): the files may mix units (m, cm, mm); the grains are normalised to d = 1 but source_d is in each file's units
+    sizes in the files fall in clusters about 1000x apart (2 grains near 0.0415, 4 near 40.4): the files
+    may mix units (m, cm, mm); the grains are normalised to d = 1 but source_d is in each file's units
     >>> mixed_units([41.0, 38.5, 12.0, 70.0])
     ''
     """

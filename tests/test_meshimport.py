@@ -423,7 +423,8 @@ def test_missed_targets_are_listed_per_grain_with_how_much_and_why(tmp_path, cap
     from shapes.meshimport import read_mesh
 
     g = import_mesh(*read_mesh(STONE), Budget(max_error=0.01, max_vertices=20))
-    assert lib.source_d[0] == pytest.approx(g.source_d, rel=FP) and lib.source_d_hull[0] == pytest.approx(g.d_hull, rel=FP)
+    assert lib.source_d[0] == pytest.approx(g.source_d, rel=FP)
+    assert lib.source_d_hull[0] == pytest.approx(g.d_hull, rel=FP)
     assert lib.source_d[0] != pytest.approx(lib.source_d_hull[0], rel=1e-6)
 
 
