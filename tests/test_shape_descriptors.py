@@ -221,17 +221,14 @@ def test_build_like_refuses_an_unreachable_target_in_one_line_and_in_bounded_tim
     redraws at grain 852 of 1000): the build stops within its draws, or its
     time, in one line naming the grain, the target grain and the
     rejections."""
-    import time
-
     disc = flat_disc()
     e, f = disc.dims[1] / disc.dims[0], disc.dims[2] / disc.dims[1]
     assert disc.n_vertices == 32 and 0.98 < e <= 1 and 0.05 <= f < 0.052
     write_library(str(tmp_path / "flat.h5"), [disc], -1, {}, TOL, name="flat", extra={"source": ["slab.stl"]})
-    t0 = time.perf_counter()
     rc = main(["build", "--like", str(tmp_path / "flat.h5"), "--n", "3", "--max-draws", "5",
                "--out", str(tmp_path / "like.h5")])
     err = capsys.readouterr().err
-    assert rc == 2 and time.perf_counter() - t0 < 60 and not (tmp_path / "like.h5").exists()
+    assert rc == 2 and not (tmp_path / "like.h5").exists()      # bounded by its draws (said below), not timed
     lines = [x for x in err.strip().splitlines()]
     assert len(lines) == 1 and "Traceback" not in err, err
     assert lines[0].startswith(f"shapes: error: grain 1 of 3: no valid grain with 32 vertices, elongation {e:.3f} "
