@@ -115,9 +115,11 @@ class Budget:
         Reduce to exactly this many vertices (at least 4; fewer only when
         the hull has fewer).
     max_error : float or None
-        The error target, relative to d_hull, in [0, 1): the fewest
-        vertices whose hull is within max_error x d_hull of the full hull
-        (Hausdorff distance). Default ``DEFAULT_MAX_ERROR`` (0.02).
+        The error target, relative to d_hull, in [0, 1): the first valid
+        set of :func:`reduce_hull`'s sequence whose hull is within
+        max_error x d_hull of the full hull (Hausdorff distance), or else
+        the valid set of least error. Default ``DEFAULT_MAX_ERROR``
+        (0.02).
     max_vertices : int
         At most this many vertices with ``max_error`` (at least 4; default
         ``DEFAULT_MAX_VERTICES``, 37, the published library's largest
