@@ -12,24 +12,7 @@ from postproc.angular import angular_functions, fit_harmonics, harmonic_curves
 from postproc.statistics import plateau_estimate
 from postproc.synthetic import harmonic_contacts
 
-PNG = b"\x89PNG\r\n\x1a\n"
-
-
-def written(path):
-    with open(path, "rb") as fh:
-        return fh.read(8) == PNG
-
-
-def legend_texts(ax):
-    leg = ax.get_legend()
-    return [t.get_text() for t in leg.get_texts()] if leg else []
-
-
-def line(ax, label):
-    """The line of ``ax`` with this legend label."""
-    hits = [ln for ln in ax.get_lines() if ln.get_label() == label]
-    assert len(hits) == 1, (label, [ln.get_label() for ln in ax.get_lines()])
-    return hits[0]
+from saved_figures import is_png as written, legend_texts, line
 
 
 def summary(n=6, seed=0, shift=0.0):
