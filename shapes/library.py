@@ -24,14 +24,18 @@ Libraries imported from meshes (``python -m shapes import``, see
 :mod:`shapes.meshimport`) also hold, per grain (S,):
 
 ``source``                   str  the file (``file#k``: its k-th piece)
-``source_d``                 float64  d in the mesh file's units
+``source_d``                 float64  d in the mesh file's units (the reduced grain's)
+``source_d_hull``            float64  d of the mesh's full convex hull, same units
 ``mesh_triangles``           int64  triangles of the mesh (after the merge)
 ``hull_vertices``            int64  vertices of the mesh's convex hull
 ``convexity_deficit``        float64  1 - V_mesh / V_hull
 ``reduction_hausdorff``      float64  Hausdorff distance reduced-full hull / d_hull
 ``reduction_volume_change``  float64  V_reduced / V_hull - 1
 
-and the file attribute ``name`` (every library written here has one);
+and the file attribute ``name`` (every library written here has one). The
+real-stone library (:mod:`shapes.stones`) adds ``licence`` (str) per grain
+and the file attributes ``origin``, ``commit``, ``licence`` and ``refused``.
+Any per-grain dataset of strings is stored as HDF5 strings (read as bytes);
 ``seed`` is -1 for an imported library. Readers ignore datasets they do not
 know, so these stay within version 1.
 
@@ -110,7 +114,7 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
         for k, x in (extra or {}).items():
             if len(x) != len(shapes):
                 raise ValueError(f"extra dataset {k} has {len(x)} rows for {len(shapes)} shapes")
-            if k == "source":
+            if k == "source" or (len(x) and isinstance(x[0], str)):
                 f.create_dataset(k, data=np.array([str(s) for s in x], dtype=object),
                                  dtype=h5py.string_dtype())
             else:

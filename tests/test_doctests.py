@@ -89,7 +89,8 @@ SHAPES_ENTRY_POINTS = tuple(f"shapes.{name}" for name in (
     "sections.polyhedron_section", "sections.sphere_section", "sections.polygon_area", "sections.plane_basis",
     "sections.edges_of",
     "sizes.class_counts", "sizes.sample_diameters",
-    "report.library_stats", "report.descriptor_table", "report.budget_text", "report.study_section"))
+    "report.library_stats", "report.descriptor_table", "report.budget_text", "report.study_section",
+    "stones.check_checkout", "stones.build_stone_library"))
 YADE_ENTRY_POINTS = ("yade_scripts.slurm.estimate", "yade_scripts.presets.resolve",
                      "yade_scripts.generate.generate", "yade_scripts.pool.Job", "yade_scripts.pool.run_pool",
                      "yade_scripts.runstate.judge", "yade_scripts.study.run_samples", "yade_scripts.study.collect",
