@@ -87,6 +87,11 @@ def main(argv=None):
     sz = sub.add_parser("size-front", help="the study's quantities against the number of grains (several studies)")
     sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
     sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
+    sh = sub.add_parser("shape-front", help="the study's quantities on two grain libraries (two studies at one size)")
+    sh.add_argument("study", nargs="+", help="study folders of 'make study' at one number of grains: the reference "
+                                              "(e.g. generated grains) first, then e.g. SHAPES=real stones")
+    sh.add_argument("--out", required=True, help="output folder (shape.md, shape.csv, shape-front.png, ...)")
+    sh.add_argument("--labels", nargs="+", help="a name per study (default: its S1 library's name)")
     lb = sub.add_parser("leaning-blocks", help="how the scatter of claim 6's leanings scales with the number of "
                                                "grains, from blocks of each packing (several studies)")
     lb.add_argument("study", nargs="+", help="study folders of 'make study', any numbers of grains")
@@ -218,6 +223,19 @@ def main(argv=None):
         print(f"postproc: results written to {args.out}"
               + (f"; {args.readme}'s claims table {'rewritten' if changed else 'unchanged'}" if args.readme else "")
               + (f"; figure {args.figure}" if args.figure else ""), file=sys.stderr)
+        return 0
+    if args.cmd == "shape-front":
+        from .study.shapefront import write_shape_front
+
+        if args.labels and len(args.labels) != len(args.study):
+            print(f"postproc: error: {len(args.labels)} labels for {len(args.study)} studies", file=sys.stderr)
+            return 2
+        try:
+            path = write_shape_front(args.study, args.out, labels=args.labels)
+        except BAD_INPUT as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
+        print(f"postproc: shape front written to {path} (and shape-front.png)", file=sys.stderr)
         return 0
     if args.cmd == "size-front":
         from .study.sizefront import write_size_front

@@ -558,6 +558,56 @@ def plot_size_front(table, path, published=None):
     return drawn
 
 
+SHAPE_PANELS = (("q_over_p", "q/p plateau"), ("a", "a"), ("a_l", "a_l"), ("a_n", "a_n"), ("a_t", "a_t"),
+                ("z", "z"), ("phi_iso", "solid fraction"), ("ct_frac_simple", "simple contacts"),
+                ("ct_frac_double", "double contacts"), ("ct_frac_triple", "triple contacts"),
+                ("ct_fabric_VF", "VF leaning"), ("ct_fabric_EE", "EE leaning"))
+
+
+def plot_shape_front(table, labels, path):
+    """The shape front: one panel per quantity of SHAPE_PANELS, S1's mean
+    over seeds with its 95 % interval for each study (x = the study, in the
+    order of ``labels``), one series per contact count for the count
+    quantities (circles, squares, triangles), and the paper's value dashed.
+    ``table`` is :func:`postproc.study.shapefront.shape_table`'s. Returns
+    what was drawn: [(panel title, series label, means (len(labels),))]."""
+    plt = _plt()
+    s1 = table[table["sample"] == "polyhedra"]
+    panels = [(q, t) for q, t in SHAPE_PANELS if any(x == q or x.endswith(":" + q) for x in s1["quantity"])]
+    ncol = 4
+    nrow = max(1, -(-len(panels) // ncol))
+    fig, axes = plt.subplots(nrow, ncol, figsize=(3.1 * ncol, 2.6 * nrow), squeeze=False)
+    drawn = []
+    x = np.arange(len(labels))
+    for k, (q, title) in enumerate(panels):
+        ax = axes[k // ncol, k % ncol]
+        rows = s1[(s1["quantity"] == q) | s1["quantity"].str.endswith(":" + q)].sort_values("quantity")
+        for j, (_, r) in enumerate(rows.iterrows()):
+            m = np.array([r[f"mean:{lab}"] for lab in labels], float)
+            err = np.vstack([m - np.array([r[f"low:{lab}"] for lab in labels], float),
+                             np.array([r[f"high:{lab}"] for lab in labels], float) - m])
+            name = r["quantity"].split(":")[0] if ":" in r["quantity"] else "S1"
+            ax.errorbar(x + 0.12 * (j - (len(rows) - 1) / 2), m, yerr=np.nan_to_num(err), fmt="os^v"[j % 4],
+                        color=f"C{j}", ms=4, capsize=2, label=name)
+            drawn.append((title, name, m))
+        paper = rows["paper"].to_numpy(float)
+        if len(paper) and np.isfinite(paper[0]):
+            ax.axhline(paper[0], color="k", ls="--", lw=0.8, label="paper")
+        ax.set_xticks(x)
+        ax.set_xticklabels(labels, fontsize=6)
+        ax.set_xlim(-0.5, len(labels) - 0.5)
+        ax.set_title(title + " (S1)", fontsize=8)
+        ax.tick_params(labelsize=7)
+        if len(rows) > 1 or k == 0:
+            ax.legend(fontsize=6)
+    for k in range(len(panels), nrow * ncol):
+        axes[k // ncol, k % ncol].set_axis_off()
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return drawn
+
+
 def plot_analysis_front(table, path):
     """Analysis estimators: RMS error (largest over a, a_l, a_n, a_t)
     against contacts per set, and time per set against RMS error."""

@@ -219,7 +219,7 @@ def test_synthetic_subcommand(tmp_path):
 STUDY_COMMANDS = ("leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
                   "lmgc90-agreement", "al-investigation",
                   "contact-types-kappa", "commonplane-reference", "facepair-tilt",
-                  "timestep-front", "random-types")
+                  "timestep-front", "random-types", "shape-front")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)
