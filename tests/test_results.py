@@ -112,9 +112,9 @@ def test_the_claims_table_quotes_the_results(tmp_path):
     five = lines[6].split(" | ")
     assert five[2] == "(2/5)(a+a_l+a_n+a_t) 0.43 / 0.20; q/p plateau 0.46 / 0.23"
     points, common = lines[7], lines[8]
-    assert "our contact-point count" in points and "VF +0.028 [0.014, 0.043], EE +0.080 [0.069, 0.091]" in points
+    assert "our contact-point count" in points and "VF +0.028 [0.014, 0.043] axial, EE +0.080 [0.069, 0.091] axial" in points
     assert "VF stable/stable, EE stable/stable" in points and points.endswith("| not reproduced |")
-    assert "LMGC90's common-plane count" in common and "VF −0.026 [−0.043, −0.010]" in common
+    assert "LMGC90's common-plane count" in common and "VF −0.026 [−0.043, −0.010] lateral" in common
     assert "VF undecided/undecided, EE moves/undecided" in common and common.endswith("| reproduced |")
     assert "simple / double / triple contacts 0.70 / 0.15 / 0.15" in points
 

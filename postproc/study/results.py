@@ -202,6 +202,28 @@ def _word(shift):
     return str(shift).split()[-1] if shift else ""
 
 
+def leaning_word(cell):
+    """Claim 6's decision on a leaning (:func:`postproc.study.claims.
+    leaning_decision`: "none", "lateral", "axial" or "undecided") from its
+    cell "mean [low, high]" as the results file prints it; "" when the cell
+    has no interval.
+
+    Examples
+    --------
+    >>> [leaning_word(c) for c in ("0.025 [-0.020, 0.070]", "-0.04 [-0.06, -0.02]", "0.00 [-0.02, 0.02]", "0.1")]
+    ['undecided', 'lateral', 'none', '']
+    """
+    from .claims import leaning_decision
+    from ..statistics import Estimate
+
+    try:
+        lo, hi = (float(x) for x in str(cell).replace("−", "-").split("[", 1)[1].rstrip("]").split(","))
+    except (IndexError, ValueError):
+        return ""
+    z = 1.959963984540054          # an Estimate whose 95 % interval is [lo, hi]: any se, infinite dof
+    return leaning_decision(Estimate((lo + hi) / 2, (hi - lo) / (2 * z), math.inf, 2, "printed interval"))
+
+
 def claims_table(results):
     """The README's claims table (Markdown lines) rendered from ``results``
     (the dict of :func:`collect`): one row per claim, the published values
@@ -234,8 +256,8 @@ def claims_table(results):
                 words.append(f"{k} {'/'.join(w)}" if w else "")
             test = ("; under ½ and 2 × its parameter: " + ", ".join(w for w in words if w)) if any(words) else ""
             name = COUNT_NAMES.get(r["count"], r["count"])
-            lines.append(f"| 6 | {CLAIM6} ({name}) | {pub6} | leanings (negative: lateral) VF {r['VF']}, "
-                         f"EE {r['EE']}{test} | {r['verdict']} |")
+            lines.append(f"| 6 | {CLAIM6} ({name}) | {pub6} | leanings (negative: lateral) VF {r['VF']} "
+                         f"{leaning_word(r['VF'])}, EE {r['EE']} {leaning_word(r['EE'])}{test} | {r['verdict']} |")
     else:
         lines.append(f"| 6 | {CLAIM6} | {pub6} | {claims[6]['numbers'].replace('|', '/')} | {claims[6]['verdict']} |")
     return [line.replace("-0.", "−0.") for line in lines]
