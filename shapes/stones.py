@@ -160,18 +160,19 @@ def build_stone_library(checkout, out=DEFAULT_OUT, commit=None, budget=None, log
     commit = commit or checkout_commit(checkout) or "unknown"
     budget = budget or Budget()
     t0 = time.perf_counter()
-    cwd = os.getcwd()
     out_abs = os.path.abspath(out)
-    try:
-        os.chdir(checkout)                      # sources as the repository's paths
-        grains, refused, _ = import_paths(list(FOLDERS), budget, log=log)
-    finally:
-        os.chdir(cwd)
+
+    def in_repo(path):                          # a path as the repository names it
+        return os.path.relpath(path, checkout).replace(os.sep, "/")
+
+    grains, refused, _ = import_paths([os.path.join(checkout, f) for f in FOLDERS], budget,
+                                      log=(lambda name, reason: log(in_repo(name), reason)) if log else None)
+    refused = [(in_repo(name), reason) for name, reason in refused]
     seconds = time.perf_counter() - t0
     if not grains:
         raise StonesError(f"{checkout}: no stone imported ({len(refused)} refused)")
     licence = f"{LICENCE}, {COPYRIGHT}"
-    extra = {"source": [f"{REPOSITORY}@{commit}:{g.source}" for g in grains],
+    extra = {"source": [f"{REPOSITORY}@{commit}:{in_repo(g.source)}" for g in grains],
              "licence": [licence] * len(grains),
              "source_d": np.array([g.source_d for g in grains]),
              "source_d_hull": np.array([g.d_hull for g in grains]),
@@ -227,7 +228,7 @@ def _write_table(path, grains, extra, met, refused, summary, budget, commit, nam
               "|---|---|---|---|---|---|---|---|---|"]
     for i, g in enumerate(grains):
         p = g.polyhedron
-        lines.append(f"| {i} | `{g.source}` | {p.n_vertices} | {p.n_faces} | {extra['reduction_hausdorff'][i]:.4f} | "
+        lines.append(f"| {i} | `{extra['source'][i].split(':', 1)[1]}` | {p.n_vertices} | {p.n_faces} | {extra['reduction_hausdorff'][i]:.4f} | "
                      f"{extra['reduction_volume_change'][i]:+.3f} | {extra['convexity_deficit'][i]:.3f} | "
                      f"{extra['source_d'][i]:.4g} | {'yes' if met[i] else 'no'} |")
     with open(path, "w", encoding="utf-8") as fh:
