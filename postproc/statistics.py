@@ -329,6 +329,64 @@ def seeds_needed(mean, sd, level=0.95, n_max=100000):
     return hi
 
 
+def seeds_to_decide(mean, sd, margin, level=0.95, n_max=100000):
+    """How many seeds would decide an undecided leaning under the leaning
+    rule (:func:`postproc.study.claims.leaning_decision`), at the present
+    mean and seed-to-seed scatter: a planning figure.
+
+    The rule calls a leaning "none" when its interval mean -+ h(n),
+    h(n) = t_{n-1} sd / sqrt(n), lies inside (-margin, margin), and else
+    "lateral" or "axial" when it excludes 0 on that side. "none" needs
+    |mean| + h(n) < margin (only possible when |mean| < margin), a side
+    needs h(n) < |mean| (:func:`seeds_needed`); the first n to meet
+    either decides, "none" first as in the rule.
+
+    Parameters
+    ----------
+    mean : float
+        The mean of the seeds' leanings (negative: lateral).
+    sd : float
+        Their standard deviation (>= 0, same unit).
+    margin : float
+        The rule's equivalence margin (> 0, same unit).
+    level : float, optional
+        The confidence level (default 0.95).
+    n_max : int, optional
+        The largest number of seeds considered.
+
+    Returns
+    -------
+    (int, str) or None
+        The smallest n >= 2 and the decision then ("none", "lateral" or
+        "axial"); None when neither comes within n_max seeds (a mean of
+        exactly margin, say).
+
+    Raises
+    ------
+    ValueError
+        When mean, sd or margin is not finite, sd < 0 or margin <= 0.
+
+    Examples
+    --------
+    >>> from postproc.statistics import seeds_to_decide
+    >>> seeds_to_decide(0.006, 0.015, 0.03)         # t_3 x 0.015 / 2 = 0.0239 < 0.03 - 0.006
+    (4, 'none')
+    >>> seeds_to_decide(-0.06, 0.05, 0.03)
+    (6, 'lateral')
+    """
+    mean, sd, margin = float(mean), float(sd), float(margin)
+    if not (np.isfinite(mean) and np.isfinite(sd) and np.isfinite(margin)) or sd < 0 or margin <= 0:
+        raise ValueError(f"seeds_to_decide: mean, sd and margin must be finite, sd >= 0 and margin > 0, "
+                         f"got {mean}, {sd}, {margin}")
+    side = seeds_needed(mean, sd, level, n_max)
+    none = seeds_needed(margin - abs(mean), sd, level, n_max) if abs(mean) < margin else None
+    if none is not None and (side is None or none <= side):
+        return none, "none"
+    if side is not None:
+        return side, "lateral" if mean < 0 else "axial"
+    return None
+
+
 @dataclass
 class BlockComponents:
     """How a per-block value scatters inside packings and between them

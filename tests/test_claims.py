@@ -7,6 +7,7 @@ import pytest
 
 from postproc.study.claims import evaluate
 from postproc.statistics import (Estimate, block_components, difference, plateau_estimate, seed_scatter, seeds_needed,
+                                 seeds_to_decide,
                                  steady_indices)
 
 
@@ -185,10 +186,29 @@ def test_claim6_says_how_many_seeds_would_decide_a_straddling_leaning():
     assert t.ppf(0.975, n - 1) * sd / np.sqrt(n) < 0.2 / 3 <= t.ppf(0.975, n - 2) * sd / np.sqrt(n - 1)
     c6 = evaluate(s)[5]
     assert c6["verdict"] == "inconclusive"
-    assert f"EE signed branch anisotropy -0.07 [-0.45, 0.31] (< 0, about {n} seeds would tell it from 0; leaning " \
-           "undecided, none inside ±0.03)" \
+    assert f"EE signed branch anisotropy -0.07 [-0.45, 0.31] (< 0, about {n} seeds would decide it (lateral); " \
+           "leaning undecided, none inside ±0.03)" \
         in c6["numbers"], c6["numbers"]
-    assert c6["numbers"].count("seeds would tell") == 1
+    assert c6["numbers"].count("seeds would decide") == 1 and "seeds would tell" not in c6["numbers"]
+
+
+@pytest.mark.parametrize("mean", [-0.08, -0.031, -0.02, -0.005, 0.0, 0.006, 0.015, 0.029, 0.03, 0.045])
+@pytest.mark.parametrize("sd", [0.005, 0.015, 0.04])
+def test_seeds_to_decide_is_the_first_n_the_rule_decides(mean, sd):
+    """Against the rule itself: the leaning of n seeds with this mean and sd
+    (se = sd / sqrt(n), n - 1 dof) is undecided for every n below the
+    figure and decided, with the figure's word, at it."""
+    from postproc.study.claims import leaning_decision
+
+    def word(n):
+        return leaning_decision(Estimate(mean, sd / np.sqrt(n), n - 1, n, "seeds"))
+
+    got = seeds_to_decide(mean, sd, 0.03, n_max=400)
+    first = next((n for n in range(2, 401) if word(n) != "undecided"), None)
+    if first is None:
+        assert got is None
+    else:
+        assert got == (first, word(first))
 
 
 def test_claim6_names_the_criterion_it_was_read_with():

@@ -23,7 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..statistics import Estimate, difference, plateau_estimate, seed_scatter, seeds_needed, steady_indices
+from ..statistics import (Estimate, difference, plateau_estimate, seed_scatter, seeds_needed, seeds_to_decide,
+                          steady_indices)
 
 NEGLIGIBLE = 0.05
 SFF_TOLERANCE = 0.15
@@ -81,6 +82,17 @@ def _seeds_hint(est, threshold):
         return ""
     n = seeds_needed(est.mean - threshold, est.se * np.sqrt(est.n))
     return f", about {n} seeds would tell it from {threshold:g}" if n else ""
+
+
+def _decide_hint(est, margin=None):
+    """For an undecided leaning over seeds: ", about N seeds would decide it
+    (WORD)" (:func:`postproc.statistics.seeds_to_decide` at the present
+    mean and seed-to-seed standard deviation, se x sqrt(n)); else ""."""
+    margin = NO_LEANING if margin is None else margin
+    if est.method != "seeds" or not (np.isfinite(est.se) and np.isfinite(est.mean)):
+        return ""
+    got = seeds_to_decide(est.mean, est.se * np.sqrt(est.n), margin)
+    return f", about {got[0]} seeds would decide it ({got[1]})" if got else ""
 
 
 def leaning_decision(est, margin=NO_LEANING):
@@ -313,7 +325,7 @@ def claim6(s1, tag=""):
         if col.startswith("ct_fabric_") and col != "ct_fabric_FF":
             word = leaning_decision(e)
             conds.append(LEANING_CONDITION[word])
-            hint = _seeds_hint(e, thr) if word == "undecided" else ""
+            hint = _decide_hint(e) if word == "undecided" else ""
             checks.append(f"{what} {e.text()} (< 0{hint}; leaning {word}, none inside ±{NO_LEANING:g})")
             continue
         conds.append(sign * _side(e, thr))
