@@ -72,6 +72,15 @@ def test_direction_and_paper_values():
     assert sh.direction(0.2, -0.05, -0.01, 0.12) == "toward"
     assert sh.direction(0.0, -0.01, 0.05, 0.12) == "no change"
     assert sh.direction(0.0, 0.01, 0.05, np.nan) == ""
+    assert sh.direction(0.709, -0.175, -0.109, 0.70) == "away"   # past the paper's 0.70 by far more than 0.009
+    assert sh.direction(0.0, 0.2, 0.3, 0.12) == "undecided"      # nearer below 0.24, farther above it
+    rng = np.random.default_rng(0)                              # against the distances themselves
+    for first, paper, lo in rng.uniform(-1, 1, (200, 3)):
+        hi = lo + rng.uniform(0, 0.5)
+        word = sh.direction(first, lo, hi, paper)
+        near = [abs(first + d - paper) < abs(first - paper) for d in np.linspace(lo, hi, 201)]
+        assert word == ("no change" if lo <= 0 <= hi else "toward" if all(near) else "away" if not any(near)
+                        else "undecided"), (first, paper, lo, hi)
     with open(sh.REFERENCE) as fh:
         res = json.load(fh)["results"]
     assert sh.paper_value("q_over_p", "polyhedra") == res["q_over_p_plateau"]["polyhedra"]

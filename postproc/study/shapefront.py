@@ -12,9 +12,8 @@ proportions of simple, double and triple contacts and claim 6's force
 ratios, leanings and FF shares. Then per quantity and sample: each study's
 mean over seeds with its 95 % interval (Student's t), the difference
 second - first with its 95 % interval (Welch), the paper's value where it
-states one, and whether the second study moves the quantity toward it
-("toward" or "away" when the difference's interval excludes 0, else "no
-change"). Also each study's verdicts (the six claims by its primary count,
+states one, and whether the second study's value is nearer to it
+(:func:`direction`). Also each study's verdicts (the six claims by its primary count,
 claim 6 by each count) and its grains' descriptors (:mod:`shapes.descriptors`,
 mean over the library's grains).
 
@@ -77,20 +76,34 @@ def paper_value(quantity, sample, reference=REFERENCE):
 
 
 def direction(first, diff_low, diff_high, paper):
-    """"toward" or "away" (the paper's value) when the difference's interval
-    [diff_low, diff_high] excludes 0, "no change" when it holds 0, "" when
-    there is no paper value or no interval.
+    """Whether the second study is nearer the paper's value than the first,
+    from the difference's interval [diff_low, diff_high] (second - first).
+
+    With g = paper - first, the second value is nearer the paper exactly
+    when the difference lies strictly between 0 and 2g. "toward": the
+    whole interval lies there; "away": it lies wholly outside [0, 2g]
+    (the other way, or past the paper by more than the first was short of
+    it); "no change": it holds 0; "undecided": it straddles 2g. "" when
+    there is no paper value or no interval. The first study's own
+    uncertainty is not counted.
 
     Examples
     --------
     >>> direction(0.0, 0.01, 0.05, 0.12), direction(0.0, -0.05, -0.01, 0.12), direction(0.0, -0.01, 0.02, 0.12)
     ('toward', 'away', 'no change')
+    >>> direction(0.709, -0.175, -0.109, 0.70), direction(0.0, 0.2, 0.3, 0.12)   # far past it; 2g = 0.24 inside
+    ('away', 'undecided')
     """
     if not (np.isfinite(paper) and np.isfinite(diff_low) and np.isfinite(diff_high)):
         return ""
     if diff_low <= 0 <= diff_high:
         return "no change"
-    return "toward" if np.sign(diff_low) == np.sign(paper - first) else "away"
+    lo, hi = sorted((0.0, 2 * (paper - first)))
+    if lo < diff_low and diff_high < hi:
+        return "toward"
+    if diff_high < lo or diff_low > hi:
+        return "away"
+    return "undecided"
 
 
 def shape_table(values, labels):
@@ -201,8 +214,9 @@ def shape_markdown(table, labels, verdicts, descriptors):
         out.append(f"| {_label(r['quantity'])} | {r['sample']} | " + " | ".join(cells) + f" | {diff} | "
                    f"{_f(r['paper'], 2) if np.isfinite(r['paper']) else ''} | {r['toward']} |")
     out += ["", "Means over seeds with their 95 % intervals (Student's t); the difference's interval is "
-            "Welch's. Bold: it excludes 0. \"toward\" / \"away\": the second study's value moves toward / "
-            "away from the paper's, beyond chance.", ""]
+            "Welch's. Bold: it excludes 0. \"toward\": the second study's value is nearer the paper's, the "
+            "whole interval of the difference agreeing; \"away\": farther (the other way, or past it by more than "
+            "the first fell short); \"undecided\": either.", ""]
     keys = list(dict.fromkeys(k for lab in labels for k in verdicts[lab]))
     out += ["| claim | " + " | ".join(labels) + " |", "|---|" + "---|" * len(labels)]
     for k in keys:
