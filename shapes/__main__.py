@@ -168,7 +168,7 @@ def _import(args):
     import numpy as np
 
     from .library import write_library
-    from .meshimport import Budget, import_paths, mixed_units
+    from .meshimport import Budget, import_paths, library_datasets, mixed_units
     from .report import budget_text, write_report
 
     try:
@@ -188,14 +188,7 @@ def _import(args):
         print(f"shapes: 0 grains imported, {len(refused)} refused (listed above); no library written",
               file=sys.stderr)
         return 2
-    extra = {"source": [g.source for g in grains],
-             "source_d": np.array([g.source_d for g in grains]),
-             "source_d_hull": np.array([g.d_hull for g in grains]),
-             "mesh_triangles": np.array([g.mesh_triangles for g in grains], np.int64),
-             "hull_vertices": np.array([g.hull_vertices for g in grains], np.int64),
-             "convexity_deficit": np.array([g.convexity_deficit for g in grains]),
-             "reduction_hausdorff": np.array([g.reduction_hausdorff for g in grains]),
-             "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
+    extra = library_datasets(grains)
     spec = {"source": "meshes", "inputs": list(args.paths), "budget": budget.as_dict(),
             "components": bool(args.components), "merge_tolerance": args.merge_tolerance}
     problem = _make_folder_of(args.out)

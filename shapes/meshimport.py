@@ -1596,6 +1596,34 @@ def import_paths(paths, budget=None, split=False, log=None, merge_tolerance=0.0)
     return grains, refused, ignored
 
 
+def library_datasets(grains):
+    """The per-grain datasets an imported library stores (the library file's
+    module docstring, :mod:`shapes.library`), from the import's grains.
+
+    Parameters
+    ----------
+    grains : list of ImportedGrain
+        What :func:`import_paths` returned.
+
+    Returns
+    -------
+    dict
+        name -> (S,) array or list: ``source``, ``source_d``,
+        ``source_d_hull``, ``mesh_triangles``, ``hull_vertices``,
+        ``convexity_deficit``, ``reduction_hausdorff``,
+        ``reduction_volume_change``; the ``extra`` of
+        :func:`shapes.library.write_library`.
+    """
+    return {"source": [g.source for g in grains],
+            "source_d": np.array([g.source_d for g in grains]),
+            "source_d_hull": np.array([g.d_hull for g in grains]),
+            "mesh_triangles": np.array([g.mesh_triangles for g in grains], np.int64),
+            "hull_vertices": np.array([g.hull_vertices for g in grains], np.int64),
+            "convexity_deficit": np.array([g.convexity_deficit for g in grains]),
+            "reduction_hausdorff": np.array([g.reduction_hausdorff for g in grains]),
+            "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
+
+
 def mixed_units(sizes):
     """A warning when a library's sizes in their files' units fall in
     clusters about 10, 100 or 1000 times apart: files that mix metres,

@@ -154,7 +154,7 @@ def build_stone_library(checkout, out=DEFAULT_OUT, commit=None, budget=None, log
     """
     from .__main__ import _tolerances
     from .library import write_library
-    from .meshimport import Budget, import_paths, mixed_units
+    from .meshimport import Budget, import_paths, library_datasets, mixed_units
 
     licence_text = check_checkout(checkout)
     commit = commit or checkout_commit(checkout) or "unknown"
@@ -172,15 +172,8 @@ def build_stone_library(checkout, out=DEFAULT_OUT, commit=None, budget=None, log
     if not grains:
         raise StonesError(f"{checkout}: no stone imported ({len(refused)} refused)")
     licence = f"{LICENCE}, {COPYRIGHT}"
-    extra = {"source": [f"{REPOSITORY}@{commit}:{in_repo(g.source)}" for g in grains],
-             "licence": [licence] * len(grains),
-             "source_d": np.array([g.source_d for g in grains]),
-             "source_d_hull": np.array([g.d_hull for g in grains]),
-             "mesh_triangles": np.array([g.mesh_triangles for g in grains], np.int64),
-             "hull_vertices": np.array([g.hull_vertices for g in grains], np.int64),
-             "convexity_deficit": np.array([g.convexity_deficit for g in grains]),
-             "reduction_hausdorff": np.array([g.reduction_hausdorff for g in grains]),
-             "reduction_volume_change": np.array([g.reduction_volume_change for g in grains])}
+    extra = {**library_datasets(grains), "source": [f"{REPOSITORY}@{commit}:{in_repo(g.source)}" for g in grains],
+             "licence": [licence] * len(grains)}
     recipe = {"source": "meshes", "repository": REPOSITORY, "commit": commit, "inputs": list(FOLDERS),
               "budget": budget.as_dict(), "components": False, "merge_tolerance": 0.0}
     os.makedirs(os.path.dirname(out_abs), exist_ok=True)

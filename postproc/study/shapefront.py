@@ -31,7 +31,7 @@ import pandas as pd
 
 from .claims import claim6, evaluate
 from .report import REFERENCE, count_summaries, discover, run_summaries
-from .sizefront import COUNT_QUANTITIES, QUANTITIES, _estimate, study_values
+from .sizefront import _estimate, _f, _label, study_values
 from ..errors import InputError
 from ..statistics import difference
 
@@ -178,17 +178,6 @@ def descriptor_means(study):
     out["name"] = lib.name
     out["grains"] = len(lib)
     return out
-
-
-def _label(q):
-    if ":" in q:
-        count, col = q.split(":")
-        return f"{COUNT_QUANTITIES.get(col, col)} ({count})"
-    return QUANTITIES.get(q, (None, q))[1]
-
-
-def _f(x, d=3):
-    return "–" if x is None or not np.isfinite(x) else f"{x:.{d}f}"
 
 
 def shape_markdown(table, labels, verdicts, descriptors):
