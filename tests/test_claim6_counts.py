@@ -192,3 +192,50 @@ def test_claim6_criteria_command(tiny_study, monkeypatch, capsys):
     assert "Leanings per seed (points-tol0.2" in capsys.readouterr().out
     assert main(["claim6-criteria", out]) == 2
     assert "no usable S1 run" in capsys.readouterr().err
+
+
+def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, monkeypatch, capsys):
+    """``python -m yade_scripts.study --counts``: each S1 dump analysed once
+    more per count given (here the 2009 route), the manifest listing them
+    and the report reading claim 6 by each; a second pass with one more
+    count makes only the missing analysis; the pool's command after a run
+    and ``--analyse`` pass the counts on; an unknown count, or the primary
+    one, is refused in one line before anything runs."""
+    import shutil
+
+    from yade_scripts import study as st
+
+    fast_analyses(monkeypatch)
+    out = tmp_path / "study"
+    (out / "polyhedra").mkdir(parents=True)
+    run = str(out / "polyhedra" / "run.h5")
+    shutil.copy(dump, run)
+    runs = {"polyhedra": [("seed 1", run, 0)]}
+    assert st.analyse_and_report(str(out), runs, counts=("lmgc90-2009",)) == []
+    manifest = json.loads((out / "manifest.json").read_text())["polyhedra"][0]
+    assert manifest["counts"] == {"lmgc90-2009": os.path.join("polyhedra", "analysis-lmgc90-2009")}
+    first = out / "polyhedra" / "analysis-lmgc90-2009" / "summary.csv"
+    assert (pd.read_csv(first)["ct_method"] == "lmgc90-2009").all()
+    table = pd.read_csv(out / "report" / "claim6.csv")
+    assert table["count"].tolist() == ["points"] * 3 + ["lmgc90-2009"] * 3
+    mtime = os.path.getmtime(first)
+    assert st.analyse_and_report(str(out), runs, counts=("lmgc90", "lmgc90-2009")) == []
+    assert os.path.getmtime(first) == mtime                         # kept, not made again
+    assert sorted(json.loads((out / "manifest.json").read_text())["polyhedra"][0]["counts"]) == [
+        "lmgc90", "lmgc90-2009"]
+    assert pd.read_csv(out / "report" / "claim6.csv")["count"].tolist() == (
+        ["points"] * 3 + ["lmgc90"] * 3 + ["lmgc90-2009"] * 3)
+    # the pool's work after a run, and --analyse, carry the counts
+    job = type("Job", (), {"dump": run})()
+    assert st.analyse_after(job)[-2:] == ["--analyse", os.path.abspath(run)]
+    assert st.analyse_after(job, ("lmgc90-2009",))[-2:] == ["--counts", "lmgc90-2009"]
+    shutil.rmtree(out / "polyhedra" / "analysis-lmgc90-planplan", ignore_errors=True)
+    assert st.main(["--analyse", run, "--counts", "lmgc90-planplan"]) == 0
+    assert (out / "polyhedra" / "analysis-lmgc90-planplan" / "summary.csv").exists()
+    capsys.readouterr()
+    # refused in one line, nothing made
+    for bad, why in ((["nosuch"], "unknown count 'nosuch'"), (["points"], "points is the primary count")):
+        assert st.main(["--out", str(tmp_path / "never"), "--counts", *bad]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and why in err
+        assert not (tmp_path / "never").exists()

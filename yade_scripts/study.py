@@ -17,8 +17,8 @@ dumps are never run again, so a rerun only does what is missing; a folder
 made with other parameters is set aside. Every dump is analysed
 (:func:`analyse_dump`: :func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis folder, and every usable S1
-dump once more per other contact count
-(:func:`postproc.study.counts.analyse_counts`, claim 6's steady window):
+dump once more per other contact count (``--counts``, default LMGC90's,
+:func:`postproc.study.counts.analyse_counts`, claim 6's steady window):
 as soon as its run is complete, on a core that no waiting run needs (the
 pool's work after a run, ``--analyse DUMP``), so that the analyses fill
 the cores the last runs leave idle; the pass over all dumps at the end
@@ -35,6 +35,7 @@ stopped (SIGTERM, Ctrl-C: run the same command again to resume).
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import os
 import re
@@ -92,7 +93,7 @@ def _need_yade():
         raise ConfigError("yade is not installed (make installs Debian's yade)")
 
 
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None):
     """Run one seed of each sample side by side: the study of ``python -m
     yade_scripts.study`` with one seed (``--ensemble 1``).
 
@@ -121,6 +122,9 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
         :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
     samples : sequence of str
         The samples to run (default both, S1 and S2).
+    counts : sequence of str, optional
+        The other contact counts each complete S1 dump is analysed with
+        (default :data:`postproc.study.counts.EXTRA_COUNTS`).
 
     Returns
     -------
@@ -168,11 +172,12 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES):
         jobs.append(Job(folder, None, s, os.path.join(folder, "run.h5"), tag=s, threads=_threads(s, preset, overrides),
                         log=os.path.join(folder, "yade.log"), echo_all=True))
     status = run_pool(jobs, max(1, sum(j.threads for j in jobs)), echo=lambda m: print(m, flush=True),
-                      after=analyse_after) if jobs else {}
+                      after=functools.partial(analyse_after, counts=counts)) if jobs else {}
     return {s: status.get(s, 0) for s in samples}
 
 
-def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None):
+def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None,
+                 counts=None):
     """Run seeds 1..n of each sample in one schedule: the study of ``make
     study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
 
@@ -208,6 +213,9 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     job_threads : dict, optional
         sample -> YADE threads a job starts on (at most ``jobs``; default
         one each).
+    counts : sequence of str, optional
+        The other contact counts each complete S1 dump is analysed with
+        (default :data:`postproc.study.counts.EXTRA_COUNTS`).
 
     Returns
     -------
@@ -244,7 +252,7 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s]]
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
-                      after=analyse_after)
+                      after=functools.partial(analyse_after, counts=counts))
     return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
                 for _, r in rows[s]] for s in samples}
 
@@ -257,18 +265,28 @@ def analysis_folder(dump):
     return os.path.join(os.path.dirname(dump), name)
 
 
-def analyse_after(job):
+def analyse_after(job, counts=None):
     """The pool's work after a complete run (:func:`yade_scripts.pool.run_pool`'s
-    ``after``): ``python -m yade_scripts.study --analyse DUMP``, the analyses
-    the study makes of it, done while other runs still go; the study's own
-    pass then keeps them (:func:`analyse_dump`)."""
-    return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump)]
+    ``after``): ``python -m yade_scripts.study --analyse DUMP [--counts
+    ...]``, the analyses the study makes of it, done while other runs still
+    go; the study's own pass then keeps them (:func:`analyse_dump`).
+    ``counts``: the other contact counts (default
+    :data:`postproc.study.counts.EXTRA_COUNTS`; an empty sequence: none)."""
+    more = [] if counts is None else ["--counts", *counts]
+    return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump), *more]
 
 
-def analyse_one(dump):
+def _counts(counts):
+    from postproc.study.counts import EXTRA_COUNTS
+
+    return EXTRA_COUNTS if counts is None else tuple(counts)
+
+
+def analyse_one(dump, counts=None):
     """The study's analyses of one complete dump: the primary one
     (:func:`analyse_dump`) and, for polyhedra, the other contact counts
-    (:func:`postproc.study.counts.analyse_counts`). Returns 0 when all
+    ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`,
+    :func:`postproc.study.counts.analyse_counts`). Returns 0 when all
     worked, else 1 (each problem printed in one line)."""
     from postproc.schema import DumpFormatError, DumpReader
     from postproc.study.counts import analyse_counts
@@ -283,7 +301,7 @@ def analyse_one(dump):
     if analyse_dump(dump, analysis) is not None:
         return 1
     if sample == "polyhedra":
-        _, bad = analyse_counts(dump, analysis)
+        _, bad = analyse_counts(dump, analysis, counts=_counts(counts))
         for line in bad:
             print(f"[study] {line}", flush=True)
         return 1 if bad else 0
@@ -362,9 +380,12 @@ def partial_progress(dump):
             "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
 
 
-def analyse_and_report(out, runs, attempts=None, unfinished=None):
+def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
+    Each usable S1 dump is also analysed with the other contact counts
+    ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`), which
+    the manifest lists and the report reads claim 6 by.
     ``unfinished`` {sample: [manifest entry]}: runs that are not to be
     analysed (:func:`collect`'s unfinished and invalid lines), listed after
     the analysed ones with their status.
@@ -422,7 +443,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None):
                 if why != "ok":
                     failed.append(f"{s} {label}")
             if s == "polyhedra" and why in ("ok", "partial"):     # claim 6 by the other contact counts
-                done, bad = analyse_counts(dump, analysis)
+                done, bad = analyse_counts(dump, analysis, counts=_counts(counts))
                 for line in bad:
                     print(f"[study] {line}", flush=True)
                 extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}
@@ -445,7 +466,7 @@ def unusable_samples(out):
     return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
 
 
-def collect(folder):
+def collect(folder, counts=None):
     """Analyse and report whatever has finished in the generated run folders
     at or below ``folder``, and say what every other line is: ``python -m
     yade_scripts.study --collect DIR``, e.g. after a SLURM array.
@@ -472,6 +493,9 @@ def collect(folder):
     ----------
     folder : str
         A generated run folder, or a folder of them.
+    counts : sequence of str, optional
+        The other contact counts each finished S1 dump is analysed with
+        (default :data:`postproc.study.counts.EXTRA_COUNTS`).
 
     Returns
     -------
@@ -591,7 +615,7 @@ def collect(folder):
     if not runs:
         print(f"study: no run has finished yet ({len(pending)} not finished): the manifest and the report list them",
               file=sys.stderr)
-    failed = analyse_and_report(folder, runs, unfinished=others)
+    failed = analyse_and_report(folder, runs, unfinished=others, counts=counts)
     return runs, pending, failed, resubmit
 
 
@@ -634,7 +658,20 @@ def main(argv=None):
     ap.add_argument("--job-threads", type=int, default=1,
                     help="YADE threads a polyhedra job of an ensemble starts on (the kernel's OpenMP "
                          "threads; sphere jobs use one): e.g. --jobs 16 --job-threads 2 on a 16-core node")
+    ap.add_argument("--counts", nargs="*", metavar="COUNT",
+                    help="the contact counts claim 6 is read by besides ours (postproc analyze --types), "
+                         "each S1 dump analysed once more per count: default lmgc90; e.g. --counts lmgc90 "
+                         "lmgc90-2009; none: --counts with nothing after it")
     args = ap.parse_args(argv)
+    if args.counts is not None:
+        from postproc.errors import InputError
+        from postproc.study.counts import check_counts
+
+        try:
+            args.counts = check_counts(args.counts)
+        except InputError as exc:
+            print(f"study: error: {exc}", file=sys.stderr)
+            return 2
     if args.analyse:
         import signal
 
@@ -642,10 +679,10 @@ def main(argv=None):
         if not complete(args.analyse):
             print(f"study: error: {args.analyse}: not a complete dump", file=sys.stderr)
             return 2
-        return analyse_one(args.analyse)
+        return analyse_one(args.analyse, args.counts)
     if args.collect:
         try:
-            runs, pending, failed, _ = collect(args.collect)
+            runs, pending, failed, _ = collect(args.collect, args.counts)
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
@@ -687,11 +724,11 @@ def _study(args, overrides):
     """The study of ``main``'s parsed ``args`` (checked), its folder's lock held."""
     try:
         if args.ensemble == 1:
-            codes = run_samples(args.out, args.preset, overrides, args.library)
+            codes = run_samples(args.out, args.preset, overrides, args.library, counts=args.counts)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
-                                job_threads={"polyhedra": args.job_threads})
+                                job_threads={"polyhedra": args.job_threads}, counts=args.counts)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
@@ -703,7 +740,7 @@ def _study(args, overrides):
         print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
               f"checkpoint; run the same command again to resume", file=sys.stderr)
         return EXIT_TERM
-    failed = analyse_and_report(args.out, runs)
+    failed = analyse_and_report(args.out, runs, counts=args.counts)
     missing = unusable_samples(args.out)
     if failed:
         print(f"study: failed: {', '.join(failed)} (the report lists them; partial runs are used)", file=sys.stderr)

@@ -21,6 +21,10 @@ doubled (the ``*_lo``/``*_hi`` columns of
 :func:`postproc.study.claims.band_test` decides the band test.
 
 Outputs go next to the primary analysis: ``<analysis>-<count>/summary.csv``.
+A study can be given other counts (``python -m yade_scripts.study --counts
+lmgc90 lmgc90-2009``, ``make study COUNTS="lmgc90 lmgc90-2009"``,
+:func:`check_counts`); on a finished study only the missing analyses are
+made, and its report then reads claim 6 by each.
 """
 from __future__ import annotations
 
@@ -30,6 +34,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import InputError
+from ..classify import DEFAULT_METHOD, METHODS
 from ..pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 from ..provenance import is_current
 from ..schema import DumpReader
@@ -37,6 +42,48 @@ from ..statistics import steady_indices
 
 #: the counts analysed beside the primary one (the analysis default, "points")
 EXTRA_COUNTS = ("lmgc90",)
+
+
+def check_counts(counts):
+    """The study's other contact counts, checked before anything runs.
+
+    Parameters
+    ----------
+    counts : sequence of str
+        Contact-type criteria of ``postproc analyze --types``
+        (:data:`postproc.classify.METHODS`) other than the primary one
+        ("points"), e.g. ``("lmgc90", "lmgc90-2009")``; an empty sequence
+        means the primary count only.
+
+    Returns
+    -------
+    tuple of str
+        The counts in their order, each once.
+
+    Raises
+    ------
+    InputError
+        One line naming an unknown count, or the primary one.
+
+    Examples
+    --------
+    >>> check_counts(["lmgc90", "lmgc90-2009", "lmgc90"])
+    ('lmgc90', 'lmgc90-2009')
+    >>> check_counts(["points"])
+    Traceback (most recent call last):
+    ...
+    postproc.errors.InputError: --counts: points is the primary count, always analysed; give the others (lmgc90, ...)
+    """
+    out = []
+    for c in counts:
+        if c == DEFAULT_METHOD:
+            raise InputError(f"--counts: {c} is the primary count, always analysed; give the others (lmgc90, ...)")
+        if c not in METHODS:
+            others = ", ".join(m for m in METHODS if m != DEFAULT_METHOD)
+            raise InputError(f"--counts: unknown count {c!r}; one of {others}")
+        if c not in out:
+            out.append(c)
+    return tuple(out)
 
 
 def count_folder(analysis, count):
