@@ -143,6 +143,8 @@ def test_tiny_run_writes_a_complete_dump(tiny_runs, kind):
     # the host, read inside YADE: its Python's numpy (Debian's), the CPU
     assert info["host"]["numpy"] == yade_numpy() and info["host"]["libc"].startswith("glibc")
     assert info["host"]["machine"] and set(info["host"]["cpu_flags"]) <= set(SIMD_FLAGS)
+    # YADE's scratch folder of the process (/tmp/yade-XXXXXX), which YADE leaves behind, is gone
+    assert os.path.basename(info["yade_scratch"]).startswith("yade-") and not os.path.exists(info["yade_scratch"])
     with DumpReader(str(out / "run.h5")) as r:
         assert r.complete and r.sample_kind == kind.split("-")[0]
         # derived quantities are stored with the run parameters

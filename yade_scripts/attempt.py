@@ -308,6 +308,43 @@ class Attempt:
                 return "terminated"
 
 
+def remove_scratch_at_exit(tmp_filename):
+    """Have YADE's scratch folder of this process removed when it exits.
+
+    YADE 2023.02a makes a folder ``/tmp/yade-XXXXXX`` for every process
+    (``O.tmpFilename()`` names files in it) and leaves it behind, empty, at
+    every exit: one per run attempt, hundreds on a machine that ran a few
+    studies. The folder is this process's own, so it is removed with
+    everything in it by an exit function (which :func:`leave` runs too).
+
+    Parameters
+    ----------
+    tmp_filename : str
+        ``O.tmpFilename()`` of the running YADE, e.g.
+        ``/tmp/yade-3Z5Pqz/tmp-0``.
+
+    Returns
+    -------
+    str or None
+        The folder that will be removed, or None when the name is not in a
+        ``yade-*`` folder (nothing is registered then).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> d = tempfile.mkdtemp(prefix="yade-")
+    >>> remove_scratch_at_exit(os.path.join(d, "tmp-0")) == d
+    True
+    >>> remove_scratch_at_exit("/tmp/elsewhere/tmp-0") is None
+    True
+    """
+    folder = os.path.dirname(os.path.abspath(tmp_filename))
+    if not os.path.basename(folder).startswith("yade-") or not os.path.isdir(folder):
+        return None
+    atexit.register(shutil.rmtree, folder, True)
+    return folder
+
+
 def leave(code):
     """End a scene's process with exit status ``code`` once its work is
     written: Python's exit functions run (the run's lock is released), the

@@ -108,10 +108,12 @@ from shapes import sizes  # noqa: E402
 from shapes.library import ShapeLibrary  # noqa: E402
 from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
 from yade_scripts import sample as sampling  # noqa: E402
-from yade_scripts.attempt import Attempt, Progress, leave  # noqa: E402
+from yade_scripts.attempt import Attempt, Progress, leave, remove_scratch_at_exit  # noqa: E402
 from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
 from yade_scripts.runlock import RunBusy  # noqa: E402
 from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
+
+SCRATCH = remove_scratch_at_exit(O.tmpFilename())   # YADE's scratch /tmp/yade-XXXXXX, which it leaves behind
 
 
 def say(message):
@@ -610,7 +612,7 @@ info = {"steps": O.iter, "time": O.time, "wall_seconds": history["wall_seconds"]
         "shear_start_step": program.shear_start_step, "shear_start_wall_seconds": program.shear_start_wall,
         "engine_seconds": history["engine_seconds"], "dump_seconds": dump_seconds[0], "resumes": history["resumes"],
         **derived,
-        "host": host.host_info()}
+        "host": host.host_info(), "yade_scratch": SCRATCH}
 if KERNEL:   # the kernel's own split and exact touching contact-steps
     info["kernel"] = {**kernel.timing(), "touch_steps": kernel.touch_steps, "threads": kernel.threads,
                       "memory_bytes": kernel.memory_bytes(), "path": kernel.path, "path_note": kernel.path_note}
