@@ -95,6 +95,12 @@ def test_collect_reads_the_three_tables_and_the_manifest(tmp_path):
         "published"] is None
     assert len(res["claim6"]) == 6 and res["claim6"][1]["VF_shift"] is None
     json.dumps(res, allow_nan=False)
+    assert res["about"].startswith("Results of the default study (make study)")
+    # another preset's study says which, with its seeds
+    other = make_study(tmp_path / "other", seeds=6)
+    for s in ("polyhedra", "spheres"):
+        (other / f"{s}-ensemble" / "params.json").write_text(json.dumps({"preset": "intermediate", "sample": s}))
+    assert R.collect(str(other))["about"].startswith("Results of a study on the intermediate preset (6 + 6 seeds)")
 
 
 def test_the_claims_table_quotes_the_results(tmp_path):

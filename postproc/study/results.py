@@ -125,11 +125,18 @@ def collect(study):
     report = os.path.join(study, "report")
     if not os.path.isdir(report):
         raise InputError(f"{report}: no report folder (run 'make study' or 'postproc report {study}')")
+    facts = _study_facts(study)
+    if facts.get("preset") in (None, "default"):
+        about = ("Results of the default study (make study), written by 'make results' from its "
+                 "report/claims.csv, comparison.csv and claim6.csv; the README's claims table is "
+                 "generated from this file.")
+    else:
+        seeds = " + ".join(str(n) for n in facts["seeds"].values())
+        about = (f"Results of a study on the {facts['preset']} preset ({seeds} seeds), written by "
+                 f"'postproc results' from its report/claims.csv, comparison.csv and claim6.csv.")
     out = {"format": FORMAT,
-           "about": "Results of the default study (make study), written by 'make results' from its "
-                    "report/claims.csv, comparison.csv and claim6.csv; the README's claims table is "
-                    "generated from this file.",
-           "study": _study_facts(study),
+           "about": about,
+           "study": facts,
            "claims": _records(os.path.join(report, "claims.csv"), ("id", "claim", "verdict", "numbers", "basis")),
            "comparison": _records(os.path.join(report, "comparison.csv"),
                                   ("quantity", "sample", "ours", "ci_low", "ci_high", "interval", "published"))}
