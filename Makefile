@@ -16,7 +16,8 @@ JOB_THREADS ?= 1
 SHAPES_LIB ?= runs/shapes/library.h5
 # SHAPES=LIB.h5: S1 of make study on this library (e.g. from python -m shapes import)
 SHAPES ?=
-# COUNTS="lmgc90 lmgc90-2009": the contact counts claim 6 is read by besides ours (default lmgc90)
+# COUNTS="lmgc90 lmgc90-2009": the contact counts claim 6 is read by besides ours
+# (default lmgc90); on a finished study make study makes only the missing analyses
 COUNTS ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
@@ -94,8 +95,6 @@ shapes: $(SHAPES_LIB)
 # ENSEMBLE=n runs n seeds per sample in one schedule on JOBS cores
 # (yade_scripts/pool.py: longest first, no core idle at the end; a polyhedra
 # job starts on JOB_THREADS threads). Finished runs are not run again.
-# COUNTS="lmgc90 lmgc90-2009" reads claim 6 by those contact counts besides
-# ours (default lmgc90); on a finished study it makes only the missing analyses.
 # One 16-core node: make study PRESET=intermediate ENSEMBLE=16 JOBS=16
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \

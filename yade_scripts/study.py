@@ -276,12 +276,6 @@ def analyse_after(job, counts=None):
     return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump), *more]
 
 
-def _counts(counts):
-    from postproc.study.counts import EXTRA_COUNTS
-
-    return EXTRA_COUNTS if counts is None else tuple(counts)
-
-
 def analyse_one(dump, counts=None):
     """The study's analyses of one complete dump: the primary one
     (:func:`analyse_dump`) and, for polyhedra, the other contact counts
@@ -301,7 +295,7 @@ def analyse_one(dump, counts=None):
     if analyse_dump(dump, analysis) is not None:
         return 1
     if sample == "polyhedra":
-        _, bad = analyse_counts(dump, analysis, counts=_counts(counts))
+        _, bad = analyse_counts(dump, analysis, counts=counts)
         for line in bad:
             print(f"[study] {line}", flush=True)
         return 1 if bad else 0
@@ -443,7 +437,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
                 if why != "ok":
                     failed.append(f"{s} {label}")
             if s == "polyhedra" and why in ("ok", "partial"):     # claim 6 by the other contact counts
-                done, bad = analyse_counts(dump, analysis, counts=_counts(counts))
+                done, bad = analyse_counts(dump, analysis, counts=counts)
                 for line in bad:
                     print(f"[study] {line}", flush=True)
                 extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}

@@ -108,8 +108,9 @@ def claim6_snapshots(summary, names):
     return tuple(sorted(out))
 
 
-def analyse_counts(dump, analysis, counts=EXTRA_COUNTS, progress=False):
-    """Analyse the S1 ``dump`` with each contact count of ``counts``, on the
+def analyse_counts(dump, analysis, counts=None, progress=False):
+    """Analyse the S1 ``dump`` with each contact count of ``counts`` (None:
+    :data:`EXTRA_COUNTS`), on the
     snapshots of :func:`claim6_snapshots` of its primary analysis (folder
     ``analysis``, with its summary.csv). An analysis made from the same dump
     files, snapshots and options by the same code
@@ -121,7 +122,7 @@ def analyse_counts(dump, analysis, counts=EXTRA_COUNTS, progress=False):
     if not os.path.exists(primary):
         return done, [f"{dump}: no primary analysis ({primary}), so no other count"]
     chosen = None
-    for count in counts:
+    for count in EXTRA_COUNTS if counts is None else counts:
         folder = count_folder(analysis, count)
         try:
             if chosen is None:
