@@ -60,10 +60,13 @@ kernel: system venv
 	$(PY) -m yade_scripts.yadeplugin build
 
 # The suite on TEST_WORKERS pytest-xdist workers, a file to a worker at a time
-# (its fixtures run once; tests/conftest.py starts the long YADE files first)
+# (its fixtures run once). tests/conftest.py starts the longest files first;
+# --no-loadscope-reorder keeps that order (xdist would otherwise sort the files
+# by their number of tests and start the long YADE files, which have few, last)
 TEST_WORKERS ?= 2
+XDIST = -n $(TEST_WORKERS) --dist loadfile --no-loadscope-reorder
 test: system venv kernel
-	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadfile --durations=25
+	$(PY) -m pytest -q $(XDIST) --durations=25
 
 # The documentation: docs/*.md and the API reference from the docstrings
 # (Sphinx, MyST), warnings as errors, into runs/docs/html.
@@ -81,7 +84,7 @@ test-slurm: system venv kernel
 # The fast subset (no YADE, nothing slow): about 560 tests in 1 to 2 minutes on 2
 # quiet cores, for the edit-test loop.
 test-fast: venv kernel
-	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist loadfile -m "not yade and not slow"
+	$(PY) -m pytest -q $(XDIST) -m "not yade and not slow"
 
 # The polyhedra library (1000 ballast-like grains, seed 0) and its report.
 $(SHAPES_LIB): | venv

@@ -22,6 +22,9 @@ sys.path.insert(0, root)
 from yade_scripts.kernel_contacts import KernelContacts  # noqa: E402
 from yade_scripts.tangential import TangentialLaw  # noqa: E402
 from yade_scripts.yadedump import polyhedra_shapes  # noqa: E402
+from yade_scripts.attempt import remove_scratch_at_exit  # noqa: E402
+
+remove_scratch_at_exit(O.tmpFilename())      # YADE's /tmp/yade-XXXXXX of this process
 
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 OURS = mode == "ours"
