@@ -43,10 +43,12 @@ def _summary(dump, out, **kw):
     return pd.read_csv(os.path.join(out, "summary.csv"), dtype={"snapshot": str})
 
 
-def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path):
+def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path, monkeypatch):
     """summary(alpha)'s *_hi columns equal summary(2 alpha)'s own, and its
     *_lo columns summary(alpha / 2)'s, exactly: the band test reads the
-    same classification as an analysis at that parameter."""
+    same classification as an analysis at that parameter (numbers only:
+    the analyses without their figures)."""
+    fast_analyses(monkeypatch)
     base = _summary(dump, str(tmp_path / "a"), tolerance=0.2)
     for factor, tag in ((2.0, "hi"), (0.5, "lo")):
         other = _summary(dump, str(tmp_path / tag), tolerance=0.2 * factor)
@@ -59,11 +61,13 @@ def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path):
     assert np.isfinite(base["strong_frac_FF"]).all()
 
 
-def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path):
+def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path, monkeypatch):
     """LMGC90's count of a study's S1 dump: only the isotropic
     snapshot and the primary steady window are analysed, the strains are
     the primary ones, and the steady window of the count's summary is the
-    primary one; a second call keeps it; a failed count is one line."""
+    primary one; a second call keeps it; a failed count is one line
+    (numbers only: the analyses without their figures)."""
+    fast_analyses(monkeypatch)
     ana = str(tmp_path / "analysis")
     primary = _summary(dump, ana)
     steady = primary["snapshot"].iloc[steady_indices(primary["eps_q"], primary["stage"])].tolist()
@@ -123,9 +127,11 @@ def test_claim6_at_a_band_reads_its_columns():
     assert "tolerance 0.1 V/area" in nominal["numbers"] and "tolerance 0.05 V/area" in half["numbers"]
 
 
-def test_report_states_claim6_by_count(dump, tmp_path):
+def test_report_states_claim6_by_count(dump, tmp_path, monkeypatch):
     """A study with one S1 run analysed by both counts: the report's claim-6
-    section and claim6.csv list each count at x 0.5, x 1, x 2."""
+    section and claim6.csv list each count at x 0.5, x 1, x 2 (the analyses
+    without their figures)."""
+    fast_analyses(monkeypatch)
     from postproc.study.report import build_report
 
     study = tmp_path / "study"
