@@ -5,8 +5,9 @@ and munge, accounting by slurmdbd and MariaDB) runs arrays of tiny scenes:
   submitted once from another folder: SIGUSR1 before the limit, each task
   checkpoints and requeues itself, without a human (once each line has
   been requeued twice or is done, the test raises the array's time limit,
-  as an admin would, and each line ends in one more job); SLURM's accounting shows the requeues and the final COMPLETED with
-  the task's reason; every attempt's log and SLURM's own output are kept;
+  as an admin would, and each line ends in one more job); SLURM's
+  accounting shows the requeues and the final COMPLETED with the task's
+  reason; every attempt's log and SLURM's own output are kept;
   line 1's dump equals, bit for bit, that of the same line run
   uninterrupted (line 2 takes the same path with another seed);
 * array C, tiny S2 lines with a hand-edited invalid fourth line, of which
@@ -176,13 +177,20 @@ def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys, monk
     # time limit is raised, as an admin does for a job that needs longer: the rest of each line runs in
     # one job. At a minute's limit a line nets 15-30 s an attempt, and beside other work (the rest of the
     # suite) it took up to 12 requeues, each a YADE start and a checkpoint's load.
+    def requeued_twice_or_done(k):
+        out = a / f"slurm-{job_a}_{k}.out"
+        text = out.read_text() if out.exists() else ""
+        return text.count("task: FINAL requeued to resume") >= 2 or "task: FINAL done" in text
+
     t0 = time.time()
-    while not all((lambda out: out.count("task: FINAL requeued to resume") >= 2 or "task: FINAL done" in out)(
-            f.read_text() if f.exists() else "") for f in (a / f"slurm-{job_a}_{k}.out" for k in (1, 2))):
+    while not all(requeued_twice_or_done(k) for k in (1, 2)):
         assert time.time() - t0 < 1500, f"array A: no two requeues of each line after {time.time() - t0:.0f} s"
         time.sleep(2)
-    if subprocess.run(["squeue", "-h", "-j", job_a], env=env, capture_output=True, text=True).stdout.strip():
-        run(env, "scontrol", "update", f"JobId={job_a}", "TimeLimit=30:00")
+    raised = subprocess.run(["scontrol", "update", f"JobId={job_a}", "TimeLimit=30:00"], env=env,
+                            capture_output=True, text=True)
+    if raised.returncode != 0:                      # refused only for an array that has just ended
+        left = subprocess.run(["squeue", "-h", "-j", job_a], env=env, capture_output=True, text=True).stdout
+        assert not left.strip(), f"scontrol update of array A: {raised.stderr}"
     seconds_a = wait_for(env, job_a, 1500)
     ra = records(env, job_a, (1, 2))
     for k in (1, 2):
