@@ -61,6 +61,8 @@ def main(argv=None):
                     help="angular tolerance in degrees: the criterion with --types angular, the "
                          "vertex/edge/face labels otherwise (default 5)")
     an.add_argument("--no-errors", action="store_true", help="skip standard errors (faster)")
+    an.add_argument("--no-figures", action="store_true",
+                    help="numbers only: the same tables without the figures (faster; most of a small dump's time)")
     an.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                     help="progress bar (default: on for 5 snapshots or more)")
     sy = sub.add_parser("synthetic", help="write a synthetic dump with known anisotropies (no simulation)")
@@ -382,7 +384,8 @@ def main(argv=None):
         return 0
     options = AnalysisOptions(axis=args.axis, volume=args.volume, box=args.box, cell=args.cell, fmt=args.format,
                               atoms=args.atoms, nbins=args.bins, errors=not args.no_errors, types=args.types,
-                              tolerance=args.tolerance, threshold=args.threshold, theta_deg=args.theta)
+                              tolerance=args.tolerance, threshold=args.threshold, theta_deg=args.theta,
+                              figures=not args.no_figures)
     if len(args.path) > 1 or os.path.isdir(args.path[0]) or args.jobs != 1:
         return _analyze_many(args, options)
     try:

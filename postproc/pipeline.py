@@ -117,6 +117,10 @@ def reference_index(stages):
     return next((k for k, s in enumerate(stages) if s == "shear"), 0)
 
 
+#: the figures of an analysis (:func:`analyze_path`; some only with contact types)
+FIGURE_FILES = ("qp_sff.png", "anisotropies.png", "polar_last.png", "force_pdf.png", "networks.png",
+                "contact_types.png", "footprint.png")
+
 @dataclass(frozen=True)
 class AnalysisOptions:
     """How to analyse an input (the options of ``postproc analyze``).
@@ -146,6 +150,8 @@ class AnalysisOptions:
     theta_deg : "angular" tolerance, degrees.
     snapshots : indices of a dump's snapshots to analyse (None: all); the
         strains are from the last isotropic one among them (give it too).
+    figures : draw the figures (False: the same files without the figures,
+        for numbers only; on a small dump the figures take most of the time).
     """
     axis: object = "z"
     volume: float | None = None
@@ -160,6 +166,7 @@ class AnalysisOptions:
     threshold: float | None = None
     theta_deg: float | None = None
     snapshots: tuple | None = None
+    figures: bool = True
 
     def check(self):
         """Raise InputError (one line) for options that cannot work."""
@@ -174,7 +181,9 @@ class AnalysisOptions:
 def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     """Analyse every snapshot of ``path`` (a dump, a flat table or a
     LAMMPS/LIGGGHTS local dump) with :class:`AnalysisOptions` ``options``
-    and write ``out/summary.csv`` (one row per snapshot) and the figures.
+    and write ``out/summary.csv`` (one row per snapshot) and the figures
+    (:data:`FIGURE_FILES`; without ``options.figures``, none: those an
+    earlier analysis left in ``out`` are removed).
     For a dump of polyhedra also the contact types
     (:class:`postproc.classify.Classifier`), ``force_pdf.csv`` and their
     figures, and ``source.json``: the input's files, the options and the
@@ -239,26 +248,11 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     tmp = tempfile.mkdtemp(prefix=".postproc-", dir=parent)
     try:
         df.to_csv(os.path.join(tmp, "summary.csv"), index=False)
-        plots.plot_qp_sff(df, os.path.join(tmp, "qp_sff.png"), label)
-        plots.plot_anisotropies(df, os.path.join(tmp, "anisotropies.png"), label)
-        snap, res = last
-        plots.plot_polar(res.angular, res.fits, os.path.join(tmp, "polar_last.png"),
-                         f"{label}: snapshot {snap.name} (step {snap.step})")
         pool = steady_indices(df["eps_q"], df["stage"])
         pdf = pooled_force_pdf([forces[k] for k in pool])
         pdf.to_csv(os.path.join(tmp, "force_pdf.csv"), index=False)
-        what = (f"{label}: snapshots {df['snapshot'].iloc[pool[0]]}-{df['snapshot'].iloc[pool[-1]]}"
-                f" pooled ({len(pool)})")
-        plots.plot_force_pdf(pdf, os.path.join(tmp, "force_pdf.png"), what)
-        plots.plot_networks(df, os.path.join(tmp, "networks.png"), label)
-        if "ct_method" in df:
-            plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
-            ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
-            if ext and df["ct_method"].iloc[0] != "angular":
-                t = float(df["ct_threshold"].iloc[0]) if df["ct_method"].iloc[0] == "footprint" \
-                    else fpm.DEFAULT_THRESHOLD
-                plots.plot_footprint(np.concatenate(ext), t,
-                                     os.path.join(tmp, "footprint.png"), what)
+        if o.figures:
+            _figures(tmp, df, last, pdf, pool, fps, label)
         if problems:
             with open(os.path.join(tmp, "errors.txt"), "w") as fh:
                 fh.write("\n".join(problems) + "\n")
@@ -266,7 +260,8 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
             with open(os.path.join(tmp, SOURCE_FILE), "w") as fh:
                 json.dump(source, fh, indent=1)
         os.makedirs(out, exist_ok=True)
-        for name, keep in (("errors.txt", problems), (SOURCE_FILE, source is not None)):
+        for name, keep in (("errors.txt", problems), (SOURCE_FILE, source is not None),
+                           *((f, False) for f in FIGURE_FILES if not o.figures)):
             stale = os.path.join(out, name)
             if not keep and os.path.exists(stale):
                 os.remove(stale)
@@ -275,3 +270,26 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return len(rows), problems
+
+
+def _figures(tmp, df, last, pdf, pool, fps, label):
+    """The figures of an analysis (:func:`analyze_path`) into the folder
+    ``tmp``: q/p and the solid fraction, the anisotropies, the polar
+    diagrams of the last snapshot, the pooled force densities, the
+    networks and, with contact types, their proportions and footprints."""
+    plots.plot_qp_sff(df, os.path.join(tmp, "qp_sff.png"), label)
+    plots.plot_anisotropies(df, os.path.join(tmp, "anisotropies.png"), label)
+    snap, res = last
+    plots.plot_polar(res.angular, res.fits, os.path.join(tmp, "polar_last.png"),
+                     f"{label}: snapshot {snap.name} (step {snap.step})")
+    what = (f"{label}: snapshots {df['snapshot'].iloc[pool[0]]}-{df['snapshot'].iloc[pool[-1]]}"
+            f" pooled ({len(pool)})")
+    plots.plot_force_pdf(pdf, os.path.join(tmp, "force_pdf.png"), what)
+    plots.plot_networks(df, os.path.join(tmp, "networks.png"), label)
+    if "ct_method" in df:
+        plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
+        ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
+        if ext and df["ct_method"].iloc[0] != "angular":
+            t = float(df["ct_threshold"].iloc[0]) if df["ct_method"].iloc[0] == "footprint" \
+                else fpm.DEFAULT_THRESHOLD
+            plots.plot_footprint(np.concatenate(ext), t, os.path.join(tmp, "footprint.png"), what)

@@ -97,13 +97,19 @@ def stamp(path, options):
 def is_current(path, out, options):
     """True when ``out`` holds an analysis (summary.csv) of ``path`` made with
     ``options`` by today's code from today's input files (its source.json
-    equals :func:`stamp`); False otherwise, also when anything is missing or
-    unreadable."""
+    equals :func:`stamp`, but that an analysis with figures is current for
+    one asked without them); False otherwise, also when anything is missing
+    or unreadable."""
     try:
         if not os.path.exists(os.path.join(out, "summary.csv")):
             return False
         with open(os.path.join(out, SOURCE_FILE)) as fh:
             old = json.load(fh)
-        return {k: old.get(k) for k in ("input", "options", "code")} == stamp(path, options)
-    except (OSError, ValueError):
+        now = stamp(path, options)
+        was = dict(old.get("options") or {})
+        drew = was.pop("figures", True)             # analyses made before the option drew them
+        want = now["options"].pop("figures")
+        return ({"input": old.get("input"), "options": was, "code": old.get("code")} == now
+                and (drew or not want))
+    except (OSError, ValueError, AttributeError, TypeError):
         return False

@@ -485,8 +485,9 @@ def study_section(library_path, outdir, figure="library_descriptors.png"):
         The library file S1 ran on.
     outdir : str
         The report's folder: the figure is written there.
-    figure : str
-        The figure's file name (default ``library_descriptors.png``).
+    figure : str or None
+        The figure's file name (default ``library_descriptors.png``; None:
+        no figure).
 
     Returns
     -------
@@ -533,6 +534,8 @@ def study_section(library_path, outdir, figure="library_descriptors.png"):
               "class of the study (50 / 34 / 16 % of d = 2.5 / 3.75 / 5 cm); S2's spheres have the "
               "same classes.", ""]
     lines += descriptor_table({lib.name: desc})
+    if figure is None:
+        return lines
     try:
         plot_descriptors({lib.name: (lib, desc)}, os.path.join(outdir, figure))
     except Exception as exc:            # a figure that cannot be drawn is reported, not fatal

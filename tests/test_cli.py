@@ -59,7 +59,7 @@ def test_analyze_lattice_dump_matches_exact_stress(tmp_path):
     with DumpWriter(path, "spheres", {}) as w:
         write_snapshot(w, snap)
     out = tmp_path / "o"
-    assert main(["analyze", path, "--out", str(out)]) == 0
+    assert main(["analyze", path, "--out", str(out), "--no-figures"]) == 0
     row = pd.read_csv(out / "summary.csv").iloc[0]
     assert row["s_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
     assert row["w_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
@@ -84,7 +84,7 @@ def test_flat_table_gives_the_same_numbers_as_the_dump(tmp_path, fmt):
     df = _table(s)
     df.to_csv(path, index=False) if fmt == "csv" else df.to_parquet(path)
     out = tmp_path / "o"
-    assert main(["analyze", str(path), "--out", str(out), "--volume", "1.0"]) == 0
+    assert main(["analyze", str(path), "--out", str(out), "--volume", "1.0", "--no-figures"]) == 0
     row = pd.read_csv(out / "summary.csv").iloc[0]
     from postproc.fabric import anisotropies
 
@@ -111,7 +111,7 @@ def test_flat_table_with_walls_and_box(tmp_path):
     df.to_csv(path, index=False)
     out = tmp_path / "o"
     L = snap.box_lengths
-    assert main(["analyze", str(path), "--out", str(out), "--box", *map(str, L)]) == 0
+    assert main(["analyze", str(path), "--out", str(out), "--box", *map(str, L), "--no-figures"]) == 0
     row = pd.read_csv(out / "summary.csv").iloc[0]
     assert row["s_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
     assert row["w_zz"] == pytest.approx(sigma[2, 2], rel=1e-12)
@@ -202,7 +202,7 @@ def test_one_bad_snapshot_keeps_the_others(tmp_path, capsys):
         write_snapshot(w, bad, step=1)
         write_snapshot(w, snap, step=2)
     out = tmp_path / "o"
-    assert main(["analyze", path, "--out", str(out)]) == 1
+    assert main(["analyze", path, "--out", str(out), "--no-figures"]) == 1
     df = pd.read_csv(out / "summary.csv")
     assert df["step"].tolist() == [0, 2]
     assert "step 1" in (out / "errors.txt").read_text()
@@ -212,7 +212,7 @@ def test_one_bad_snapshot_keeps_the_others(tmp_path, capsys):
 def test_synthetic_subcommand(tmp_path):
     path = str(tmp_path / "s.h5")
     assert main(["synthetic", path, "--contacts", "500", "--snapshots", "2"]) == 0
-    assert main(["analyze", path, "--out", str(tmp_path / "o")]) == 0
+    assert main(["analyze", path, "--out", str(tmp_path / "o"), "--no-figures"]) == 0
 
 
 #: the subcommands of the study's own analyses (postproc.study), each with its --help

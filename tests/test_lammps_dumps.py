@@ -88,7 +88,7 @@ def lammps_files(tmp_path, branch=True, named=False, index=False, steps=(0, 1000
 
 def run(tmp_path, path, name, *opts, code=0):
     out = tmp_path / f"out_{name}"
-    assert main(["analyze", str(path), "--out", str(out), "--no-progress", *opts]) == code
+    assert main(["analyze", str(path), "--out", str(out), "--no-progress", "--no-figures", *opts]) == code
     return pd.read_csv(out / "summary.csv")
 
 
@@ -238,5 +238,5 @@ def test_bad_lammps_inputs(tmp_path, capsys):
     snaps = read_text_dump(str(cp3), "lammps-local", atoms=str(ap3))
     assert "12 columns; a LAMMPS contact dump has 8" in str(snaps[0])
     # --volume with a dump: one line, exit 2
-    assert main(["analyze", str(cp), "--out", str(tmp_path / "v"), "--atoms", str(ap),
+    assert main(["analyze", str(cp), "--out", str(tmp_path / "v"), "--no-figures", "--atoms", str(ap),
                  "--volume", "1"]) == 2

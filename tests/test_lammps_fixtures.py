@@ -103,7 +103,7 @@ def test_ids_rounded_by_the_default_format_are_refused_in_one_line(tmp_path, cap
     assert EXACT_FORMAT in msg
     from postproc.cli import main
 
-    code = main(["analyze", path, "--atoms", ATOMS, "--out", str(tmp_path / "out")])
+    code = main(["analyze", path, "--atoms", ATOMS, "--out", str(tmp_path / "out"), "--no-figures"])
     assert code != 0
     err = capsys.readouterr().err
     assert "6 significant digits" in err and "Traceback" not in err

@@ -165,7 +165,7 @@ def test_ids_rounded_by_the_default_format_are_refused_with_the_line_liggghts_ac
                      script, re.M)
     from postproc.cli import main
 
-    code = main(["analyze", path, "--out", str(tmp_path / "out")])
+    code = main(["analyze", path, "--out", str(tmp_path / "out"), "--no-figures"])
     assert code != 0
     err = capsys.readouterr().err
     assert "6 significant digits" in err and "Traceback" not in err

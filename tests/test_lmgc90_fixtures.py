@@ -322,7 +322,7 @@ def test_cli_analyze_with_lmgc90s_count(tmp_path, capsys):
             write_snapshot(w, snap, step=step, stage=stage, contacts=snapshot_dicts(snap)[1])
     for types in ("lmgc90", "lmgc90-planplan"):
         out = tmp_path / types
-        assert main(["analyze", path, "--out", str(out), "--types", types, "--no-errors"]) == 0
+        assert main(["analyze", path, "--out", str(out), "--types", types, "--no-errors", "--no-figures"]) == 0
         s = pd.read_csv(out / "summary.csv")
         assert (s["ct_method"] == types).all() and (s["ct_threshold"] == cp.DEFAULT_ALERT).all()
         r_min = cp.lmgc90_tables([v for v, _ in SHAPES], [t for _, t in SHAPES]).rmin

@@ -29,7 +29,7 @@ def inputs(tmp_path):
 def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
     d, paths, bad = inputs
     out = tmp_path / "out"
-    assert main(["analyze", str(d), "--out", str(out), "--jobs", "2"]) == 1
+    assert main(["analyze", str(d), "--out", str(out), "--jobs", "2", "--no-figures"]) == 1
     err = capsys.readouterr().err
     assert f"{bad}:" in err and "(skipped)" in err
     df = pd.read_csv(out / "summary.csv")
@@ -48,8 +48,8 @@ def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
 def test_parallel_equals_serial(tmp_path, inputs):
     d, paths, bad = inputs
     a, b = tmp_path / "a", tmp_path / "b"
-    assert main(["analyze", *paths, "--out", str(a), "--jobs", "1", "--no-errors"]) == 0
-    assert main(["analyze", *paths, "--out", str(b), "--jobs", "3", "--no-errors"]) == 0
+    assert main(["analyze", *paths, "--out", str(a), "--jobs", "1", "--no-errors", "--no-figures"]) == 0
+    assert main(["analyze", *paths, "--out", str(b), "--jobs", "3", "--no-errors", "--no-figures"]) == 0
     pd.testing.assert_frame_equal(pd.read_csv(a / "summary.csv"), pd.read_csv(b / "summary.csv"))
     assert not (a / "errors.txt").exists()
 

@@ -69,7 +69,7 @@ def analyze_table(tmp_path, df, name, *opts):
     path = tmp_path / f"{name}.csv"
     df.to_csv(path, index=False)
     out = tmp_path / f"out_{name}"
-    assert main(["analyze", str(path), "--out", str(out), "--no-progress", *opts]) == 0
+    assert main(["analyze", str(path), "--out", str(out), "--no-progress", "--no-figures", *opts]) == 0
     return pd.read_csv(out / "summary.csv").iloc[0]
 
 
@@ -181,7 +181,7 @@ def test_dump_with_a_sheared_periodic_cell(tmp_path):
     assert np.array_equal(snap.cell, H) and len(snap.wall_ids) == 0
     assert snap.volume == pytest.approx(V, rel=1e-15)
     out = tmp_path / "o"
-    assert main(["analyze", path, "--out", str(out), "--no-progress"]) == 0
+    assert main(["analyze", path, "--out", str(out), "--no-progress", "--no-figures"]) == 0
     row = pd.read_csv(out / "summary.csv").iloc[0]
     for c, (a, b) in {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "xz": (0, 2), "xy": (0, 1)}.items():
         assert row[f"s_{c}"] == pytest.approx(sigma[a, b], rel=1e-12, abs=1e-12 * sigma.max()), c
@@ -218,6 +218,6 @@ def test_bad_cells(tmp_path, capsys):
                              wall_ids=[], wall_forces=[], bodies={}, contacts={},
                              cell=np.diag([1.0, 1.0, -1.0]))
     # --cell on a dump is refused in one line
-    assert main(["analyze", str(tmp_path / "b.h5"), "--out", str(tmp_path / "o"),
+    assert main(["analyze", str(tmp_path / "b.h5"), "--out", str(tmp_path / "o"), "--no-figures",
                  "--cell", "1", "1", "1"]) == 2
     assert "--cell are for flat contact tables" in capsys.readouterr().err

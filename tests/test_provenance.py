@@ -113,3 +113,33 @@ def test_analyse_refuses_a_dump_that_is_not_complete(tmp_path, capsys):
     assert os.path.exists(tmp_path / "analysis" / "summary.csv")
     assert main(["--analyse", dump]) == 0
     assert "is up to date" in capsys.readouterr().out
+
+
+def test_without_figures_the_same_files_but_the_figures(analysed, tmp_path):
+    """``figures=False`` writes every file of the analysis but the figures,
+    byte for byte the same (source.json but its options' flag); an
+    analysis with figures is current for one asked without them, not the
+    reverse; and an analysis without figures removes the figures an
+    earlier one left in its folder."""
+    from postproc.pipeline import FIGURE_FILES
+
+    dump, out = analysed
+    bare = str(tmp_path / "bare")
+    analyze_path(dump, bare, AnalysisOptions(figures=False), progress=False)
+    drawn = sorted(os.listdir(out))
+    assert {"qp_sff.png", "networks.png"} <= set(drawn) and set(drawn) - set(FIGURE_FILES) == set(os.listdir(bare))
+    for name in os.listdir(bare):
+        a, b = (open(os.path.join(d, name), "rb").read() for d in (out, bare))
+        if name == provenance.SOURCE_FILE:
+            a, b = json.loads(a), json.loads(b)
+            assert a["options"].pop("figures") is True and b["options"].pop("figures") is False
+        assert a == b, name
+    assert provenance.is_current(dump, out, AnalysisOptions(figures=False))
+    assert not provenance.is_current(dump, bare, AnalysisOptions())
+    rec = json.load(open(os.path.join(out, provenance.SOURCE_FILE)))
+    del rec["options"]["figures"]                     # an analysis recorded before the option: it drew them
+    json.dump(rec, open(os.path.join(out, provenance.SOURCE_FILE), "w"))
+    assert provenance.is_current(dump, out, AnalysisOptions()) and \
+        provenance.is_current(dump, out, AnalysisOptions(figures=False))
+    analyze_path(dump, out, AnalysisOptions(figures=False), progress=False)
+    assert sorted(os.listdir(out)) == sorted(os.listdir(bare))

@@ -85,7 +85,7 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
     assert study_main(["--collect", str(tmp_path / "study")]) == 2
     assert "no generated run folder" in capsys.readouterr().err
     out = make(tmp_path, (1,))
-    assert study_main(["--collect", str(out)]) == 0            # nothing finished: still a manifest and a report
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0            # nothing finished: still a manifest and a report
     assert "no run has finished yet (1 not finished)" in capsys.readouterr().err
     manifest = json.loads((out / "manifest.json").read_text())
     assert [m["status"] for m in manifest["spheres"]] == ["not started"]
@@ -228,7 +228,7 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
     again = task(out, 1, tmp_path)
     assert again.returncode == 0 and "is complete, nothing to do" in again.stdout
     # line 3 never ran, line 4 is invalid: both listed, the two finished ones analysed
-    assert study_main(["--collect", str(out)]) == 0
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0
     err = capsys.readouterr().err
     assert "not finished: spheres-seed3 (not started)" in err
     assert f"resubmit the unfinished lines of arr: sbatch --array=3 {out}/slurm.sh" in err
@@ -246,7 +246,7 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
     with h5py.File(out / "spheres-seed2" / "spheres-seed2.h5", "a") as f:
         n = int(f.attrs["n_snapshots"])
         del f[f"snapshots/{n - 2:06d}"]
-    assert study_main(["--collect", str(out)]) == 0
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0
     err = capsys.readouterr().err
     assert f"not finished: spheres-seed2 (refused, not analysed: {out}/spheres-seed2/spheres-seed2.h5: says {n} " \
         f"snapshots, holds {n - 1}" in err
@@ -334,7 +334,7 @@ def test_one_writer_per_line_and_a_crash_before_any_checkpoint_is_retried(tmp_pa
                           env={**os.environ, "YADE_BATCH": f"{out}/table.txt:2"})     # the line, by hand
     assert hand.returncode == 4 and "triaxial.py: refused: spheres-seed1/spheres-seed1 is being written by " \
         f"pid {p.pid}" in hand.stdout
-    assert study_main(["--collect", str(out)]) == 0
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0
     err = capsys.readouterr().err
     assert f"not finished: spheres-seed1 (running: pid {p.pid} on" in err
     assert f"resubmit the unfinished lines of arr: sbatch --array=2 {out}/slurm.sh" in err

@@ -156,14 +156,14 @@ def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys, monk
                                        f"[1, 1e+09]")]
     assert not (c / "spheres-seed4").exists()                            # YADE never started
     assert "task: FINAL invalid line:" in (c / f"slurm-{job_c}_4.out").read_text()
-    assert study(["--collect", str(c)]) == 0                             # a partly finished array
+    assert study(["--collect", str(c), "--no-figures"]) == 0                             # a partly finished array
     err = capsys.readouterr().err
     assert f"resubmit the unfinished lines of C: sbatch --array=2,3 {c}/slurm.sh" in err
     m = json.loads((c / "manifest.json").read_text())["spheres"]
     assert [(e["label"], e["status"].split(":")[0]) for e in m] == [
         ("seed 1", "ok"), ("seed 2", "not started"), ("seed 3", "not started"), ("spheres-seed4", "invalid line")]
     # both arrays from their parent, A perhaps still running: every line listed
-    assert study(["--collect", str(arrays)]) == 0
+    assert study(["--collect", str(arrays), "--no-figures"]) == 0
     capsys.readouterr()
     m = json.loads((arrays / "manifest.json").read_text())
     assert len(m["polyhedra"]) == 2 and len(m["spheres"]) == 4 and m["spheres"][0]["status"] == "ok"
@@ -266,7 +266,7 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     out = (b / f"slurm-{twice}_1.out").read_text()
     assert out.count("task: FINAL") == 1 and "==== attempt" not in out
     # while line 1 runs and line 2 waits
-    assert study(["--collect", str(b)]) == 0
+    assert study(["--collect", str(b), "--no-figures"]) == 0
     err = capsys.readouterr().err
     assert f"not finished: spheres-seed1 (running: SLURM job {job1}_1, RUNNING)" in err
     assert f"not finished: spheres-seed2 (pending: SLURM job {held}_2, PENDING, JobHeldUser)" in err
@@ -281,7 +281,7 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     assert r[1] == [("FAILED", "75:0", stopped[:250])], r
     out = (b / f"slurm-{job1}_1.out").read_text()
     assert out.count("task: FINAL") == 1 and out.rstrip().endswith(f"task: FINAL {stopped}")
-    assert study(["--collect", str(b)]) == 0
+    assert study(["--collect", str(b), "--no-figures"]) == 0
     err = capsys.readouterr().err
     assert f"not finished: spheres-seed1 (resumable at step {step} ({stage}))" in err
     assert f"resubmit the unfinished lines of B: sbatch --array=1 {b}/slurm.sh" in err     # not line 2: queued
@@ -315,7 +315,7 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     assert records(env, job4, (1,))[1][-1] == ("COMPLETED", "0:0", "done: spheres-seed1.h5 complete")
     tries = json.loads((d1 / "spheres-seed1.attempts.json").read_text())
     assert [t["attempt"] for t in tries] == list(range(1, len(tries) + 1)) and tries[-1]["action"] == "done"
-    assert study(["--collect", str(b)]) == 0
+    assert study(["--collect", str(b), "--no-figures"]) == 0
     m = json.loads((b / "manifest.json").read_text())["spheres"]
     assert [e["status"] for e in m] == ["ok", "ok"]
     print(f"cluster test: submitted {first.strip() or 'line 1'}; {again.strip() or 'line 1 again'}")

@@ -16,7 +16,8 @@ thread each, in table order (:func:`yade_scripts.batch.run_batch`).
 Complete dumps are not run again; a finished dump whose parameters differ
 from its line's (a plan edited without renaming the line) is reported and
 not used. Each dump is analysed (:func:`yade_scripts.study.analyse_dump`,
-without standard errors) and :func:`postproc.study.front.write_front`
+without standard errors or figures: the front reads its numbers; ``postproc
+analyze DUMP`` draws one run's figures) and :func:`postproc.study.front.write_front`
 writes ``OUT/front.csv`` (one row per run: cost and every quantity of the
 study's comparison table), ``front-points.csv`` (means and 95 % intervals
 over seeds), ``front-fit.csv`` (the extrapolation to kappa -> inf, I -> 0
@@ -231,7 +232,8 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
     table (:func:`write_table`), run the unfinished lines
     (:func:`yade_scripts.batch.run_batch`) and analyse each complete dump
     that has no analysis yet into ``analysis-<description>/``
-    (:func:`yade_scripts.study.analyse_dump`, without standard errors). A
+    (:func:`yade_scripts.study.analyse_dump`, without standard errors or
+    figures). A
     complete dump made with parameters other than its line's is reported
     and not analysed (status "stale dump"). The plan goes to
     ``OUT/front-plan.json``; the front's tables and figures are
@@ -311,7 +313,7 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
             if st.get(d) == 0 and os.path.exists(dump):
                 ana = os.path.join(folder, "analysis-" + d)
                 if not os.path.exists(os.path.join(ana, "summary.csv")):
-                    analyse_dump(dump, ana, errors=False)
+                    analyse_dump(dump, ana, errors=False, figures=False)
             status[s][d] = st.get(d)
     with open(os.path.join(out, "front-plan.json"), "w") as fh:
         json.dump({"plan": plan, **{k: v for k, v in spec.items()}}, fh, indent=1)

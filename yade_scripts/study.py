@@ -93,7 +93,7 @@ def _need_yade():
         raise ConfigError("yade is not installed (make installs Debian's yade)")
 
 
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None):
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True):
     """Run one seed of each sample side by side: the study of ``python -m
     yade_scripts.study`` with one seed (``--ensemble 1``).
 
@@ -125,6 +125,8 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     counts : sequence of str, optional
         The other contact counts each complete S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
+    figures : bool
+        Draw the analyses' figures (False: numbers only).
 
     Returns
     -------
@@ -172,12 +174,12 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
         jobs.append(Job(folder, None, s, os.path.join(folder, "run.h5"), tag=s, threads=_threads(s, preset, overrides),
                         log=os.path.join(folder, "yade.log"), echo_all=True))
     status = run_pool(jobs, max(1, sum(j.threads for j in jobs)), echo=lambda m: print(m, flush=True),
-                      after=functools.partial(analyse_after, counts=counts)) if jobs else {}
+                      after=functools.partial(analyse_after, counts=counts, figures=figures)) if jobs else {}
     return {s: status.get(s, 0) for s in samples}
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None,
-                 counts=None):
+                 counts=None, figures=True):
     """Run seeds 1..n of each sample in one schedule: the study of ``make
     study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
 
@@ -216,6 +218,8 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     counts : sequence of str, optional
         The other contact counts each complete S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
+    figures : bool
+        Draw the analyses' figures (False: numbers only).
 
     Returns
     -------
@@ -252,7 +256,7 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s]]
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
-                      after=functools.partial(analyse_after, counts=counts))
+                      after=functools.partial(analyse_after, counts=counts, figures=figures))
     return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
                 for _, r in rows[s]] for s in samples}
 
@@ -265,23 +269,25 @@ def analysis_folder(dump):
     return os.path.join(os.path.dirname(dump), name)
 
 
-def analyse_after(job, counts=None):
+def analyse_after(job, counts=None, figures=True):
     """The pool's work after a complete run (:func:`yade_scripts.pool.run_pool`'s
     ``after``): ``python -m yade_scripts.study --analyse DUMP [--counts
     ...]``, the analyses the study makes of it, done while other runs still
     go; the study's own pass then keeps them (:func:`analyse_dump`).
     ``counts``: the other contact counts (default
-    :data:`postproc.study.counts.EXTRA_COUNTS`; an empty sequence: none)."""
-    more = [] if counts is None else ["--counts", *counts]
+    :data:`postproc.study.counts.EXTRA_COUNTS`; an empty sequence: none);
+    ``figures=False``: ``--no-figures``."""
+    more = ([] if counts is None else ["--counts", *counts]) + ([] if figures else ["--no-figures"])
     return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump), *more]
 
 
-def analyse_one(dump, counts=None):
+def analyse_one(dump, counts=None, figures=True):
     """The study's analyses of one complete dump: the primary one
     (:func:`analyse_dump`) and, for polyhedra, the other contact counts
     ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`,
-    :func:`postproc.study.counts.analyse_counts`). Returns 0 when all
-    worked, else 1 (each problem printed in one line)."""
+    :func:`postproc.study.counts.analyse_counts`), with their figures
+    unless ``figures=False``. Returns 0 when all worked, else 1 (each
+    problem printed in one line)."""
     from postproc.schema import DumpFormatError, DumpReader
     from postproc.study.counts import analyse_counts
 
@@ -292,10 +298,10 @@ def analyse_one(dump, counts=None):
         print(f"study: error: {dump}: {exc}", file=sys.stderr)
         return 1
     analysis = analysis_folder(dump)
-    if analyse_dump(dump, analysis) is not None:
+    if analyse_dump(dump, analysis, figures=figures) is not None:
         return 1
     if sample == "polyhedra":
-        _, bad = analyse_counts(dump, analysis, counts=counts)
+        _, bad = analyse_counts(dump, analysis, counts=counts, figures=figures)
         for line in bad:
             print(f"[study] {line}", flush=True)
         return 1 if bad else 0
@@ -323,9 +329,10 @@ def whole(dump):
     return None
 
 
-def analyse_dump(dump, analysis, errors=True):
+def analyse_dump(dump, analysis, errors=True, figures=True):
     """The dump's analysis (:func:`postproc.pipeline.analyze_path`, what
-    ``postproc analyze`` runs; ``errors=False``: no standard errors) into
+    ``postproc analyze`` runs; ``errors=False``: no standard errors;
+    ``figures=False``: no figures) into
     ``analysis``; None when it worked (some bad snapshots allowed: they are
     in analysis/errors.txt and printed), else the one-line reason. An
     analysis made from the same dump files with the same options by the
@@ -334,7 +341,7 @@ def analyse_dump(dump, analysis, errors=True):
     from postproc.pipeline import BAD_INPUT, AnalysisOptions, analyze_path
     from postproc.provenance import is_current
 
-    options = AnalysisOptions(errors=errors)
+    options = AnalysisOptions(errors=errors, figures=figures)
     if is_current(dump, analysis, options):
         print(f"[study] {analysis} is up to date (same dump, options and code), kept", flush=True)
         return None
@@ -374,12 +381,13 @@ def partial_progress(dump):
             "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
 
 
-def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
+def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
     Each usable S1 dump is also analysed with the other contact counts
     ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`), which
-    the manifest lists and the report reads claim 6 by.
+    the manifest lists and the report reads claim 6 by. ``figures=False``:
+    the analyses and the report without their figures (numbers only).
     ``unfinished`` {sample: [manifest entry]}: runs that are not to be
     analysed (:func:`collect`'s unfinished and invalid lines), listed after
     the analysed ones with their status.
@@ -411,7 +419,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
             if status != 0 and progress and progress["steady_snapshots"] >= 2:
                 print(f"[{s}] analysing {label} (partial, reached eps_1 = {progress['eps_1_reached']:.3f}): {dump}",
                       flush=True)
-                bad = analyse_dump(dump, analysis)
+                bad = analyse_dump(dump, analysis, figures=figures)
                 if bad is None:
                     why = "partial"
                     extra["partial"] = progress
@@ -432,12 +440,12 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
                 failed.append(f"{s} {label}")
             else:
                 print(f"[{s}] analysing {label}: {dump}", flush=True)
-                bad = analyse_dump(dump, analysis)
+                bad = analyse_dump(dump, analysis, figures=figures)
                 why = "ok" if bad is None else f"analysis failed ({bad})"
                 if why != "ok":
                     failed.append(f"{s} {label}")
             if s == "polyhedra" and why in ("ok", "partial"):     # claim 6 by the other contact counts
-                done, bad = analyse_counts(dump, analysis, counts=counts)
+                done, bad = analyse_counts(dump, analysis, counts=counts, figures=figures)
                 for line in bad:
                     print(f"[study] {line}", flush=True)
                 extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}
@@ -448,7 +456,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None):
         manifest.setdefault(s, []).extend(entries)
     with open(os.path.join(out, "manifest.json"), "w") as fh:
         json.dump(manifest, fh, indent=1)
-    path = build_report(out)
+    path = build_report(out, figures=figures)
     print(f"[study] report written to {path} (and report.html)", flush=True)
     return failed
 
@@ -460,7 +468,7 @@ def unusable_samples(out):
     return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
 
 
-def collect(folder, counts=None):
+def collect(folder, counts=None, figures=True):
     """Analyse and report whatever has finished in the generated run folders
     at or below ``folder``, and say what every other line is: ``python -m
     yade_scripts.study --collect DIR``, e.g. after a SLURM array.
@@ -490,6 +498,8 @@ def collect(folder, counts=None):
     counts : sequence of str, optional
         The other contact counts each finished S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
+    figures : bool
+        Draw the analyses' and the report's figures (False: numbers only).
 
     Returns
     -------
@@ -609,7 +619,7 @@ def collect(folder, counts=None):
     if not runs:
         print(f"study: no run has finished yet ({len(pending)} not finished): the manifest and the report list them",
               file=sys.stderr)
-    failed = analyse_and_report(folder, runs, unfinished=others, counts=counts)
+    failed = analyse_and_report(folder, runs, unfinished=others, counts=counts, figures=figures)
     return runs, pending, failed, resubmit
 
 
@@ -656,6 +666,8 @@ def main(argv=None):
                     help="the contact counts claim 6 is read by besides ours (postproc analyze --types), "
                          "each S1 dump analysed once more per count: default lmgc90; e.g. --counts lmgc90 "
                          "lmgc90-2009; none: --counts with nothing after it")
+    ap.add_argument("--no-figures", action="store_true",
+                    help="numbers only: the analyses and the report without their figures (faster)")
     args = ap.parse_args(argv)
     if args.counts is not None:
         from postproc.errors import InputError
@@ -673,10 +685,10 @@ def main(argv=None):
         if not complete(args.analyse):
             print(f"study: error: {args.analyse}: not a complete dump", file=sys.stderr)
             return 2
-        return analyse_one(args.analyse, args.counts)
+        return analyse_one(args.analyse, args.counts, figures=not args.no_figures)
     if args.collect:
         try:
-            runs, pending, failed, _ = collect(args.collect, args.counts)
+            runs, pending, failed, _ = collect(args.collect, args.counts, figures=not args.no_figures)
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
@@ -718,11 +730,13 @@ def _study(args, overrides):
     """The study of ``main``'s parsed ``args`` (checked), its folder's lock held."""
     try:
         if args.ensemble == 1:
-            codes = run_samples(args.out, args.preset, overrides, args.library, counts=args.counts)
+            codes = run_samples(args.out, args.preset, overrides, args.library, counts=args.counts,
+                                figures=not args.no_figures)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
-                                job_threads={"polyhedra": args.job_threads}, counts=args.counts)
+                                job_threads={"polyhedra": args.job_threads}, counts=args.counts,
+                                figures=not args.no_figures)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
@@ -734,7 +748,7 @@ def _study(args, overrides):
         print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
               f"checkpoint; run the same command again to resume", file=sys.stderr)
         return EXIT_TERM
-    failed = analyse_and_report(args.out, runs, counts=args.counts)
+    failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures)
     missing = unusable_samples(args.out)
     if failed:
         print(f"study: failed: {', '.join(failed)} (the report lists them; partial runs are used)", file=sys.stderr)

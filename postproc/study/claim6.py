@@ -60,7 +60,7 @@ CRITERION = {"points": "our contact-point count", "commonplane": "the earlier ba
 
 def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
     """Claim 6 decided with each criterion on one study (see the module
-    docstring): analyses into STUDY/claim6/, the tables in
+    docstring): analyses into STUDY/claim6/ (numbers only: no figures), the tables in
     STUDY/claim6/claim6.md and, with tolerances, the figures
     STUDY/claim6/<criterion>-tolerance.png. Prints each criterion's verdict
     as it is reached.
@@ -116,7 +116,8 @@ def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
                     continue
                 folder = os.path.join(out, f"{r['label'].replace(' ', '')}-{name}")
                 if not os.path.exists(os.path.join(folder, "summary.csv")):
-                    analyze_path(r["dump"], folder, AnalysisOptions(types=types, tolerance=tol), progress=False)
+                    analyze_path(r["dump"], folder, AnalysisOptions(types=types, tolerance=tol, figures=False),
+                                 progress=False)
                 frames.append(pd.read_csv(os.path.join(folder, "summary.csv")))
             c6 = evaluate({"polyhedra": frames, "spheres": s2_frames})[5]
             n = sum(int(df["n_contacts_pp"].to_numpy()[steady_indices(df["eps_q"], df["stage"])].sum())

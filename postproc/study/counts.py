@@ -108,7 +108,7 @@ def claim6_snapshots(summary, names):
     return tuple(sorted(out))
 
 
-def analyse_counts(dump, analysis, counts=None, progress=False):
+def analyse_counts(dump, analysis, counts=None, progress=False, figures=True):
     """Analyse the S1 ``dump`` with each contact count of ``counts`` (None:
     :data:`EXTRA_COUNTS`), on the
     snapshots of :func:`claim6_snapshots` of its primary analysis (folder
@@ -116,7 +116,8 @@ def analyse_counts(dump, analysis, counts=None, progress=False):
     files, snapshots and options by the same code
     (:func:`postproc.provenance.is_current`) is kept. Returns {count: folder}
     of the analyses that exist, and a list of one-line problems (a count
-    that failed is left out and named there; the others go on)."""
+    that failed is left out and named there; the others go on).
+    ``figures``: draw each analysis's figures (False: numbers only)."""
     primary = os.path.join(analysis, "summary.csv")
     done, problems = {}, []
     if not os.path.exists(primary):
@@ -130,7 +131,7 @@ def analyse_counts(dump, analysis, counts=None, progress=False):
                 with DumpReader(dump) as reader:
                     names = list(reader.names)
                 chosen = claim6_snapshots(summary, names)
-            options = AnalysisOptions(types=count, snapshots=chosen)
+            options = AnalysisOptions(types=count, snapshots=chosen, figures=figures)
             if not is_current(dump, folder, options):
                 analyze_path(dump, folder, options, progress=progress)
             done[count] = folder

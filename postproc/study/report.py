@@ -372,9 +372,11 @@ def _slab_pictures(picked, colour, path):
     plots.plot_slabs(panels, path, colour=colour)
 
 
-def build_report(study, out=None, reference=REFERENCE):
+def build_report(study, out=None, reference=REFERENCE, figures=True):
     """Write the report of the study folder ``study``; returns the path of
-    report.md. Raises nothing for failed runs: they are listed."""
+    report.md. Raises nothing for failed runs: they are listed.
+    ``figures=False``: the same tables and text without the figures (the
+    report says so)."""
 
     out = out or os.path.join(study, "report")
     os.makedirs(out, exist_ok=True)
@@ -391,9 +393,11 @@ def build_report(study, out=None, reference=REFERENCE):
                 problems.append(f"{LABEL[s]} {r['label']}: {r['status']}")
         if not summaries.get(s):
             problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
-    figures = []
+    drawn, figures = figures, []
 
     def figure(name, fn, *args, caption=""):
+        if not drawn:
+            return
         try:
             fn(*args, os.path.join(out, name))
             figures.append((name, caption))
@@ -409,7 +413,7 @@ def build_report(study, out=None, reference=REFERENCE):
     figure("fig_sff.png", plots.plot_report_sff, summaries,
            caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
     polar = {}
-    for s in SAMPLES:
+    for s in SAMPLES if drawn else ():
         ok = usable_runs(runs, s)
         if ok:
             try:
@@ -420,7 +424,7 @@ def build_report(study, out=None, reference=REFERENCE):
         figure("fig_polar.png", plots.plot_report_polar, polar,
                caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
                        "snapshot), first seed, seed figs. 5 and 7")
-    s1 = usable_runs(runs, "polyhedra")
+    s1 = usable_runs(runs, "polyhedra") if drawn else []
     if s1:
         try:
             gp = group_branch_polar(s1[0])
@@ -439,10 +443,10 @@ def build_report(study, out=None, reference=REFERENCE):
                           ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
                           ("networks.png", "strong and weak networks of S1")):
             src = os.path.join(s1[0]["analysis"], name)
-            if os.path.exists(src):
+            if drawn and os.path.exists(src):
                 shutil.copyfile(src, os.path.join(out, "s1_" + name))
                 figures.append(("s1_" + name, cap))
-    picked = _slab_snapshots(runs)
+    picked = _slab_snapshots(runs) if drawn else {}
     if picked:
         figure("packing_slab.png", _slab_pictures, picked, "force",
                caption="force networks in a slab 1.5 mean diameters thick through the middle of the sample "
@@ -466,18 +470,19 @@ def build_report(study, out=None, reference=REFERENCE):
     by_count = claim6_rows(count_summaries(runs, summaries))
     pd.DataFrame(by_count).to_csv(os.path.join(out, "claim6.csv"), index=False)
 
-    md = _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_count)
-    md += "\n".join(_library_section(runs, out))
+    md = _markdown(study, runs, summaries, ref, rows, claims, figures if drawn else None, problems, by_count)
+    md += "\n".join(_library_section(runs, out, drawn))
     with open(os.path.join(out, "report.md"), "w") as fh:
         fh.write(md)
     _html(md, os.path.join(out, "report.html"))
     return os.path.join(out, "report.md")
 
 
-def _library_section(runs, out):
+def _library_section(runs, out, drawn=True):
     """The section on S1's grains (:func:`shapes.report.study_section`): the
     library the first polyhedra run used (its run folder's copy, named in
-    its params.json), its name and descriptors beside the published ranges."""
+    its params.json), its name and descriptors beside the published ranges
+    (and their figure, when ``drawn``)."""
     from shapes.report import study_section
 
     for r in runs.get("polyhedra", []):
@@ -485,7 +490,8 @@ def _library_section(runs, out):
         pj = os.path.join(folder, "params.json")
         if os.path.exists(pj):
             with open(pj) as fh:
-                return study_section(os.path.join(folder, json.load(fh).get("library", "shapes.h5")), out)
+                return study_section(os.path.join(folder, json.load(fh).get("library", "shapes.h5")), out,
+                                     **({} if drawn else {"figure": None}))
     return []
 
 
@@ -556,7 +562,9 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
         lines += ["", "Numbers at each count's own parameter:", ""]
         lines += [f"* {r['count']}: {r['numbers']}" for r in by_count if r["factor"] == 1.0]
     lines += ["", "## Figures", ""]
-    for name, cap in figures:
+    if figures is None:
+        lines += ["Not drawn: the study ran with `--no-figures` (numbers only).", ""]
+    for name, cap in figures or ():
         lines += [f"![{cap}]({name})", "", f"*{cap}*", ""]
     return "\n".join(lines) + "\n"
 

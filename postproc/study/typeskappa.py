@@ -77,7 +77,7 @@ def shear_snapshots(dump, snaps, from_eps1):
 
 def dump_row(dump, out, types, from_eps1):
     """One dump under one criterion: its analysis (made into
-    OUT/<dump>-<types>/ unless there) summed up over the shear snapshots
+    OUT/<dump>-<types>/ unless there, numbers only: no figures) summed up over the shear snapshots
     with eps_1 >= from_eps1.
 
     Parameters
@@ -102,7 +102,7 @@ def dump_row(dump, out, types, from_eps1):
     """
     folder = os.path.join(out, f"{os.path.splitext(os.path.basename(dump))[0]}-{types}")
     if not os.path.exists(os.path.join(folder, "summary.csv")):
-        analyze_path(dump, folder, AnalysisOptions(types=types), progress=False)
+        analyze_path(dump, folder, AnalysisOptions(types=types, figures=False), progress=False)
     df = pd.read_csv(os.path.join(folder, "summary.csv"))
     sh = df[(df["stage"] == "shear") & (df["eps_1"] >= from_eps1)]
     with DumpReader(dump) as r:
