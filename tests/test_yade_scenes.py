@@ -314,7 +314,7 @@ def test_postproc_reads_both_dumps(tiny_runs, tmp_path):
     from postproc.cli import main
 
     for kind, out in tiny_runs.items():
-        assert main(["analyze", str(out / "run.h5"), "--out", str(tmp_path / kind)]) == 0
+        assert main(["analyze", str(out / "run.h5"), "--out", str(tmp_path / kind), "--no-figures"]) == 0
         import pandas as pd
 
         df = pd.read_csv(tmp_path / kind / "summary.csv")
