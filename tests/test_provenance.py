@@ -21,11 +21,15 @@ def _dump(path, n=4):
     return str(path)
 
 
+#: the analysis options of these tests: numbers only (figures: their own test below)
+BARE = AnalysisOptions(figures=False)
+
+
 @pytest.fixture
 def analysed(tmp_path):
     dump = _dump(tmp_path / "run.h5")
     out = str(tmp_path / "analysis")
-    analyze_path(dump, out, AnalysisOptions(), progress=False)
+    analyze_path(dump, out, BARE, progress=False)
     return dump, out
 
 
@@ -36,23 +40,23 @@ def test_an_analysis_records_its_source_and_is_current(analysed):
     assert rec["input"] == [["run.h5", st.st_size, st.st_mtime_ns]]
     assert rec["options"]["types"] == "points" and rec["options"]["errors"] is True
     assert rec["code"] == provenance.code_hash() and len(rec["code"]) == 64
-    assert provenance.is_current(dump, out, AnalysisOptions())
+    assert provenance.is_current(dump, out, BARE)
 
 
 def test_another_dump_other_options_or_no_record_is_not_current(analysed):
     dump, out = analysed
-    assert not provenance.is_current(dump, out, AnalysisOptions(errors=False))
-    assert not provenance.is_current(dump, out, AnalysisOptions(snapshots=(0, 1)))
+    assert not provenance.is_current(dump, out, AnalysisOptions(errors=False, figures=False))
+    assert not provenance.is_current(dump, out, AnalysisOptions(snapshots=(0, 1), figures=False))
     st = os.stat(dump)
     os.utime(dump, ns=(st.st_atime_ns, st.st_mtime_ns + 1))          # the dump was rewritten
-    assert not provenance.is_current(dump, out, AnalysisOptions())
-    analyze_path(dump, out, AnalysisOptions(), progress=False)
-    assert provenance.is_current(dump, out, AnalysisOptions())
+    assert not provenance.is_current(dump, out, BARE)
+    analyze_path(dump, out, BARE, progress=False)
+    assert provenance.is_current(dump, out, BARE)
     os.remove(os.path.join(out, provenance.SOURCE_FILE))               # made before records existed
-    assert not provenance.is_current(dump, out, AnalysisOptions())
+    assert not provenance.is_current(dump, out, BARE)
     open(os.path.join(out, provenance.SOURCE_FILE), "w").write("{not json")
-    assert not provenance.is_current(dump, out, AnalysisOptions())
-    assert not provenance.is_current(dump + ".missing", out, AnalysisOptions())
+    assert not provenance.is_current(dump, out, BARE)
+    assert not provenance.is_current(dump + ".missing", out, BARE)
 
 
 def test_a_dump_in_parts_counts_its_parts(tmp_path):
@@ -94,10 +98,10 @@ def test_the_study_keeps_a_current_analysis(analysed, capsys):
 
     dump, out = analysed
     mtime = os.path.getmtime(os.path.join(out, "summary.csv"))
-    assert analyse_dump(dump, out) is None
+    assert analyse_dump(dump, out, figures=False) is None
     assert "is up to date (same dump, options and code), kept" in capsys.readouterr().out
     assert os.path.getmtime(os.path.join(out, "summary.csv")) == mtime
-    assert analyse_dump(dump, out, errors=False) is None              # other options: made again
+    assert analyse_dump(dump, out, errors=False, figures=False) is None    # other options: made again
     assert "up to date" not in capsys.readouterr().out
     assert os.path.getmtime(os.path.join(out, "summary.csv")) > mtime
 
@@ -109,13 +113,13 @@ def test_analyse_refuses_a_dump_that_is_not_complete(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "not a complete dump" in err[0]
     dump = _dump(tmp_path / "run.h5")                 # written and closed: complete
-    assert main(["--analyse", dump]) == 0
-    assert os.path.exists(tmp_path / "analysis" / "summary.csv")
-    assert main(["--analyse", dump]) == 0
+    assert main(["--analyse", dump, "--no-figures"]) == 0
+    assert os.path.exists(tmp_path / "analysis" / "summary.csv") and not list(tmp_path.rglob("*.png"))
+    assert main(["--analyse", dump, "--no-figures"]) == 0
     assert "is up to date" in capsys.readouterr().out
 
 
-def test_without_figures_the_same_files_but_the_figures(analysed, tmp_path):
+def test_without_figures_the_same_files_but_the_figures(tmp_path):
     """``figures=False`` writes every file of the analysis but the figures,
     byte for byte the same (source.json but its options' flag); an
     analysis with figures is current for one asked without them, not the
@@ -123,9 +127,10 @@ def test_without_figures_the_same_files_but_the_figures(analysed, tmp_path):
     earlier one left in its folder."""
     from postproc.pipeline import FIGURE_FILES
 
-    dump, out = analysed
-    bare = str(tmp_path / "bare")
-    analyze_path(dump, bare, AnalysisOptions(figures=False), progress=False)
+    dump = _dump(tmp_path / "run.h5")
+    out, bare = str(tmp_path / "drawn"), str(tmp_path / "bare")
+    analyze_path(dump, out, AnalysisOptions(), progress=False)
+    analyze_path(dump, bare, BARE, progress=False)
     drawn = sorted(os.listdir(out))
     assert {"qp_sff.png", "networks.png"} <= set(drawn) and set(drawn) - set(FIGURE_FILES) == set(os.listdir(bare))
     for name in os.listdir(bare):
