@@ -75,6 +75,8 @@ def main(argv=None):
     rp = sub.add_parser("report", help="the study report (figures, published values, the six claims)")
     rp.add_argument("study", help="study folder written by 'make study' (holds manifest.json)")
     rp.add_argument("--out", help="report folder (default STUDY/report)")
+    rp.add_argument("--no-figures", action="store_true",
+                    help="the report's tables and text without its figures (numbers only)")
     rs = sub.add_parser("results", help="the study's results as one JSON file, and the README's claims table")
     rs.add_argument("study", help="study folder with its report (report/claims.csv, comparison.csv, claim6.csv)")
     rs.add_argument("--out", required=True, help="results file to write (make results: "
@@ -187,7 +189,7 @@ def main(argv=None):
         if not os.path.isdir(args.study):
             print(f"postproc: error: {args.study}: no such study folder", file=sys.stderr)
             return 2
-        path = build_report(args.study, args.out)
+        path = build_report(args.study, args.out, figures=not args.no_figures)
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
         return 0
     if args.cmd == "compare-results":

@@ -121,6 +121,7 @@ def reference_index(stages):
 FIGURE_FILES = ("qp_sff.png", "anisotropies.png", "polar_last.png", "force_pdf.png", "networks.png",
                 "contact_types.png", "footprint.png")
 
+
 @dataclass(frozen=True)
 class AnalysisOptions:
     """How to analyse an input (the options of ``postproc analyze``).
@@ -182,8 +183,9 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     """Analyse every snapshot of ``path`` (a dump, a flat table or a
     LAMMPS/LIGGGHTS local dump) with :class:`AnalysisOptions` ``options``
     and write ``out/summary.csv`` (one row per snapshot) and the figures
-    (:data:`FIGURE_FILES`; without ``options.figures``, none: those an
-    earlier analysis left in ``out`` are removed).
+    (:data:`FIGURE_FILES`; without ``options.figures``, none; a figure of
+    that list an earlier analysis left in ``out`` and this one did not draw
+    is removed).
     For a dump of polyhedra also the contact types
     (:class:`postproc.classify.Classifier`), ``force_pdf.csv`` and their
     figures, and ``source.json``: the input's files, the options and the
@@ -261,7 +263,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
                 json.dump(source, fh, indent=1)
         os.makedirs(out, exist_ok=True)
         for name, keep in (("errors.txt", problems), (SOURCE_FILE, source is not None),
-                           *((f, False) for f in FIGURE_FILES if not o.figures)):
+                           *((f, os.path.exists(os.path.join(tmp, f))) for f in FIGURE_FILES)):
             stale = os.path.join(out, name)
             if not keep and os.path.exists(stale):
                 os.remove(stale)

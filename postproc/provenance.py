@@ -4,8 +4,9 @@
 ``summary.csv``: the input's files (name, size in bytes, modification time
 in ns), the analysis options, and a hash of the analysis code (every
 source file of the ``postproc`` and ``shapes`` packages, comments and
-docstrings left out). An analysis is
-current (:func:`is_current`) when all three are what they would be now, so
+docstrings left out; the options' ``figures`` only when False). An analysis is
+current (:func:`is_current`) when all three are what they would be now (but
+that one with figures is current for a request without them), so
 a rerun of the study (``make study``, ``yade_scripts.study --collect``)
 keeps it instead of analysing a 5000-grain dump again (minutes per dump),
 and redoes it when the dump, the options or the code changed. A folder
@@ -83,6 +84,8 @@ def input_files(path):
 
 def _options(options):
     d = dataclasses.asdict(options)
+    if d.get("figures", True):       # recorded only when off: a default record is what it was before the option
+        d.pop("figures", None)
     return json.loads(json.dumps(d, default=list))       # tuples -> lists, as they read back
 
 
@@ -107,8 +110,8 @@ def is_current(path, out, options):
             old = json.load(fh)
         now = stamp(path, options)
         was = dict(old.get("options") or {})
-        drew = was.pop("figures", True)             # analyses made before the option drew them
-        want = now["options"].pop("figures")
+        drew = was.pop("figures", True) is True     # recorded only when False
+        want = now["options"].pop("figures", True) is True
         return ({"input": old.get("input"), "options": was, "code": old.get("code")} == now
                 and (drew or not want))
     except (OSError, ValueError, AttributeError, TypeError):

@@ -477,7 +477,8 @@ def budget_text(b):
 def study_section(library_path, outdir, figure="library_descriptors.png"):
     """The study report's section on the grains of S1: the library's name
     and origin, its descriptors beside the published ranges (8–37
-    vertices, mean 20; 12–70 faces, mean 35) and a figure.
+    vertices, mean 20; 12–70 faces, mean 35) and, unless ``figure`` is
+    None, a figure.
 
     Parameters
     ----------

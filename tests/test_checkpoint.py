@@ -251,6 +251,8 @@ def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path
     steady = summary[(summary["stage"] == "shear") & (summary["eps_1"] >= 0.03 - 1e-9)]
     assert len(steady) == 2 and ours == pytest.approx(steady["q_over_p"].mean(), rel=1e-12)
     # the same report rebuilt from the manifest alone
+    (out / "report2").mkdir()
+    (out / "report2" / "fig_qp.png").write_bytes(b"an earlier report's")   # numbers only: not left beside them
     md2 = open(build_report(str(out), str(out / "report2"), figures=False)).read()
     assert "PARTIAL" in md2 and "Not drawn" in md2 and not list(out.rglob("*.png"))
 

@@ -221,6 +221,7 @@ def test_cli_default_is_the_point_count(tmp_path, capsys, monkeypatch):
     from builders import snapshot_dicts, write_snapshot
     from postproc.cli import main
     from postproc.footprint import DEFAULT_THRESHOLD, pair_size, relative_extents      # points: the figure's t
+    from postproc.pipeline import FIGURE_FILES
     from postproc.schema import DumpWriter
     from postproc.statistics import steady_indices
 
@@ -246,6 +247,7 @@ def test_cli_default_is_the_point_count(tmp_path, capsys, monkeypatch):
         assert main(["analyze", path, "--out", str(tmp_path / name), "--no-errors"]) == 0
         out[name] = pd.read_csv(tmp_path / name / "summary.csv")
         assert is_png(tmp_path / name / "footprint.png")      # the L1/d, L2/d figure stays
+        assert {f.name for f in (tmp_path / name).glob("*.png")} <= set(FIGURE_FILES)   # the list --no-figures clears
         pool = steady_indices(out[name]["eps_q"], out[name]["stage"])
         figs = saved.named("footprint.png")
         assert len(figs) == len(out)                                      # one per run: this run's last

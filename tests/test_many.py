@@ -29,7 +29,7 @@ def inputs(tmp_path):
 def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
     d, paths, bad = inputs
     out = tmp_path / "out"
-    assert main(["analyze", str(d), "--out", str(out), "--jobs", "2", "--no-figures"]) == 1
+    assert main(["analyze", str(d), "--out", str(out), "--jobs", "2"]) == 1
     err = capsys.readouterr().err
     assert f"{bad}:" in err and "(skipped)" in err
     df = pd.read_csv(out / "summary.csv")
@@ -37,6 +37,7 @@ def test_jobs_folder_combined_summary_and_a_bad_file(tmp_path, inputs, capsys):
     assert sorted(df["source"].unique()) == sorted(paths)
     assert len(df) == 6
     for k in range(3):
+        assert (out / f"run{k}" / "qp_sff.png").read_bytes()[:4] == b"\x89PNG"    # drawn by the workers
         one = pd.read_csv(out / f"run{k}" / "summary.csv")
         mine = df[df["source"] == paths[k]].drop(columns="source").reset_index(drop=True)
         pd.testing.assert_frame_equal(mine, one)
@@ -51,7 +52,7 @@ def test_parallel_equals_serial(tmp_path, inputs):
     assert main(["analyze", *paths, "--out", str(a), "--jobs", "1", "--no-errors", "--no-figures"]) == 0
     assert main(["analyze", *paths, "--out", str(b), "--jobs", "3", "--no-errors", "--no-figures"]) == 0
     pd.testing.assert_frame_equal(pd.read_csv(a / "summary.csv"), pd.read_csv(b / "summary.csv"))
-    assert not (a / "errors.txt").exists()
+    assert not (a / "errors.txt").exists() and not list(b.rglob("*.png"))     # --no-figures reaches the workers
 
 
 def test_nothing_analysable_and_bad_options(tmp_path, inputs, capsys):

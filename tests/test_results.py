@@ -177,6 +177,19 @@ def test_a_bad_report_is_one_line_and_writes_nothing(tmp_path, capsys, damage, m
     assert not out.exists()
 
 
+def test_a_report_without_its_q_p_figure_writes_nothing(tmp_path, capsys):
+    """A report written without figures (``--no-figures``) has no
+    fig_qp.png: asked for the README's figure, results refuses in one
+    line before writing its file."""
+    study = make_study(tmp_path / "study")
+    os.remove(study / "report" / "fig_qp.png")
+    out = tmp_path / "r.json"
+    assert main(["results", str(study), "--out", str(out), "--figure", str(tmp_path / "qp.png")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "fig_qp.png: missing (the report drew no q/p figure)" in err and len(err.splitlines()) == 1
+    assert not out.exists() and not (tmp_path / "qp.png").exists()
+
+
 def test_a_readme_without_the_markers_is_refused(tmp_path):
     readme = tmp_path / "README.md"
     readme.write_text("# no table\n")

@@ -85,7 +85,7 @@ def test_bad_options_and_empty_collect(tmp_path, capsys):
     assert study_main(["--collect", str(tmp_path / "study")]) == 2
     assert "no generated run folder" in capsys.readouterr().err
     out = make(tmp_path, (1,))
-    assert study_main(["--collect", str(out), "--no-figures"]) == 0            # nothing finished: still a manifest and a report
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0   # nothing finished: still a manifest and a report
     assert "no run has finished yet (1 not finished)" in capsys.readouterr().err
     manifest = json.loads((out / "manifest.json").read_text())
     assert [m["status"] for m in manifest["spheres"]] == ["not started"]

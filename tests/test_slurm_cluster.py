@@ -156,7 +156,7 @@ def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys, monk
                                        f"[1, 1e+09]")]
     assert not (c / "spheres-seed4").exists()                            # YADE never started
     assert "task: FINAL invalid line:" in (c / f"slurm-{job_c}_4.out").read_text()
-    assert study(["--collect", str(c), "--no-figures"]) == 0                             # a partly finished array
+    assert study(["--collect", str(c), "--no-figures"]) == 0             # a partly finished array
     err = capsys.readouterr().err
     assert f"resubmit the unfinished lines of C: sbatch --array=2,3 {c}/slurm.sh" in err
     m = json.loads((c / "manifest.json").read_text())["spheres"]

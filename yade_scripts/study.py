@@ -125,8 +125,8 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     counts : sequence of str, optional
         The other contact counts each complete S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
-    figures : bool
-        Draw the analyses' figures (False: numbers only).
+    figures : bool, optional
+        Draw the analyses' figures (default; False: numbers only).
 
     Returns
     -------
@@ -218,8 +218,8 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     counts : sequence of str, optional
         The other contact counts each complete S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
-    figures : bool
-        Draw the analyses' figures (False: numbers only).
+    figures : bool, optional
+        Draw the analyses' figures (default; False: numbers only).
 
     Returns
     -------
@@ -498,8 +498,9 @@ def collect(folder, counts=None, figures=True):
     counts : sequence of str, optional
         The other contact counts each finished S1 dump is analysed with
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
-    figures : bool
-        Draw the analyses' and the report's figures (False: numbers only).
+    figures : bool, optional
+        Draw the analyses' and the report's figures (default; False:
+        numbers only).
 
     Returns
     -------

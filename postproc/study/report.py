@@ -372,6 +372,12 @@ def _slab_pictures(picked, colour, path):
     plots.plot_slabs(panels, path, colour=colour)
 
 
+#: the figures of the report (:func:`build_report`), removed when it is written without them
+REPORT_FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png", "fig_types_polar.png",
+                  "s1_contact_types.png", "s1_footprint.png", "s1_force_pdf.png", "s1_networks.png",
+                  "packing_slab.png", "s1_slab_types.png", "library_descriptors.png")
+
+
 def build_report(study, out=None, reference=REFERENCE, figures=True):
     """Write the report of the study folder ``study``; returns the path of
     report.md. Raises nothing for failed runs: they are listed.
@@ -394,6 +400,10 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
         if not summaries.get(s):
             problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
     drawn, figures = figures, []
+    if not drawn:                      # numbers only: no figure of an earlier report stays beside them
+        for name in REPORT_FIGURES:
+            if os.path.exists(os.path.join(out, name)):
+                os.remove(os.path.join(out, name))
 
     def figure(name, fn, *args, caption=""):
         if not drawn:
@@ -443,9 +453,12 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
                           ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
                           ("networks.png", "strong and weak networks of S1")):
             src = os.path.join(s1[0]["analysis"], name)
-            if drawn and os.path.exists(src):
+            if os.path.exists(src):
                 shutil.copyfile(src, os.path.join(out, "s1_" + name))
                 figures.append(("s1_" + name, cap))
+        if not os.path.exists(os.path.join(s1[0]["analysis"], "qp_sff.png")):
+            problems.append(f"S1's analysis figures not in the report: {s1[0]['analysis']} was analysed "
+                            f"without figures (postproc analyze without --no-figures draws them)")
     picked = _slab_snapshots(runs) if drawn else {}
     if picked:
         figure("packing_slab.png", _slab_pictures, picked, "force",

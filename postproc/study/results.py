@@ -155,6 +155,9 @@ def write_results(study, path=RESULTS, figure=None):
     q/p figure (``report/fig_qp.png``) there: the README's figure. Returns
     the dict written."""
     results = collect(study)
+    src = os.path.join(study, "report", "fig_qp.png")
+    if figure and not os.path.exists(src):          # checked before anything is written
+        raise InputError(f"{src}: missing (the report drew no q/p figure)")
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     tmp = path + ".tmp"
     with open(tmp, "w") as fh:
@@ -162,9 +165,6 @@ def write_results(study, path=RESULTS, figure=None):
         fh.write("\n")
     os.replace(tmp, path)
     if figure:
-        src = os.path.join(study, "report", "fig_qp.png")
-        if not os.path.exists(src):
-            raise InputError(f"{src}: missing (the report drew no q/p figure)")
         shutil.copyfile(src, figure)
     return results
 
