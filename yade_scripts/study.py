@@ -285,9 +285,9 @@ def analyse_one(dump, counts=None, figures=True):
     """The study's analyses of one complete dump: the primary one
     (:func:`analyse_dump`) and, for polyhedra, the other contact counts
     ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`,
-    :func:`postproc.study.counts.analyse_counts`), with their figures
-    unless ``figures=False``. Returns 0 when all worked, else 1 (each
-    problem printed in one line)."""
+    :func:`postproc.study.counts.analyse_counts`, numbers only); the
+    primary one with its figures unless ``figures=False``. Returns 0 when
+    all worked, else 1 (each problem printed in one line)."""
     from postproc.schema import DumpFormatError, DumpReader
     from postproc.study.counts import analyse_counts
 
@@ -301,7 +301,7 @@ def analyse_one(dump, counts=None, figures=True):
     if analyse_dump(dump, analysis, figures=figures) is not None:
         return 1
     if sample == "polyhedra":
-        _, bad = analyse_counts(dump, analysis, counts=counts, figures=figures)
+        _, bad = analyse_counts(dump, analysis, counts=counts)
         for line in bad:
             print(f"[study] {line}", flush=True)
         return 1 if bad else 0
@@ -445,7 +445,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
                 if why != "ok":
                     failed.append(f"{s} {label}")
             if s == "polyhedra" and why in ("ok", "partial"):     # claim 6 by the other contact counts
-                done, bad = analyse_counts(dump, analysis, counts=counts, figures=figures)
+                done, bad = analyse_counts(dump, analysis, counts=counts)
                 for line in bad:
                     print(f"[study] {line}", flush=True)
                 extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}

@@ -108,7 +108,7 @@ def claim6_snapshots(summary, names):
     return tuple(sorted(out))
 
 
-def analyse_counts(dump, analysis, counts=None, progress=False, figures=True):
+def analyse_counts(dump, analysis, counts=None, progress=False, figures=False):
     """Analyse the S1 ``dump`` with each contact count of ``counts`` (None:
     :data:`EXTRA_COUNTS`), on the
     snapshots of :func:`claim6_snapshots` of its primary analysis (folder
@@ -117,7 +117,8 @@ def analyse_counts(dump, analysis, counts=None, progress=False, figures=True):
     (:func:`postproc.provenance.is_current`) is kept. Returns {count: folder}
     of the analyses that exist, and a list of one-line problems (a count
     that failed is left out and named there; the others go on).
-    ``figures``: draw each analysis's figures (False: numbers only)."""
+    ``figures``: draw each analysis's figures (default False: numbers
+    only, which is what claim 6 reads)."""
     primary = os.path.join(analysis, "summary.csv")
     done, problems = {}, []
     if not os.path.exists(primary):
