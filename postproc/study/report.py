@@ -378,43 +378,21 @@ REPORT_FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_pola
                   "packing_slab.png", "s1_slab_types.png", "library_descriptors.png")
 
 
-def build_report(study, out=None, reference=REFERENCE, figures=True):
-    """Write the report of the study folder ``study``; returns the path of
-    report.md. Raises nothing for failed runs: they are listed.
-    ``figures=False``: the same tables and text without the figures (the
-    report says so)."""
-
-    out = out or os.path.join(study, "report")
-    os.makedirs(out, exist_ok=True)
-    with open(reference) as fh:
-        ref = json.load(fh)
-    runs = discover(study)
-    summaries = run_summaries(runs)
-    problems = []
-    for s in SAMPLES:
-        for r in runs.get(s, []):
-            if r.get("status") == "partial":
-                problems.append(f"{LABEL[s]} {r['label']}: PARTIAL run, used: {r.get('note', '')}")
-            elif r.get("status") != "ok":
-                problems.append(f"{LABEL[s]} {r['label']}: {r['status']}")
-        if not summaries.get(s):
-            problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
-    drawn, figures = figures, []
-    if not drawn:                      # numbers only: no figure of an earlier report stays beside them
-        for name in REPORT_FIGURES:
-            if os.path.exists(os.path.join(out, name)):
-                os.remove(os.path.join(out, name))
+def _report_figures(out, runs, summaries, pub, problems):
+    """Draw the report's figures into ``out`` (those of
+    :data:`REPORT_FIGURES` the study's runs allow) and copy S1's analysis
+    figures there; returns [(file name, caption)] of those written. A
+    figure that cannot be drawn is named in ``problems`` (appended to), not
+    fatal. ``pub``: the published results of the reference."""
+    figures = []
 
     def figure(name, fn, *args, caption=""):
-        if not drawn:
-            return
         try:
             fn(*args, os.path.join(out, name))
             figures.append((name, caption))
         except Exception as exc:       # a figure that cannot be drawn is reported, not fatal
             problems.append(f"figure {name} not drawn: {exc.__class__.__name__}: {exc}")
 
-    pub = ref["results"]
     figure("fig_qp.png", plots.plot_report_qp, summaries,
            {s: pub["q_over_p_plateau"].get(s) for s in SAMPLES},
            caption="q/p against εq (each seed; dashed: published plateau), seed fig. 3")
@@ -423,7 +401,7 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
     figure("fig_sff.png", plots.plot_report_sff, summaries,
            caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
     polar = {}
-    for s in SAMPLES if drawn else ():
+    for s in SAMPLES:
         ok = usable_runs(runs, s)
         if ok:
             try:
@@ -434,7 +412,7 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
         figure("fig_polar.png", plots.plot_report_polar, polar,
                caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
                        "snapshot), first seed, seed figs. 5 and 7")
-    s1 = usable_runs(runs, "polyhedra") if drawn else []
+    s1 = usable_runs(runs, "polyhedra")
     if s1:
         try:
             gp = group_branch_polar(s1[0])
@@ -459,7 +437,7 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
         if not os.path.exists(os.path.join(s1[0]["analysis"], "qp_sff.png")):
             problems.append(f"S1's analysis figures not in the report: {s1[0]['analysis']} was analysed "
                             f"without figures (postproc analyze without --no-figures draws them)")
-    picked = _slab_snapshots(runs) if drawn else {}
+    picked = _slab_snapshots(runs)
     if picked:
         figure("packing_slab.png", _slab_pictures, picked, "force",
                caption="force networks in a slab 1.5 mean diameters thick through the middle of the sample "
@@ -470,6 +448,37 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
         figure("s1_slab_types.png", _slab_pictures, {"polyhedra": picked["polyhedra"]}, "type",
                caption="the same slab of S1, contacts coloured by type (the analysis's criterion), width by "
                        "f_n/⟨f_n⟩")
+    return figures
+
+
+def build_report(study, out=None, reference=REFERENCE, figures=True):
+    """Write the report of the study folder ``study``; returns the path of
+    report.md. Raises nothing for failed runs: they are listed.
+    ``figures=False``: the same tables and text without the figures (the
+    report says so)."""
+
+    out = out or os.path.join(study, "report")
+    os.makedirs(out, exist_ok=True)
+    with open(reference) as fh:
+        ref = json.load(fh)
+    runs = discover(study)
+    summaries = run_summaries(runs)
+    problems = []
+    for s in SAMPLES:
+        for r in runs.get(s, []):
+            if r.get("status") == "partial":
+                problems.append(f"{LABEL[s]} {r['label']}: PARTIAL run, used: {r.get('note', '')}")
+            elif r.get("status") != "ok":
+                problems.append(f"{LABEL[s]} {r['label']}: {r['status']}")
+        if not summaries.get(s):
+            problems.append(f"{LABEL[s]}: no analysed run; its numbers are missing below")
+    if figures:
+        drawn = _report_figures(out, runs, summaries, ref["results"], problems)
+    else:                              # numbers only: no figure of an earlier report stays beside them
+        drawn = None
+        for name in REPORT_FIGURES:
+            if os.path.exists(os.path.join(out, name)):
+                os.remove(os.path.join(out, name))
 
     rows = comparison_table(summaries, ref)
     comp = pd.DataFrame([{"quantity": q, "sample": s,
@@ -483,19 +492,19 @@ def build_report(study, out=None, reference=REFERENCE, figures=True):
     by_count = claim6_rows(count_summaries(runs, summaries))
     pd.DataFrame(by_count).to_csv(os.path.join(out, "claim6.csv"), index=False)
 
-    md = _markdown(study, runs, summaries, ref, rows, claims, figures if drawn else None, problems, by_count)
-    md += "\n".join(_library_section(runs, out, drawn))
+    md = _markdown(study, runs, summaries, ref, rows, claims, drawn, problems, by_count)
+    md += "\n".join(_library_section(runs, out, figures))
     with open(os.path.join(out, "report.md"), "w") as fh:
         fh.write(md)
     _html(md, os.path.join(out, "report.html"))
     return os.path.join(out, "report.md")
 
 
-def _library_section(runs, out, drawn=True):
+def _library_section(runs, out, figures=True):
     """The section on S1's grains (:func:`shapes.report.study_section`): the
     library the first polyhedra run used (its run folder's copy, named in
     its params.json), its name and descriptors beside the published ranges
-    (and their figure, when ``drawn``)."""
+    (and their figure, unless ``figures`` is False)."""
     from shapes.report import study_section
 
     for r in runs.get("polyhedra", []):
@@ -504,7 +513,7 @@ def _library_section(runs, out, drawn=True):
         if os.path.exists(pj):
             with open(pj) as fh:
                 return study_section(os.path.join(folder, json.load(fh).get("library", "shapes.h5")), out,
-                                     **({} if drawn else {"figure": None}))
+                                     **({} if figures else {"figure": None}))
     return []
 
 
