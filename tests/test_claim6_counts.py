@@ -39,16 +39,15 @@ def dump(tmp_path_factory):
 
 
 def _summary(dump, out, **kw):
-    analyze_path(dump, out, AnalysisOptions(errors=False, **kw), progress=False)
+    analyze_path(dump, out, AnalysisOptions(errors=False, figures=False, **kw), progress=False)
     return pd.read_csv(os.path.join(out, "summary.csv"), dtype={"snapshot": str})
 
 
-def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path, monkeypatch):
+def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path):
     """summary(alpha)'s *_hi columns equal summary(2 alpha)'s own, and its
     *_lo columns summary(alpha / 2)'s, exactly: the band test reads the
     same classification as an analysis at that parameter (numbers only:
     the analyses without their figures)."""
-    fast_analyses(monkeypatch)
     base = _summary(dump, str(tmp_path / "a"), tolerance=0.2)
     for factor, tag in ((2.0, "hi"), (0.5, "lo")):
         other = _summary(dump, str(tmp_path / tag), tolerance=0.2 * factor)
@@ -61,13 +60,12 @@ def test_band_columns_are_the_analysis_at_half_and_double(dump, tmp_path, monkey
     assert np.isfinite(base["strong_frac_FF"]).all()
 
 
-def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path, monkeypatch):
+def test_extra_count_reads_claim6_snapshots_only(dump, tmp_path):
     """LMGC90's count of a study's S1 dump: only the isotropic
     snapshot and the primary steady window are analysed, the strains are
     the primary ones, and the steady window of the count's summary is the
     primary one; a second call keeps it; a failed count is one line
     (numbers only: the analyses without their figures)."""
-    fast_analyses(monkeypatch)
     ana = str(tmp_path / "analysis")
     primary = _summary(dump, ana)
     steady = primary["snapshot"].iloc[steady_indices(primary["eps_q"], primary["stage"])].tolist()
@@ -127,11 +125,10 @@ def test_claim6_at_a_band_reads_its_columns():
     assert "tolerance 0.1 V/area" in nominal["numbers"] and "tolerance 0.05 V/area" in half["numbers"]
 
 
-def test_report_states_claim6_by_count(dump, tmp_path, monkeypatch):
+def test_report_states_claim6_by_count(dump, tmp_path):
     """A study with one S1 run analysed by both counts: the report's claim-6
     section and claim6.csv list each count at x 0.5, x 1, x 2 (the analyses
-    without their figures)."""
-    fast_analyses(monkeypatch)
+    and the report without their figures)."""
     from postproc.study.report import build_report
 
     study = tmp_path / "study"
@@ -141,23 +138,12 @@ def test_report_states_claim6_by_count(dump, tmp_path, monkeypatch):
     manifest = {"polyhedra": [{"label": "seed 1", "dump": dump, "analysis": str(ana), "info": None, "status": "ok",
                                "counts": {c: os.path.relpath(f, study) for c, f in done.items()}}]}
     (study / "manifest.json").write_text(json.dumps(manifest))
-    md = open(build_report(str(study))).read()
+    md = open(build_report(str(study), figures=False)).read()
     table = pd.read_csv(study / "report" / "claim6.csv")
     assert table["count"].tolist() == ["points"] * 3 + ["lmgc90"] * 3
     assert table["factor"].tolist() == [0.5, 1.0, 2.0] * 2
     assert "## Claim 6 by contact count" in md
     assert sum(line.startswith("| lmgc90 | 1 |") for line in md.splitlines()) == 3
-
-
-def fast_analyses(mp):
-    """Analyses without their figures and code hash (``mp`` a
-    pytest.MonkeyPatch): the same numbers in a fraction of the time."""
-    from postproc import pipeline, provenance
-
-    for name in ("plot_qp_sff", "plot_anisotropies", "plot_polar", "plot_force_pdf", "plot_networks",
-                 "plot_contact_types", "plot_footprint"):
-        mp.setattr(pipeline.plots, name, lambda *args, **kw: None)
-    mp.setattr(provenance, "code_hash", lambda: "tests")
 
 
 @pytest.fixture(scope="module")
@@ -166,23 +152,20 @@ def tiny_study(dump, tmp_path_factory):
     point count, as ``make study`` leaves it (without its other counts)."""
     study = tmp_path_factory.mktemp("tiny-study")
     ana = study / "analysis"
-    with pytest.MonkeyPatch.context() as mp:
-        fast_analyses(mp)
-        analyze_path(dump, str(ana), AnalysisOptions(errors=False), progress=False)
+    analyze_path(dump, str(ana), AnalysisOptions(errors=False, figures=False), progress=False)
     manifest = {"polyhedra": [{"label": "seed 1", "dump": dump, "analysis": str(ana), "info": None, "status": "ok",
                                "counts": {}}]}
     (study / "manifest.json").write_text(json.dumps(manifest))
     return str(study)
 
 
-def test_claim6_criteria_command(tiny_study, monkeypatch, capsys):
+def test_claim6_criteria_command(tiny_study, capsys):
     """``postproc claim6-criteria`` on a tiny study with the point count at
     its own tolerance (read from the study's analysis) and at half and
     twice it (analysed into STUDY/claim6): a verdict row each, the
     stability test and its figure; a folder without a study: exit 2."""
     from postproc.cli import main
 
-    fast_analyses(monkeypatch)
     assert main(["claim6-criteria", tiny_study, "--types", "points", "--tolerance", "0.05", "0.2"]) == 0
     out = os.path.join(tiny_study, "claim6")
     assert sorted(os.listdir(out)) == ["claim6.md", "points-tolerance.png", "seed1-points-tol0.05",
@@ -200,7 +183,7 @@ def test_claim6_criteria_command(tiny_study, monkeypatch, capsys):
     assert "no usable S1 run" in capsys.readouterr().err
 
 
-def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, monkeypatch, capsys):
+def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, capsys):
     """``python -m yade_scripts.study --counts``: each S1 dump analysed once
     more per count given (here the 2009 route), the manifest listing them
     and the report reading claim 6 by each; a second pass with one more
@@ -211,13 +194,12 @@ def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, monkeypatc
 
     from yade_scripts import study as st
 
-    fast_analyses(monkeypatch)
     out = tmp_path / "study"
     (out / "polyhedra").mkdir(parents=True)
     run = str(out / "polyhedra" / "run.h5")
     shutil.copy(dump, run)
     runs = {"polyhedra": [("seed 1", run, 0)]}
-    assert st.analyse_and_report(str(out), runs, counts=("lmgc90-2009",)) == []
+    assert st.analyse_and_report(str(out), runs, counts=("lmgc90-2009",), figures=False) == []
     manifest = json.loads((out / "manifest.json").read_text())["polyhedra"][0]
     assert manifest["counts"] == {"lmgc90-2009": os.path.join("polyhedra", "analysis-lmgc90-2009")}
     first = out / "polyhedra" / "analysis-lmgc90-2009" / "summary.csv"
@@ -225,7 +207,7 @@ def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, monkeypatc
     table = pd.read_csv(out / "report" / "claim6.csv")
     assert table["count"].tolist() == ["points"] * 3 + ["lmgc90-2009"] * 3
     mtime = os.path.getmtime(first)
-    assert st.analyse_and_report(str(out), runs, counts=("lmgc90", "lmgc90-2009")) == []
+    assert st.analyse_and_report(str(out), runs, counts=("lmgc90", "lmgc90-2009"), figures=False) == []
     assert os.path.getmtime(first) == mtime                         # kept, not made again
     assert sorted(json.loads((out / "manifest.json").read_text())["polyhedra"][0]["counts"]) == [
         "lmgc90", "lmgc90-2009"]
@@ -236,7 +218,7 @@ def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, monkeypatc
     assert st.analyse_after(job)[-2:] == ["--analyse", os.path.abspath(run)]
     assert st.analyse_after(job, ("lmgc90-2009",))[-2:] == ["--counts", "lmgc90-2009"]
     shutil.rmtree(out / "polyhedra" / "analysis-lmgc90-planplan", ignore_errors=True)
-    assert st.main(["--analyse", run, "--counts", "lmgc90-planplan"]) == 0
+    assert st.main(["--analyse", run, "--counts", "lmgc90-planplan", "--no-figures"]) == 0
     assert (out / "polyhedra" / "analysis-lmgc90-planplan" / "summary.csv").exists()
     capsys.readouterr()
     # refused in one line, nothing made

@@ -11,7 +11,6 @@ import pytest
 from builders import snapshot_dicts
 from postproc.cli import main
 from postproc.schema import DumpWriter
-from test_claim6_counts import fast_analyses
 from test_footprint_types import kernel_snapshot
 
 GROUPS = ("simple", "double", "triple")
@@ -45,9 +44,7 @@ def kernel_dump(tmp_path_factory):
 def kappa_table(kernel_dump, tmp_path_factory):
     """``postproc contact-types-kappa`` on the dump (both shear snapshots)."""
     out = tmp_path_factory.mktemp("ctk")
-    with pytest.MonkeyPatch.context() as mp:
-        fast_analyses(mp)
-        assert main(["contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     return out
 
 
