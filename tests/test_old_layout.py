@@ -73,7 +73,7 @@ def test_make_study_on_old_folders_resumes_the_unfinished_run_and_reruns_nothing
     manifest = json.loads((study / "manifest.json").read_text())
     assert [r["status"] for s in ("polyhedra", "spheres") for r in manifest[s]] == ["ok"] * 4
     md = (study / "report" / "report.md").read_text()                   # numbers only: no figure anywhere
-    assert "Not drawn: the study ran with `--no-figures`" in md and "![" not in md
+    assert "Not drawn: the report was written with `--no-figures`" in md and "![" not in md
     assert not list(study.rglob("*.png"))
 
 

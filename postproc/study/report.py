@@ -585,7 +585,7 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
         lines += [f"* {r['count']}: {r['numbers']}" for r in by_count if r["factor"] == 1.0]
     lines += ["", "## Figures", ""]
     if figures is None:
-        lines += ["Not drawn: the study ran with `--no-figures` (numbers only).", ""]
+        lines += ["Not drawn: the report was written with `--no-figures` (numbers only).", ""]
     for name, cap in figures or ():
         lines += [f"![{cap}]({name})", "", f"*{cap}*", ""]
     return "\n".join(lines) + "\n"
