@@ -188,3 +188,70 @@ def test_a_second_study_on_one_folder_refuses_before_touching_it(tmp_path, capsy
         assert os.listdir(out) == ["study.lock"]
     finally:
         p.communicate("")
+
+
+HOLD = ("import sys, time; sys.path.insert(0, {root!r}); from yade_scripts import runlock; "
+        "l = runlock.RunLock(sys.argv[1], 'study').acquire(); print('HELD', flush=True); {then}")
+
+
+def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tmp_path, capsys):
+    """The manifest and report have one writer (OUT/report.lock): a
+    ``--collect`` while a study's end (here: another process holding the
+    lock) writes them exits 4 in one line naming it, and writes nothing;
+    once it is free, the same collect writes both and leaves the lock
+    free."""
+    from yade_scripts.generate import generate
+    from yade_scripts.study import REPORT_LOCK
+    from yade_scripts.study import main as study_main
+
+    out = tmp_path / "t1"
+    generate(str(out), "tiny", "spheres", seeds=[1])
+    before = sorted(os.listdir(out))
+    p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.read()"),
+                          str(out / REPORT_LOCK)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    try:
+        assert p.stdout.readline().strip() == "HELD"
+        assert study_main(["--collect", str(out), "--no-figures"]) == 4
+        err = capsys.readouterr().err.strip().splitlines()[-1]
+        assert err == (f"study: error: the report of {out} (manifest.json, report/) is being written by "
+                       f"{runlock.describe(holder(str(out / REPORT_LOCK)))}; nothing was touched (stop that one "
+                       f"first, or wait for it)")
+        assert sorted(os.listdir(out)) == sorted(before + [REPORT_LOCK])
+    finally:
+        p.communicate("")
+    assert study_main(["--collect", str(out), "--no-figures"]) == 0
+    assert (out / "manifest.json").exists() and (out / "report" / "report.md").exists()
+    assert (out / REPORT_LOCK).read_text() == "" and holder(str(out / REPORT_LOCK)) is None
+
+
+def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys):
+    """The study's own end (``wait=True``) does not give up its report: it
+    waits, saying so once, until the other writer lets go, then writes."""
+    import time
+
+    from yade_scripts import study
+
+    out = tmp_path / "study"
+    out.mkdir()
+    wrote = []
+    monkeypatch.setattr(study, "_analyse_and_report", lambda *a: wrote.append(time.monotonic()) or [])
+    monkeypatch.setattr(study, "REPORT_WAIT_SECONDS", 0.05)
+    p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.readline()"),
+                          str(out / study.REPORT_LOCK)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline().strip() == "HELD"
+    with pytest.raises(RunBusy):                       # without waiting: refused, nothing written
+        study.analyse_and_report(str(out), {})
+    assert wrote == []
+    import threading
+
+    released = []
+    t = threading.Timer(0.5, lambda: (released.append(time.monotonic()), p.communicate("\n")))
+    t.start()
+    try:
+        assert study.analyse_and_report(str(out), {}, wait=True) == []
+    finally:
+        t.join()
+    assert len(wrote) == 1 and wrote[0] >= released[0]
+    said = [line for line in capsys.readouterr().out.splitlines() if "waiting for" in line]
+    assert len(said) == 1 and f"to finish writing the manifest and report of {out}" in said[0]
+    assert holder(str(out / study.REPORT_LOCK)) is None

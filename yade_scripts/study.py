@@ -29,7 +29,8 @@ keeps every analysis made from the same dump, options and code
 failed run is reported and everything else still builds. Exit codes: 0
 when every sample has a usable run (a failed run is then listed in the
 report); 1 when a sample has none; 2 for invalid options; 4 when another
-process writes the folder or one of its runs (nothing touched); 75 when
+process writes the folder or one of its runs, or (``--collect``) its
+manifest and report (nothing touched); 75 when
 stopped (SIGTERM, Ctrl-C: run the same command again to resume).
 """
 from __future__ import annotations
@@ -41,17 +42,22 @@ import os
 import re
 import shutil
 import sys
+import time
 
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
 from .resources import check_memory, memory_mb
-from .runlock import RunBusy, RunLock
+from .runlock import RunBusy, RunLock, describe
 from .runstate import EXIT_BUSY, EXIT_TERM, complete, read_attempts
 
 
 #: a run folder set aside because its parameters changed (FOLDER.old-K)
 SET_ASIDE = re.compile(r"\.old-\d+$")
+#: the lock on a folder's manifest and report (:func:`report_lock`)
+REPORT_LOCK = "report.lock"
+#: seconds between two tries of a report lock the study waits for
+REPORT_WAIT_SECONDS = 2.0
 
 
 def finished(folder):
@@ -381,9 +387,48 @@ def partial_progress(dump):
             "steady_from_eps_1": start, "steady_snapshots": int(np.sum(eps >= start - 1e-9))}
 
 
-def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True):
+def report_lock(out, wait=False):
+    """Take the lock on OUT's manifest and report (``OUT/report.lock``,
+    :data:`REPORT_LOCK`): one process writes them, and the analyses
+    before them, at a time (a study's end, ``--collect``).
+
+    Parameters
+    ----------
+    out : str
+        The study or run folder.
+    wait : bool, optional
+        False (default): raise :class:`yade_scripts.runlock.RunBusy`
+        (one line, naming the holder) when another process holds it;
+        True: wait for it, saying so once (a study that has run for
+        hours does not give up its report for a ``--collect``).
+
+    Returns
+    -------
+    RunLock
+        The lock, held; ``release()`` it.
+    """
+    lock = RunLock(os.path.join(out, REPORT_LOCK), "report", subject=f"the report of {out} (manifest.json, report/)")
+    said = False
+    while True:
+        try:
+            return lock.acquire()
+        except RunBusy as exc:
+            if not wait:
+                raise
+            if not said:
+                print(f"[study] waiting for {describe(exc.holder)} to finish writing the manifest and report of "
+                      f"{out}", flush=True)
+                said = True
+            time.sleep(REPORT_WAIT_SECONDS)
+
+
+def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True, wait=False):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
+    Holds OUT's report lock (:func:`report_lock`) meanwhile: with
+    ``wait`` (the study's end) it waits for another writer, else it raises
+    :class:`yade_scripts.runlock.RunBusy` before analysing or writing
+    anything (``--collect``).
     Each usable S1 dump is also analysed with the other contact counts
     ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`), which
     the manifest lists and the report reads claim 6 by. ``figures=False``:
@@ -399,6 +444,15 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     {(sample, label): [exit code of each attempt]}
     (default: each run's record, :func:`run_exits`) goes into the manifest
     when a run was resumed."""
+    lock = report_lock(out, wait)
+    try:
+        return _analyse_and_report(out, runs, attempts, unfinished, counts, figures)
+    finally:
+        lock.release()
+
+
+def _analyse_and_report(out, runs, attempts, unfinished, counts, figures):
+    """:func:`analyse_and_report`'s work, its lock held."""
     from postproc.study.counts import analyse_counts
     from postproc.study.report import build_report
 
@@ -519,6 +573,10 @@ def collect(folder, counts=None, figures=True):
     ------
     ConfigError
         ``folder`` is missing or holds no run folder.
+    RunBusy
+        Another process (a study at its end, another collect) writes the
+        folder's manifest and report (:func:`report_lock`): nothing is
+        analysed or written.
 
     Examples
     --------
@@ -533,7 +591,7 @@ def collect(folder, counts=None, figures=True):
     >>> resubmit[out]
     'python -m yade_scripts.batch .../t1 --only spheres-seed1'
     >>> sorted(os.listdir(out))
-    ['manifest.json', 'params.json', 'pkg', 'report', 'table.txt', 'triaxial.py']
+    ['manifest.json', 'params.json', 'pkg', 'report', 'report.lock', 'table.txt', 'triaxial.py']
     """
     from .batch import dump_of, table_lines
     from .runstate import state_of
@@ -644,7 +702,8 @@ def main(argv=None):
         The exit code (the module docstring): 0 every sample has a usable
         run; 1 a sample has none (with ``--collect``: an analysis failed;
         with ``--analyse``: it failed); 2 invalid options; 4 another
-        process writes the folder or one of its runs; 75 stopped (SIGTERM,
+        process writes the folder or one of its runs, or (``--collect``)
+        its manifest and report; 75 stopped (SIGTERM,
         Ctrl-C: run the same command again to resume).
     """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.study", description=__doc__.splitlines()[0])
@@ -693,6 +752,9 @@ def main(argv=None):
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
+        except RunBusy as exc:      # a study's end or another --collect writes the manifest and report
+            print(f"study: error: {exc}", file=sys.stderr)
+            return EXIT_BUSY
         n = sum(len(v) for v in runs.values())
         print(f"study: collected {n} finished run(s), {len(pending)} not finished; report in "
               f"{args.collect}/report/report.md", file=sys.stderr)
@@ -749,7 +811,7 @@ def _study(args, overrides):
         print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
               f"checkpoint; run the same command again to resume", file=sys.stderr)
         return EXIT_TERM
-    failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures)
+    failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures, wait=True)
     missing = unusable_samples(args.out)
     if failed:
         print(f"study: failed: {', '.join(failed)} (the report lists them; partial runs are used)", file=sys.stderr)
