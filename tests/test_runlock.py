@@ -212,7 +212,7 @@ def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tm
     try:
         assert p.stdout.readline().strip() == "HELD"
         assert study_main(["--collect", str(out), "--no-figures"]) == 4
-        err = capsys.readouterr().err.strip().splitlines()[-1]
+        err = capsys.readouterr().err.strip()
         assert err == (f"study: error: the report of {out} (manifest.json, report/) is being written by "
                        f"{runlock.describe(holder(str(out / REPORT_LOCK)))}; nothing was touched (stop that one "
                        f"first, or wait for it)")
@@ -227,6 +227,7 @@ def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tm
 def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys):
     """The study's own end (``wait=True``) does not give up its report: it
     waits, saying so once, until the other writer lets go, then writes."""
+    import threading
     import time
 
     from yade_scripts import study
@@ -238,20 +239,41 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
     monkeypatch.setattr(study, "REPORT_WAIT_SECONDS", 0.05)
     p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.readline()"),
                           str(out / study.REPORT_LOCK)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
-    assert p.stdout.readline().strip() == "HELD"
-    with pytest.raises(RunBusy):                       # without waiting: refused, nothing written
-        study.analyse_and_report(str(out), {})
-    assert wrote == []
-    import threading
-
     released = []
-    t = threading.Timer(0.5, lambda: (released.append(time.monotonic()), p.communicate("\n")))
-    t.start()
     try:
-        assert study.analyse_and_report(str(out), {}, wait=True) == []
+        assert p.stdout.readline().strip() == "HELD"
+        with pytest.raises(RunBusy, match=r"\(a study\)"):       # without waiting: refused, nothing written
+            study.analyse_and_report(str(out), {})
+        assert wrote == []
+        t = threading.Timer(0.5, lambda: (released.append(time.monotonic()), p.communicate("\n")))
+        t.start()
+        try:
+            assert study.analyse_and_report(str(out), {}, wait=True) == []
+        finally:
+            t.join()
     finally:
-        t.join()
+        if p.poll() is None:
+            p.communicate("\n")
     assert len(wrote) == 1 and wrote[0] >= released[0]
     said = [line for line in capsys.readouterr().out.splitlines() if "waiting for" in line]
     assert len(said) == 1 and f"to finish writing the manifest and report of {out}" in said[0]
     assert holder(str(out / study.REPORT_LOCK)) is None
+
+
+def test_the_report_lock_is_let_go_when_the_report_fails(tmp_path, monkeypatch):
+    """An analysis or report that raises leaves the lock free (a collect
+    after it is not refused), and a collect that holds it is named so."""
+    from yade_scripts import study
+
+    def fails(*a):
+        code, said = child(TRY, os.path.join(a[0], study.REPORT_LOCK))
+        seen.append(said)
+        raise OSError("disk full")
+
+    seen = []
+    monkeypatch.setattr(study, "_analyse_and_report", fails)
+    with pytest.raises(OSError, match="disk full"):
+        study.analyse_and_report(str(tmp_path), {})
+    assert seen[0].startswith("BUSY") and "(a collect)" in seen[0]
+    assert holder(str(tmp_path / study.REPORT_LOCK)) is None
+    assert child(TRY, tmp_path / study.REPORT_LOCK) == (0, "GOT")

@@ -27,6 +27,9 @@ Who holds it:
 * the study holds one more on its whole folder (``OUT/study.lock``), so that
   a second study on the folder refuses before it generates or sets aside
   anything.
+* the writer of a folder's manifest and report holds ``FOLDER/report.lock``
+  (:func:`yade_scripts.study.report_lock`): a study at its end, which waits
+  for it, or a ``--collect``, which refuses while another holds it.
 
 POSIX locks belong to a process, and closing *any* descriptor of the file
 releases them all; so a process opens each lock file once (a registry of

@@ -389,8 +389,10 @@ def partial_progress(dump):
 
 def report_lock(out, wait=False):
     """Take the lock on OUT's manifest and report (``OUT/report.lock``,
-    :data:`REPORT_LOCK`): one process writes them, and the analyses
-    before them, at a time (a study's end, ``--collect``).
+    :data:`REPORT_LOCK`): one process writes them at a time (a study's
+    end, ``--collect``; ``postproc report``, which never imports
+    yade_scripts, takes no lock). The holder's record names it a study
+    (``wait``) or a collect.
 
     Parameters
     ----------
@@ -407,7 +409,8 @@ def report_lock(out, wait=False):
     RunLock
         The lock, held; ``release()`` it.
     """
-    lock = RunLock(os.path.join(out, REPORT_LOCK), "report", subject=f"the report of {out} (manifest.json, report/)")
+    lock = RunLock(os.path.join(out, REPORT_LOCK), "study" if wait else "collect",
+                   subject=f"the report of {out} (manifest.json, report/)")
     said = False
     while True:
         try:
@@ -593,10 +596,6 @@ def collect(folder, counts=None, figures=True):
     >>> sorted(os.listdir(out))
     ['manifest.json', 'params.json', 'pkg', 'report', 'report.lock', 'table.txt', 'triaxial.py']
     """
-    from .batch import dump_of, table_lines
-    from .runstate import state_of
-    from .slurm import queue_detail, queue_states
-
     if not os.path.isdir(folder):
         raise ConfigError(f"{folder}: no such folder")
     tables = [folder] if os.path.exists(os.path.join(folder, "table.txt")) else sorted(
@@ -604,6 +603,19 @@ def collect(folder, counts=None, figures=True):
         if os.path.exists(os.path.join(folder, d, "table.txt")) and not SET_ASIDE.search(d))
     if not tables:
         raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
+    lock = report_lock(folder)      # before looking at the runs: a refusal is one line, and no older scan
+    try:                            # overwrites what a study's end wrote meanwhile
+        return _collect(folder, tables, counts, figures)
+    finally:
+        lock.release()
+
+
+def _collect(folder, tables, counts, figures):
+    """:func:`collect`'s work on its run folders ``tables``, the report lock held."""
+    from .batch import dump_of, table_lines
+    from .runstate import state_of
+    from .slurm import queue_detail, queue_states
+
     runs, others, pending, resubmit = {}, {}, [], {}
     for t in tables:
         prefix = f"{os.path.basename(t)} " if len(tables) > 1 else ""
@@ -811,8 +823,12 @@ def _study(args, overrides):
         print(f"study: stopped (SIGTERM or Ctrl-C): {', '.join(stopped)} not finished, each run kept its "
               f"checkpoint; run the same command again to resume", file=sys.stderr)
         return EXIT_TERM
-    failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures, wait=True)
-    missing = unusable_samples(args.out)
+    lock = report_lock(args.out, wait=True)        # the manifest read back as written: no collect in between
+    try:
+        failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures)
+        missing = unusable_samples(args.out)
+    finally:
+        lock.release()
     if failed:
         print(f"study: failed: {', '.join(failed)} (the report lists them; partial runs are used)", file=sys.stderr)
     if missing:
