@@ -35,6 +35,10 @@ except runlock.RunBusy as exc:
     print("BUSY", exc)
 """
 
+#: another process that holds a lock (as a study: its record says so) until ``then`` returns
+HOLD = ("import sys, time; sys.path.insert(0, {root!r}); from yade_scripts import runlock; "
+        "l = runlock.RunLock(sys.argv[1], 'study').acquire(); print('HELD', flush=True); {then}")
+
 
 def test_a_second_process_is_refused_in_one_line_naming_the_holder(tmp_path):
     path = tmp_path / "run.lock"
@@ -174,10 +178,8 @@ def test_a_second_study_on_one_folder_refuses_before_touching_it(tmp_path, capsy
 
     out = tmp_path / "study"
     out.mkdir()
-    p = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {ROOT!r}); from yade_scripts "
-                          "import runlock; l = runlock.RunLock(sys.argv[1], 'study').acquire(); print('HELD', "
-                          "flush=True); sys.stdin.read()", str(out / "study.lock")],
-                         stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.read()"),
+                          str(out / "study.lock")], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     try:
         assert p.stdout.readline().strip() == "HELD"
         assert study_main(["--preset", "tiny", "--out", str(out)]) == 4
@@ -189,9 +191,6 @@ def test_a_second_study_on_one_folder_refuses_before_touching_it(tmp_path, capsy
     finally:
         p.communicate("")
 
-
-HOLD = ("import sys, time; sys.path.insert(0, {root!r}); from yade_scripts import runlock; "
-        "l = runlock.RunLock(sys.argv[1], 'study').acquire(); print('HELD', flush=True); {then}")
 
 
 def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tmp_path, capsys):
@@ -225,8 +224,12 @@ def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tm
 
 
 def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys):
-    """The study's own end (``wait=True``) does not give up its report: it
-    waits, saying so once, until the other writer lets go, then writes."""
+    """The study's own end does not give up its report to a ``--collect``:
+    it waits, saying so once, until the other writer lets go, then
+    analyses, writes and reads its manifest back (the study's runs and the
+    analyses stubbed; the lock and the waiting are the real ones), while
+    ``analyse_and_report`` alone, not waiting, is refused."""
+    import argparse
     import threading
     import time
 
@@ -235,8 +238,16 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
     out = tmp_path / "study"
     out.mkdir()
     wrote = []
-    monkeypatch.setattr(study, "_analyse_and_report", lambda *a: wrote.append(time.monotonic()) or [])
+
+    def analyses(out_, runs, *rest):
+        wrote.append(time.monotonic())
+        (out / "manifest.json").write_text(json.dumps({s: [{"status": "ok"}] for s in runs}))
+        return []
+
+    monkeypatch.setattr(study, "_analyse_and_report", analyses)
+    monkeypatch.setattr(study, "run_samples", lambda *a, **k: {"polyhedra": 0, "spheres": 0})
     monkeypatch.setattr(study, "REPORT_WAIT_SECONDS", 0.05)
+    args = argparse.Namespace(ensemble=1, out=str(out), preset="tiny", library=None, counts=None, no_figures=True)
     p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.readline()"),
                           str(out / study.REPORT_LOCK)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     released = []
@@ -248,7 +259,7 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
         t = threading.Timer(0.5, lambda: (released.append(time.monotonic()), p.communicate("\n")))
         t.start()
         try:
-            assert study.analyse_and_report(str(out), {}, wait=True) == []
+            assert study._study(args, {}) == 0
         finally:
             t.join()
     finally:

@@ -425,13 +425,13 @@ def report_lock(out, wait=False):
             time.sleep(REPORT_WAIT_SECONDS)
 
 
-def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True, wait=False):
+def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
-    Holds OUT's report lock (:func:`report_lock`) meanwhile: with
-    ``wait`` (the study's end) it waits for another writer, else it raises
+    Holds OUT's report lock (:func:`report_lock`) meanwhile, or raises
     :class:`yade_scripts.runlock.RunBusy` before analysing or writing
-    anything (``--collect``).
+    anything when another process holds it (its callers, the study's end
+    and ``--collect``, take it first, over a wider span).
     Each usable S1 dump is also analysed with the other contact counts
     ``counts`` (default :data:`postproc.study.counts.EXTRA_COUNTS`), which
     the manifest lists and the report reads claim 6 by. ``figures=False``:
@@ -447,7 +447,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     {(sample, label): [exit code of each attempt]}
     (default: each run's record, :func:`run_exits`) goes into the manifest
     when a run was resumed."""
-    lock = report_lock(out, wait)
+    lock = report_lock(out)
     try:
         return _analyse_and_report(out, runs, attempts, unfinished, counts, figures)
     finally:
