@@ -227,7 +227,11 @@ class Classifier:
         w = lambda a, b: np.where(lo.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
         args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
 
-        count = lambda alert: cpl.lmgc90_points(*args, alert * r_min, route=self.method, min_radius=r_min)
+        # the alert distance and, for the band test, its half and double: one detection for all three
+        alerts = [self.tolerance, self.tolerance / 2, self.tolerance * 2] if variants else [self.tolerance]
+        got = dict(zip(alerts, cpl.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
+                                                        min_radius=r_min)))
+        count = got.__getitem__
         return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
     def _commonplane_classes(self, snap, variants):

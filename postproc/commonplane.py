@@ -788,19 +788,34 @@ def _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor
 
 def _hull2(P):
     """Convex hull (counter-clockwise, no collinear vertices) of 2-D points
-    P (k, 2), exact (Andrew's monotone chain); (m, 2), m may be < 3."""
-    P = np.unique(P, axis=0)
+    P (k, 2), exact (Andrew's monotone chain); (m, 2), m may be < 3.
+
+    The points are sorted by x, then y, and repeated points dropped (what
+    ``np.unique(P, axis=0)`` does, at a fraction of its cost on a few
+    points); the chain runs on Python floats, whose arithmetic is that of
+    float64."""
+    P = np.asarray(P, dtype=float).reshape(-1, 2)
+    if len(P) > 1:
+        P = P[np.lexsort((P[:, 1], P[:, 0]))]
+        new = np.empty(len(P), bool)
+        new[0] = True
+        np.any(P[1:] != P[:-1], axis=1, out=new[1:])
+        P = P[new]
     if len(P) < 3:
         return P
 
     def half(pts):
         h = []
         for p in pts:
-            while len(h) >= 2 and _cross2(h[-1] - h[-2], p - h[-2]) <= 0:
+            while len(h) >= 2:
+                (ax, ay), (bx, by) = h[-2], h[-1]
+                if (bx - ax) * (p[1] - ay) - (by - ay) * (p[0] - ax) > 0:
+                    break
                 h.pop()
             h.append(p)
         return h
-    lo, hi = half(P), half(P[::-1])
+    pts = P.tolist()
+    lo, hi = half(pts), half(pts[::-1])
     return np.array(lo[:-1] + hi[:-1])
 
 
@@ -1429,66 +1444,75 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     mid_P = 0.5 * (an.c + cd.c)
     normal, t, s, gap, jmin, imax, center = _cundall(cd, an, cd_vis, an_vis, mid_P, sep, iterations, ref_size)
     cd_k, an_k, ref, hc, ha = _mark_band(cd, an, cd_vis, an_vis, jmin, imax, center, normal, gap, neighbor)
-    return _point_stage(cd, an, adist, route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
-                        cd_k, an_k, ref, hc, ha)
+    return _point_stage(cd, an, [adist], route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
+                        cd_k, an_k, ref, hc, ha)[0]
 
 
-def _point_stage(cd, an, adist, route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
+def _point_stage(cd, an, adists, route, neighbor, clip_eps, normal, t, s, gap, jmin, imax, center,
                  cd_k, an_k, ref, hc, ha):
     """The contact-type and point stages of DETECTION_COMMON_PLANE after
-    the band (see :func:`lmgc90_pair`)."""
+    the band (see :func:`lmgc90_pair`), at each alert distance of
+    ``adists`` (m): a list of results, one per alert distance. What does
+    not depend on the alert distance (the types, the geometric points,
+    planplan, the wider band's planplan) is computed once."""
     cs, cg = _side(cd, cd_k, jmin, normal, -1.0)
     as_, ag = _side(an, an_k, imax, normal, +1.0)
     code = cs + 10 * as_
     res = {"normal": normal, "gap": gap, "stage": code}
-    if route == "lmgc90-planplan":
-        P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
-        return {**res, "points": P, "gaps": np.full(len(P), gap)}
-    if route == "lmgc90-2009":
-        P = _planplan_2009(cd, an, cd_k, an_k, center, t, normal, s, TOL_2009 * ref)
-        return {**res, "points": P, "gaps": np.full(len(P), gap)}
+    if route in ("lmgc90-planplan", "lmgc90-2009"):
+        if route == "lmgc90-planplan":
+            P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
+        else:
+            P = _planplan_2009(cd, an, cd_k, an_k, center, t, normal, s, TOL_2009 * ref)
+        return [{**res, "points": P, "gaps": np.full(len(P), gap)} for _ in adists]
     X, A = cd.X, an.X
-    pts = []
+    cand, sign, fixed = [], 1, None          # the points before LMGC90's per-point test (_accept)
     if code == 11:
-        pts = _accept([_node_node(X[cg], A[ag], normal)], adist, normal, 1)
+        cand = [_node_node(X[cg], A[ag], normal)]
     elif code == 12:
-        p = _node_edge(A[ag], X[cg[0]], X[cg[1]], -normal)
-        pts = _accept([p], adist, normal, -1)
+        cand, sign = [_node_edge(A[ag], X[cg[0]], X[cg[1]], -normal)], -1
     elif code == 13:
         r = _node_face(A[ag], X[cd.shape.contour[cg]], cd.FN[cg])
-        pts = [] if r is None else _accept([r], adist, normal, -1)
+        cand, sign = ([] if r is None else [r]), -1
     elif code == 21:
-        pts = _accept([_node_edge(X[cg], A[ag[0]], A[ag[1]], normal)], adist, normal, 1)
+        cand = [_node_edge(X[cg], A[ag[0]], A[ag[1]], normal)]
     elif code == 22:
-        r = _edge_edge(X[cg[0]], X[cg[1]], A[ag[0]], A[ag[1]], normal)
-        pts = _accept(r, adist, normal, 1)
+        cand = _edge_edge(X[cg[0]], X[cg[1]], A[ag[0]], A[ag[1]], normal)
     elif code == 23:
         r = _edge_face(A[ag[0]], A[ag[1]], X[cd.shape.contour[cg]], cd.FN[cg])
-        pts = [] if r is None else _accept(r, adist, normal, -1)
+        cand, sign = ([] if r is None else r), -1
     elif code == 31:
         r = _node_face(X[cg], A[an.shape.contour[ag]], normal)
-        pts = [] if r is None else _accept([r], adist, normal, 1)
+        cand = [] if r is None else [r]
     elif code == 32:
         r = _edge_face(X[cg[0]], X[cg[1]], A[an.shape.contour[ag]], an.FN[ag])
-        pts = [] if r is None else _accept(r, adist, normal, 1)
-    else:                                                         # 33: face on face
+        cand = [] if r is None else r
+    else:                                                         # 33: face on face, no per-point test
         P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
-        pts = [(p, normal, gap) for p in P]
-    if not pts and gap < adist:
-        # no point: the band ten times wider, and planplan
-        d1 = max(0.0, gap * 0.5) + 10 * neighbor * ref
-        cd_w, an_w = cd_k.copy(), an_k.copy()
-        m = (cd_w != 0) & (np.arange(len(cd_w)) != jmin)
-        cd_w[m & (hc > d1)] = 0
-        cd_w = np.abs(cd_w)
-        m = (an_w != 0) & (np.arange(len(an_w)) != imax)
-        an_w[m & (ha < -d1)] = 0
-        an_w = np.abs(an_w)
-        P = _planplan(cd, an, cd_w, an_w, center, t, normal, s, clip_eps)
-        pts = [(p, normal, gap) for p in P]
-    if not pts:
-        return {**res, "points": np.zeros((0, 3)), "gaps": np.zeros(0)}
-    return {**res, "points": np.array([p[0] for p in pts]), "gaps": np.array([p[2] for p in pts], float)}
+        fixed = [(p, normal, gap) for p in P]
+    out, wide = [], None
+    for adist in adists:
+        pts = fixed if fixed is not None else _accept(cand, adist, normal, sign)
+        if not pts and gap < adist:
+            # no point: the band ten times wider, and planplan
+            if wide is None:
+                d1 = max(0.0, gap * 0.5) + 10 * neighbor * ref
+                cd_w, an_w = cd_k.copy(), an_k.copy()
+                m = (cd_w != 0) & (np.arange(len(cd_w)) != jmin)
+                cd_w[m & (hc > d1)] = 0
+                cd_w = np.abs(cd_w)
+                m = (an_w != 0) & (np.arange(len(an_w)) != imax)
+                an_w[m & (ha < -d1)] = 0
+                an_w = np.abs(an_w)
+                P = _planplan(cd, an, cd_w, an_w, center, t, normal, s, clip_eps)
+                wide = [(p, normal, gap) for p in P]
+            pts = wide
+        if not pts:
+            out.append({**res, "points": np.zeros((0, 3)), "gaps": np.zeros(0)})
+        else:
+            out.append({**res, "points": np.array([p[0] for p in pts]),
+                        "gaps": np.array([p[2] for p in pts], float)})
+    return out
 
 
 def check_alert(alert, what="the alert distance"):
@@ -1554,8 +1578,54 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     ``xyz`` (each (k, 3) m, the points) and ``gaps`` (each (k,) m).
     Raises InputError (one line) for bad indices or non-finite input.
     """
+    return lmgc90_points_alerts(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, [alert],
+                                route=route, neighbor=neighbor, iterations=iterations, min_radius=min_radius,
+                                clip_eps=clip_eps)[0]
+
+
+def lmgc90_points_alerts(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, alerts,
+                         route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterations=LMGC90_ITERATIONS, min_radius=None,
+                         clip_eps=CLIP_EPS):
+    """:func:`lmgc90_points` at several alert distances at once, as a
+    band test asks (the alert distance halved, as given, doubled).
+
+    The alert distance decides only which pairs the shadow overlap keeps
+    and, on the ``lmgc90`` route, the per-point test and the wider band's
+    fallback; the rest of the detection (the shadow overlap's plane,
+    Cundall's search, the band, the contact types, planplan) is made once
+    per pair, at the largest alert distance, and the results are those of
+    :func:`lmgc90_points` called at each alert distance, value for value.
+
+    Parameters
+    ----------
+    tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an
+        As :func:`lmgc90_points`: the shape tables, (C,) shape rows,
+        (C, 3) centres of mass (m) and (C, 4) quaternions (w, x, y, z) of
+        the candidates and the antagonists.
+    alerts : sequence of float
+        The alert distances (m), each finite and > 0.
+    route, neighbor, iterations, min_radius, clip_eps
+        As :func:`lmgc90_points`.
+
+    Returns
+    -------
+    list of dict
+        One dict of :func:`lmgc90_points` per alert distance, in the
+        order of ``alerts``.
+
+    Raises
+    ------
+    InputError
+        One line: bad indices, non-finite input, coinciding centres, an
+        unknown route or a bad alert distance.
+    """
     check_route(route)
-    adist = check_alert(alert)
+    try:
+        alerts = [check_alert(a) for a in alerts]
+    except TypeError:
+        raise InputError(f"LMGC90 count: alerts must be a sequence of distances, got {alerts!r}") from None
+    if not alerts:
+        raise InputError("LMGC90 count: no alert distance given")
     check_neighbor(neighbor)
     C = len(np.asarray(shape_cd))
     s_cd, s_an, p_cd, p_an, q_cd, q_an = check_pose_arrays("LMGC90 count", len(tables), (
@@ -1569,39 +1639,48 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     if min_radius is None:
         min_radius = tables.rmin
     R_cd, R_an = rotation_matrices(q_cd.astype(float)), rotation_matrices(q_an.astype(float))
-    out = {"points": np.zeros(C, np.int64), "gap": np.zeros(C), "normal": np.zeros((C, 3)),
-           "stage": np.zeros(C, np.int64), "feature_cd": np.zeros(C, np.int8), "feature_an": np.zeros(C, np.int8),
-           "xyz": [], "gaps": []}
+    outs = [{"points": np.zeros(C, np.int64), "gap": np.zeros(C), "normal": np.zeros((C, 3)),
+             "stage": np.zeros(C, np.int64), "feature_cd": np.zeros(C, np.int8),
+             "feature_an": np.zeros(C, np.int8), "xyz": [], "gaps": []} for _ in alerts]
     feat = {1: VERTEX, 2: EDGE, 3: FACE}
+    amax = max(alerts)
     for b0 in range(0, C, _BLOCK):
         sl = slice(b0, min(b0 + _BLOCK, C))
         sc, sa = s_cd[sl], s_an[sl]
         D = _detect_block(tables, sc, R_cd[sl], p_cd[sl].astype(float), sa, R_an[sl], p_an[sl].astype(float),
-                          adist, iterations, float(min_radius), neighbor)
+                          amax, iterations, float(min_radius), neighbor)
         at = {int(k): i for i, k in enumerate(D.get("a", []))}
         for j in range(sl.stop - b0):
             k = b0 + j
             i = at.get(j)
-            if i is None:                          # no contact: no visible pair of faces, or a gap above the alert
-                out["gap"][k], out["normal"][k], out["stage"][k] = D["gap"][j], D["sep"][j], -1
-                out["feature_cd"][k] = out["feature_an"][k] = VERTEX
-                out["xyz"].append(np.zeros((0, 3)))
-                out["gaps"].append(np.zeros(0))
-                continue
-            cd = _Posed(tables[sc[j]], D["XC"][j], R_cd[k], p_cd[k])
-            an = _Posed(tables[sa[j]], D["XA"][j], R_an[k], p_an[k])
-            nc, na = len(cd.X), len(an.X)
-            r = _point_stage(cd, an, adist, route, neighbor, clip_eps, D["normal"][i], D["t"][i], D["s"][i],
-                             D["plane_gap"][i], D["jmin"][i], D["imax"][i], D["center"][i], D["kC"][i, :nc],
-                             D["kA"][i, :na], D["ref"][i], D["hc"][i, :nc], D["ha"][i, :na])
-            out["points"][k] = len(r["points"])
-            out["gap"][k], out["normal"][k], out["stage"][k] = r["gap"], r["normal"], r["stage"]
-            st = r["stage"]
-            out["feature_cd"][k], out["feature_an"][k] = feat[st % 10], feat[st // 10]
-            out["xyz"].append(r["points"])
-            out["gaps"].append(r["gaps"])
-    out["group"], out["pair"] = groups_and_pairs(out["points"], out["feature_cd"], out["feature_an"])
-    return out
+            # a contact at an alert distance: visible faces and a reach within it
+            kept = [i is not None and D["reach"][j] <= a for a in alerts]
+            rs = iter(())
+            if any(kept):
+                cd = _Posed(tables[sc[j]], D["XC"][j], R_cd[k], p_cd[k])
+                an = _Posed(tables[sa[j]], D["XA"][j], R_an[k], p_an[k])
+                nc, na = len(cd.X), len(an.X)
+                rs = iter(_point_stage(cd, an, [a for a, y in zip(alerts, kept) if y], route, neighbor, clip_eps,
+                                       D["normal"][i], D["t"][i], D["s"][i], D["plane_gap"][i], D["jmin"][i],
+                                       D["imax"][i], D["center"][i], D["kC"][i, :nc], D["kA"][i, :na],
+                                       D["ref"][i], D["hc"][i, :nc], D["ha"][i, :na]))
+            for out, y in zip(outs, kept):
+                if not y:                          # no contact: no visible pair of faces, or a gap above the alert
+                    out["gap"][k], out["normal"][k], out["stage"][k] = D["gap"][j], D["sep"][j], -1
+                    out["feature_cd"][k] = out["feature_an"][k] = VERTEX
+                    out["xyz"].append(np.zeros((0, 3)))
+                    out["gaps"].append(np.zeros(0))
+                    continue
+                r = next(rs)
+                out["points"][k] = len(r["points"])
+                out["gap"][k], out["normal"][k], out["stage"][k] = r["gap"], r["normal"], r["stage"]
+                st = r["stage"]
+                out["feature_cd"][k], out["feature_an"][k] = feat[st % 10], feat[st // 10]
+                out["xyz"].append(r["points"])
+                out["gaps"].append(r["gaps"])
+    for out in outs:
+        out["group"], out["pair"] = groups_and_pairs(out["points"], out["feature_cd"], out["feature_an"])
+    return outs
 
 
 class LmgcTables(list):
@@ -1661,7 +1740,10 @@ def _comp_rep_rows(n):
 def _detect_block(T, s_cd, R_cd, p_cd, s_an, R_an, p_an, adist, iterations, ref_size, neighbor):
     """Shadow overlap, Cundall's plane and the band for a block of pairs,
     vectorised (the same steps as :func:`lmgc90_pair`). Returns a dict of
-    arrays; ``ok`` (B,) False where the pair is no contact."""
+    arrays; ``ok`` (B,) False where the pair is no contact at ``adist``;
+    ``reach`` (B,) m the smallest alert distance at which the shadow
+    overlap keeps the pair (``ok`` at an alert distance a <= adist is
+    ``ok & (reach <= a)``: nothing else of the detection depends on it)."""
     B = len(s_cd)
     XC = np.einsum("bij,bvj->bvi", R_cd, T.V[s_cd]) + p_cd[:, None, :]
     XA = np.einsum("bij,bvj->bvi", R_an, T.V[s_an]) + p_an[:, None, :]
@@ -1685,6 +1767,7 @@ def _detect_block(T, s_cd, R_cd, p_cd, s_an, R_an, p_an, adist, iterations, ref_
     ok &= ~np.any(va & (DA > adist), axis=1) & ~np.any(vc & (DC > adist), axis=1)
     DAm = np.where(va, DA, -np.inf)
     DCm = np.where(vc, DC, -np.inf)
+    reach = np.maximum(gap, np.maximum(DAm.max(axis=1), DCm.max(axis=1)))
     e_an, e_cd = DAm.argmax(axis=1), DCm.argmax(axis=1)
     g_an, g_cd = DAm[rows, e_an], DCm[rows, e_cd]
     has_an, has_cd = g_an > gap, g_cd > gap
@@ -1709,7 +1792,7 @@ def _detect_block(T, s_cd, R_cd, p_cd, s_an, R_an, p_an, adist, iterations, ref_
     visC &= T.corner[s_cd]
     visA &= T.corner[s_an]
     ok &= visC.any(axis=1) & visA.any(axis=1)
-    out = {"ok": ok, "XC": XC, "XA": XA, "NC": NC, "NA": NA, "sep": new_sep, "gap": new_gap}
+    out = {"ok": ok, "reach": reach, "XC": XC, "XA": XA, "NC": NC, "NA": NA, "sep": new_sep, "gap": new_gap}
     a = np.flatnonzero(ok)
     if not len(a):
         return out

@@ -32,6 +32,7 @@ import os
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 
 from postproc import commonplane as cp
 from postproc.classify import Classifier, check_options
@@ -270,6 +271,50 @@ def test_classifier_labels_and_variants(route):
         r = cp.lmgc90_points(tables, s[lo], x[lo], q[lo], s[hi], x[hi], q[hi], f * alert, route=ROUTES[route])
         labels = cl.labels if tag == "base" else cl.variants[tag]
         assert labels.tolist() == np.array(PAIR_TYPES)[r["pair"]].tolist()
+
+
+@pytest.mark.parametrize("route", cp.LMGC90_ROUTES)
+def test_several_alerts_at_once_are_each_alert_alone(route):
+    """lmgc90_points_alerts (one detection for the band test's three
+    alert distances, in any order) gives, value for value, what
+    lmgc90_points gives at each alert distance alone, on every fifth pair
+    of the last packing that LMGC90 finds or YADE dumped (all touching:
+    kept at every alert distance) and every tenth of the other pairs whose
+    bounding spheres overlap (some kept only at the larger distances, so
+    the pairs kept per alert distance are exercised)."""
+    F = _load(PACKINGS[-1])
+    vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
+    tables = cp.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
+                              [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)])
+    row = {s: k for k, s in enumerate(F["shape_rows"])}
+    srow = np.array([row[s] for s in F["shape_index"]])
+    x, q = F["positions"], F["orientations"]
+    known = set(zip((F["new1_cd"] - 1).tolist(), (F["new1_an"] - 1).tolist())) | _dumped_pairs(F)
+    radius = np.array([tables[k].radius for k in srow])
+    near = cKDTree(x).query_pairs(2 * radius.max(), output_type="ndarray")
+    near = np.sort(near[np.linalg.norm(x[near[:, 0]] - x[near[:, 1]], axis=1)
+                        < radius[near[:, 0]] + radius[near[:, 1]]], axis=1)
+    others = sorted(set(map(tuple, near.tolist())) - known)
+    i, j = np.array(sorted(known)[::5] + others[::10]).T
+    args = (tables, srow[i], x[i], q[i], srow[j], x[j], q[j])
+    a = float(F["alerts"][0])
+    alerts = [a, a / 2, 2 * a]
+    together = cp.lmgc90_points_alerts(*args, alerts, route=route)
+    assert len(together) == 3
+    for alert, got in zip(alerts, together):
+        alone = cp.lmgc90_points(*args, alert, route=route)
+        assert sorted(got) == sorted(alone)
+        for key in alone:
+            if key in ("xyz", "gaps"):
+                assert all(np.array_equal(u, v) and u.shape == v.shape for u, v in zip(got[key], alone[key]))
+            else:
+                assert np.array_equal(got[key], alone[key]), key
+    contacts = [int(np.sum(r["stage"] >= 0)) for r in together]
+    assert contacts[1] < contacts[2]
+    with pytest.raises(InputError, match="no alert distance"):
+        cp.lmgc90_points_alerts(*args, [], route=route)
+    with pytest.raises(InputError, match="alert"):
+        cp.lmgc90_points_alerts(*args, [a, -a], route=route)
 
 
 def test_options_and_bad_input():
