@@ -790,10 +790,12 @@ def _hull2(P):
     """Convex hull (counter-clockwise, no collinear vertices) of 2-D points
     P (k, 2), exact (Andrew's monotone chain); (m, 2), m may be < 3.
 
-    The points are sorted by x, then y, and repeated points dropped (what
-    ``np.unique(P, axis=0)`` does, at a fraction of its cost on a few
-    points); the chain runs on Python floats, whose arithmetic is that of
-    float64."""
+    The points are sorted by x, then y, and repeated points dropped, as
+    ``np.unique(P, axis=0)`` does them at many times the cost on a few
+    points (of two points equal but for the sign of a zero coordinate, the
+    first in the input is kept, where np.unique keeps either); the chain
+    runs on Python floats, whose arithmetic is that of float64. The hull
+    is float64 whatever the input's type."""
     P = np.asarray(P, dtype=float).reshape(-1, 2)
     if len(P) > 1:
         P = P[np.lexsort((P[:, 1], P[:, 0]))]
@@ -1464,7 +1466,7 @@ def _point_stage(cd, an, adists, route, neighbor, clip_eps, normal, t, s, gap, j
             P = _planplan(cd, an, cd_k, an_k, center, t, normal, s, clip_eps)
         else:
             P = _planplan_2009(cd, an, cd_k, an_k, center, t, normal, s, TOL_2009 * ref)
-        return [{**res, "points": P, "gaps": np.full(len(P), gap)} for _ in adists]
+        return [{**res, "points": P.copy() if k else P, "gaps": np.full(len(P), gap)} for k in range(len(adists))]
     X, A = cd.X, an.X
     cand, sign, fixed = [], 1, None          # the points before LMGC90's per-point test (_accept)
     if code == 11:
@@ -1611,7 +1613,7 @@ def lmgc90_points_alerts(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, qu
     -------
     list of dict
         One dict of :func:`lmgc90_points` per alert distance, in the
-        order of ``alerts``.
+        order of ``alerts``, each with arrays of its own.
 
     Raises
     ------
@@ -1620,10 +1622,9 @@ def lmgc90_points_alerts(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, qu
         unknown route or a bad alert distance.
     """
     check_route(route)
-    try:
-        alerts = [check_alert(a) for a in alerts]
-    except TypeError:
-        raise InputError(f"LMGC90 count: alerts must be a sequence of distances, got {alerts!r}") from None
+    if isinstance(alerts, (str, bytes, dict)) or np.ndim(alerts) != 1:
+        raise InputError(f"LMGC90 count: alerts must be a sequence of distances, got {alerts!r}")
+    alerts = [check_alert(a) for a in alerts]
     if not alerts:
         raise InputError("LMGC90 count: no alert distance given")
     check_neighbor(neighbor)

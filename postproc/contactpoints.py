@@ -291,6 +291,8 @@ def positive_tolerance(value, what, meaning=""):
         a = float(value)
     except (TypeError, ValueError):
         raise InputError(f"{what} must be a number, got {value!r}") from None
+    except OverflowError:                      # an integer beyond float's range
+        raise InputError(f"{what} must be finite and > 0, got {value!r}") from None
     if not (np.isfinite(a) and a > 0):
         raise InputError(f"{what} must be finite and > 0{f' ({meaning})' if meaning else ''}, got {value!r}")
     return a
