@@ -227,11 +227,9 @@ class Classifier:
         w = lambda a, b: np.where(lo.reshape((-1,) + (1,) * (np.ndim(a) - 1)), a, b)
         args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
 
-        # the alert distance and, for the band test, its half and double: one detection for all three
-        alerts = [self.tolerance, self.tolerance / 2, self.tolerance * 2] if variants else [self.tolerance]
-        got = dict(zip(alerts, cpl.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
-                                                        min_radius=r_min)))
-        count = got.__getitem__
+        # one detection for the alert distance and the band test's half and double of it
+        count = lambda alerts: cpl.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
+                                                        min_radius=r_min)
         return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
     def _commonplane_classes(self, snap, variants):
@@ -240,25 +238,28 @@ class Classifier:
             return self._no_pairs(pp, variants, None, {"ct_cp_empty": 0.0})
         args = (self.plane_tables, *pp.poses, snap.normal[pp.poly])
 
-        count = lambda tau: cpl.contact_points(*args, neighbor=tau, reference=self.reference)
+        count = lambda taus: [cpl.contact_points(*args, neighbor=tau, reference=self.reference) for tau in taus]
         return self._count_classes(pp, count, self.tolerance, {}, variants)
 
     @staticmethod
     def _count_classes(pp, count, parameter, extra, variants):
-        """The classes from a count of contact points: ``count(parameter)``
-        returns the dict of :func:`postproc.commonplane.contact_points` or
-        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs;
+        """The classes from a count of contact points: ``count(values)``
+        returns, for each value of the parameter in ``values``, the dict of
+        :func:`postproc.commonplane.contact_points` or
+        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs
+        (one call, so that a count can share its work between the values);
         the variants at half and twice the parameter. Pairs without a point
         (LMGC90 makes no contact there) count as simple; their share is
         ``ct_cp_empty``."""
-        def labels_at(value):
-            r = count(value)
+        def labels(r):
             out = pp.base.copy()
             out[pp.poly] = np.array(PAIR_TYPES)[r["pair"]]
-            return out, r
+            return out
 
-        lab, r = labels_at(parameter)
-        var = {"lo": labels_at(parameter / 2)[0], "hi": labels_at(parameter * 2)[0]} if variants else {}
+        got = count([parameter, parameter / 2, parameter * 2] if variants else [parameter])
+        r = got[0]
+        lab = labels(r)
+        var = {"lo": labels(got[1]), "hi": labels(got[2])} if variants else {}
         cols = {**pp.cols, **extra, "ct_cp_empty": float(np.mean(r["points"] == 0))}
         return Classes(lab, var, pp.poly, None, cols)
 
