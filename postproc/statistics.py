@@ -15,7 +15,8 @@ Differences of independent estimates use Welch's t (Welch-Satterthwaite
 degrees of freedom). How the seeds scatter (:func:`seed_scatter`: the part a
 longer steady window would average away and the part it would not) and how
 many seeds an interval needs to exclude 0 (:func:`seeds_needed`) say what
-more computing would buy; how a value measured on blocks of several packings
+more computing would buy, and how often a study extended by that figure
+decides each way (:func:`two_stage_rates`); how a value measured on blocks of several packings
 splits into a local part, a packing part and the blocks' places
 (:func:`block_components`) says how its scatter scales with the packing's size.
 """
@@ -386,6 +387,100 @@ def seeds_to_decide(mean, sd, margin, level=0.95, n_max=100000):
         return side, "lateral" if mean < 0 else "axial"
     return None
 
+
+
+def _leaning_words(mean, sd, n, margin, level=0.95):
+    """The leaning rule (:func:`postproc.study.claims.leaning_decision`)
+    over arrays: for seeds' means and standard deviations ``mean``, ``sd``
+    (shape (R,)) of ``n`` seeds, the decision of each as an array of str."""
+    h = t.ppf(0.5 + level / 2, n - 1) * sd / np.sqrt(n)
+    lo, hi = mean - h, mean + h
+    return np.where((-margin < lo) & (hi < margin), "none",
+                    np.where(hi < 0, "lateral", np.where(lo > 0, "axial", "undecided")))
+
+
+def two_stage_rates(mu, sigma, n1, n_cap, margin, reps=20000, level=0.95, rng=None):
+    """How often a leaning decided in two stages gets each decision, for
+    seeds whose leanings are normal, N(mu, sigma^2): a Monte Carlo of the
+    design a study extends by (docs/measurements.md, the 5000-grain study's
+    extension rule).
+
+    Stage one: ``n1`` seeds, decided by the leaning rule
+    (:func:`postproc.study.claims.leaning_decision`: "none" when the 95 %
+    interval lies inside +-margin, else "lateral" below 0, "axial" above 0,
+    else "undecided"). An undecided leaning is extended once to the M seeds
+    :func:`seeds_to_decide` gives at stage one's mean and standard
+    deviation, when M <= ``n_cap`` (else it stays undecided), and decided
+    on all M seeds by the same rule. Because M depends on stage one's
+    numbers, the two-stage decision does not keep the fixed design's rates
+    (a leaning of the margin's size called "none" at most 2.5 % of the
+    time); this says what it keeps.
+
+    Parameters
+    ----------
+    mu, sigma : float
+        The seeds' true mean leaning (negative: lateral) and its seed-to-seed
+        standard deviation (> 0), in the leaning's units.
+    n1 : int
+        Seeds of stage one (>= 2).
+    n_cap : int
+        The most seeds an extension may reach (>= n1; n1: no extension).
+    margin : float
+        The rule's equivalence margin (> 0; claim 6's 0.03).
+    reps : int, optional
+        Simulated studies (default 20 000; a share p is then known to
+        about sqrt(p (1 - p) / reps)).
+    level : float, optional
+        The intervals' confidence level (default 0.95).
+    rng : numpy.random.Generator or int, optional
+        The random source, or its seed.
+
+    Returns
+    -------
+    dict
+        "none", "lateral", "axial", "undecided": the share of studies
+        ending with each decision (they sum to 1); "extended": the share
+        extended; "mean_seeds": the mean number of seeds run.
+
+    Raises
+    ------
+    ValueError
+        Non-finite mu, sigma or margin, sigma <= 0, margin <= 0, n1 < 2,
+        n_cap < n1 or reps < 1.
+
+    Examples
+    --------
+    >>> from postproc.statistics import two_stage_rates
+    >>> r = two_stage_rates(0.0, 0.02, 6, 6, 0.03, reps=2000, rng=1)   # no extension
+    >>> r["extended"], r["mean_seeds"]
+    (0.0, 6.0)
+    """
+    mu, sigma, margin = float(mu), float(sigma), float(margin)
+    if not (np.isfinite(mu) and np.isfinite(sigma) and np.isfinite(margin)) or sigma <= 0 or margin <= 0:
+        raise ValueError(f"two_stage_rates: mu, sigma and margin must be finite, sigma > 0 and margin > 0, "
+                         f"got {mu}, {sigma}, {margin}")
+    if int(n1) < 2 or int(n_cap) < int(n1) or int(reps) < 1:
+        raise ValueError(f"two_stage_rates: need n1 >= 2, n_cap >= n1 and reps >= 1, got {n1}, {n_cap}, {reps}")
+    n1, n_cap, reps = int(n1), int(n_cap), int(reps)
+    rng = np.random.default_rng(rng)
+    x = rng.normal(mu, sigma, size=(reps, n1))
+    m, s = x.mean(axis=1), x.std(axis=1, ddof=1)
+    words = _leaning_words(m, s, n1, margin, level)
+    seeds = np.full(reps, n1)
+    plan = np.zeros(reps, int)
+    for i in np.flatnonzero(words == "undecided"):
+        p = seeds_to_decide(m[i], s[i], margin, level, n_max=n_cap)
+        plan[i] = p[0] if p is not None and p[0] > n1 else 0
+    for size in np.unique(plan[plan > 0]):
+        rows = np.flatnonzero(plan == size)
+        more = rng.normal(mu, sigma, size=(len(rows), size - n1))
+        both = np.concatenate([x[rows], more], axis=1)
+        words[rows] = _leaning_words(both.mean(axis=1), both.std(axis=1, ddof=1), size, margin, level)
+        seeds[rows] = size
+    out = {w: float(np.mean(words == w)) for w in ("none", "lateral", "axial", "undecided")}
+    out["extended"] = float(np.mean(plan > 0))
+    out["mean_seeds"] = float(seeds.mean())
+    return out
 
 @dataclass
 class BlockComponents:

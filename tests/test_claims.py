@@ -310,3 +310,112 @@ def test_a_leaning_called_none_or_axial_contradicts_claim_6():
     assert "leaning none, none inside ±0.03" in claim6(seeds(0.0, 0.001, 0.003))["numbers"]
     assert claim6(seeds(-0.1, -0.08, 0.003))["verdict"] == "reproduced"
     assert claim6(seeds(-0.1, 0.0, 0.03))["verdict"] == "inconclusive"
+
+
+def _two_stage_by_hand(mu, sigma, n1, n_cap, reps, rng):
+    """The two-stage design written out study by study with the rule itself
+    (Estimate and leaning_decision), for comparison with the vectorised
+    :func:`postproc.statistics.two_stage_rates`."""
+    from postproc.study.claims import NO_LEANING, leaning_decision
+    from postproc.statistics import seeds_to_decide
+
+    def decide(x):
+        return leaning_decision(Estimate(x.mean(), x.std(ddof=1) / np.sqrt(len(x)), len(x) - 1, len(x), "seeds"))
+
+    counts = dict.fromkeys(("none", "lateral", "axial", "undecided"), 0)
+    for _ in range(reps):
+        x = rng.normal(mu, sigma, n1)
+        word = decide(x)
+        if word == "undecided":
+            plan = seeds_to_decide(x.mean(), x.std(ddof=1), NO_LEANING, n_max=n_cap)
+            if plan is not None:
+                word = decide(np.concatenate([x, rng.normal(mu, sigma, plan[0] - n1)]))
+        counts[word] += 1
+    return {k: v / reps for k, v in counts.items()}
+
+
+def test_two_stage_rates_without_extension_are_the_rule_s_exact_rates():
+    """With no room to extend (n_cap = n1) the two-stage design is the
+    fixed one: its shares equal the rule's exact probabilities (4 binomial
+    standard errors of the replications), nothing is extended, and the
+    vectorised rule gives leaning_decision's word on every study."""
+    from postproc.study.claims import NO_LEANING, leaning_decision
+    from postproc.statistics import _leaning_words, two_stage_rates
+
+    reps = 4000
+    tol = lambda p: 4 * np.sqrt(max(p * (1 - p), 1 / reps) / reps)
+    for mu, sigma in ((0.0, 0.02), (0.03, 0.02), (-0.02, 0.03)):
+        r = two_stage_rates(mu, sigma, 6, 6, NO_LEANING, reps=reps, rng=7)
+        exact = _rule_exact(mu, sigma, 6, NO_LEANING)
+        assert r["extended"] == 0.0 and r["mean_seeds"] == 6.0
+        assert sum(r[k] for k in ("none", "lateral", "axial", "undecided")) == pytest.approx(1.0)
+        for k in ("lateral", "none"):
+            assert abs(r[k] - exact[k]) <= tol(exact[k]), (mu, sigma, k, r[k], exact[k])
+    rng = np.random.default_rng(3)
+    m, s = rng.normal(0, 0.03, 2000), rng.uniform(0.001, 0.05, 2000)
+    words = _leaning_words(m, s, 6, NO_LEANING)
+    assert list(words) == [leaning_decision(Estimate(a, b / np.sqrt(6), 5, 6, "seeds")) for a, b in zip(m, s)]
+
+
+@pytest.mark.parametrize("mu, sigma", [(0.0, 0.032), (0.03, 0.032), (0.015, 0.018)])
+def test_two_stage_rates_agree_with_the_design_written_out(mu, sigma):
+    """Extended to at most 16 seeds from 6, the vectorised Monte Carlo and
+    the design written out study by study with the rule's own functions give
+    the same shares, within 4 standard errors of the difference of two
+    independent binomial shares of the replications."""
+    from postproc.study.claims import NO_LEANING
+    from postproc.statistics import two_stage_rates
+
+    reps = 1500
+    r = two_stage_rates(mu, sigma, 6, 16, NO_LEANING, reps=reps, rng=11)
+    by_hand = _two_stage_by_hand(mu, sigma, 6, 16, reps, np.random.default_rng(12))
+    assert 0 < r["extended"] < 1 and 6 < r["mean_seeds"] <= 16
+    for k, p in by_hand.items():
+        q = max((p + r[k]) / 2, 1 / reps)
+        assert abs(r[k] - p) <= 4 * np.sqrt(2 * q * (1 - q) / reps), (k, r[k], p)
+
+
+def test_two_stage_rates_scale_with_the_leaning_and_refuse_bad_input():
+    """Scaling mu, sigma and the margin by a power of two changes no
+    decision (the same draws, scaled exactly); bad input: one line."""
+    from postproc.statistics import two_stage_rates
+
+    a = two_stage_rates(0.01, 0.03, 5, 12, 0.03, reps=500, rng=5)
+    b = two_stage_rates(0.04, 0.12, 5, 12, 0.12, reps=500, rng=5)
+    assert a == b
+    for args in ((np.nan, 0.03, 6, 16, 0.03), (0.0, 0.0, 6, 16, 0.03), (0.0, 0.03, 1, 16, 0.03),
+                 (0.0, 0.03, 6, 5, 0.03), (0.0, 0.03, 6, 16, -1.0)):
+        with pytest.raises(ValueError, match="two_stage_rates"):
+            two_stage_rates(*args, reps=10)
+
+
+def test_two_stage_rates_decide_each_study_as_the_rule_does_on_the_same_draws():
+    """The same draws as two_stage_rates (stage one's (reps, n1) block, then
+    each extension size's block in increasing size), each study decided with
+    Estimate and leaning_decision and extended by seeds_to_decide on its own
+    first-stage seeds: the shares are equal exactly, so the extension reuses
+    stage one's seeds and extends to the planned size."""
+    from postproc.study.claims import NO_LEANING, leaning_decision
+    from postproc.statistics import seeds_to_decide, two_stage_rates
+
+    def decide(x):
+        return leaning_decision(Estimate(x.mean(), x.std(ddof=1) / np.sqrt(len(x)), len(x) - 1, len(x), "seeds"))
+
+    mu, sigma, n1, cap, reps = 0.01, 0.03, 6, 16, 800
+    rng = np.random.default_rng(21)
+    x = rng.normal(mu, sigma, size=(reps, n1))
+    words = [decide(row) for row in x]
+    plan = {}
+    for i, w in enumerate(words):
+        if w == "undecided":
+            p = seeds_to_decide(x[i].mean(), x[i].std(ddof=1), NO_LEANING, n_max=cap)
+            if p is not None:
+                plan.setdefault(p[0], []).append(i)
+    for size in sorted(plan):
+        more = rng.normal(mu, sigma, size=(len(plan[size]), size - n1))
+        for i, extra in zip(plan[size], more):
+            words[i] = decide(np.concatenate([x[i], extra]))
+    r = two_stage_rates(mu, sigma, n1, cap, NO_LEANING, reps=reps, rng=21)
+    assert {k: r[k] for k in ("none", "lateral", "axial", "undecided")} == \
+        {k: words.count(k) / reps for k in ("none", "lateral", "axial", "undecided")}
+    assert r["extended"] == sum(map(len, plan.values())) / reps > 0
