@@ -16,9 +16,9 @@ degrees of freedom). How the seeds scatter (:func:`seed_scatter`: the part a
 longer steady window would average away and the part it would not) and how
 many seeds an interval needs to exclude 0 (:func:`seeds_needed`) say what
 more computing would buy, and how often a study extended by that figure
-decides each way (:func:`two_stage_rates`); how a value measured on blocks of several packings
-splits into a local part, a packing part and the blocks' places
-(:func:`block_components`) says how its scatter scales with the packing's size.
+decides each way (:func:`two_stage_rates`); how a value measured on blocks
+of several packings splits into a local part, a packing part and the
+blocks' places (:func:`block_components`) says how its scatter scales with the packing's size.
 """
 from __future__ import annotations
 
@@ -389,14 +389,46 @@ def seeds_to_decide(mean, sd, margin, level=0.95, n_max=100000):
 
 
 
-def _leaning_words(mean, sd, n, margin, level=0.95):
-    """The leaning rule (:func:`postproc.study.claims.leaning_decision`)
-    over arrays: for seeds' means and standard deviations ``mean``, ``sd``
-    (shape (R,)) of ``n`` seeds, the decision of each as an array of str."""
-    h = t.ppf(0.5 + level / 2, n - 1) * sd / np.sqrt(n)
-    lo, hi = mean - h, mean + h
-    return np.where((-margin < lo) & (hi < margin), "none",
-                    np.where(hi < 0, "lateral", np.where(lo > 0, "axial", "undecided")))
+def leaning_words(lo, hi, margin):
+    """Claim 6's leaning rule on intervals, over arrays: the one place its
+    comparisons are written (:func:`postproc.study.claims.leaning_decision`
+    for one estimate, :func:`two_stage_rates` for many).
+
+    Parameters
+    ----------
+    lo, hi : array_like, shape (R,) or scalars
+        The 95 % intervals' ends, in the leaning's units (negative:
+        lateral).
+    margin : float
+        The equivalence margin (> 0, same unit).
+
+    Returns
+    -------
+    ndarray of str, shape (R,) or ()
+        "none" when the interval lies inside (-margin, margin), else
+        "lateral" when it lies below 0, "axial" when above 0, else (or when
+        an end is not finite) "undecided".
+
+    Examples
+    --------
+    >>> from postproc.statistics import leaning_words
+    >>> print(leaning_words([-0.02, -0.08, 0.01, -0.01], [0.02, -0.01, 0.05, 0.04], 0.03))
+    ['none' 'lateral' 'axial' 'undecided']
+    """
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    ok = np.isfinite(lo) & np.isfinite(hi)
+    return np.where(ok & (-margin < lo) & (hi < margin), "none",
+                    np.where(ok & (hi < 0), "lateral", np.where(ok & (lo > 0), "axial", "undecided")))
+
+
+def _seeds_leaning_words(x, margin, level):
+    """:func:`leaning_words` for studies of seeds ``x`` (shape (R, n)) by
+    the Student's t interval of each row's mean; with the rows' means and
+    standard deviations (shape (R,))."""
+    n = x.shape[1]
+    m, s = x.mean(axis=1), x.std(axis=1, ddof=1)
+    h = t.ppf(0.5 + level / 2, n - 1) * s / np.sqrt(n)
+    return leaning_words(m - h, m + h, margin), m, s
 
 
 def two_stage_rates(mu, sigma, n1, n_cap, margin, reps=20000, level=0.95, rng=None):
@@ -464,23 +496,20 @@ def two_stage_rates(mu, sigma, n1, n_cap, margin, reps=20000, level=0.95, rng=No
     n1, n_cap, reps = int(n1), int(n_cap), int(reps)
     rng = np.random.default_rng(rng)
     x = rng.normal(mu, sigma, size=(reps, n1))
-    m, s = x.mean(axis=1), x.std(axis=1, ddof=1)
-    words = _leaning_words(m, s, n1, margin, level)
-    seeds = np.full(reps, n1)
-    plan = np.zeros(reps, int)
+    words, m, s = _seeds_leaning_words(x, margin, level)
+    plan = np.zeros(reps, int)                  # the extension's size, 0: none
     for i in np.flatnonzero(words == "undecided"):
         p = seeds_to_decide(m[i], s[i], margin, level, n_max=n_cap)
         plan[i] = p[0] if p is not None and p[0] > n1 else 0
     for size in np.unique(plan[plan > 0]):
         rows = np.flatnonzero(plan == size)
         more = rng.normal(mu, sigma, size=(len(rows), size - n1))
-        both = np.concatenate([x[rows], more], axis=1)
-        words[rows] = _leaning_words(both.mean(axis=1), both.std(axis=1, ddof=1), size, margin, level)
-        seeds[rows] = size
+        words[rows] = _seeds_leaning_words(np.concatenate([x[rows], more], axis=1), margin, level)[0]
     out = {w: float(np.mean(words == w)) for w in ("none", "lateral", "axial", "undecided")}
     out["extended"] = float(np.mean(plan > 0))
-    out["mean_seeds"] = float(seeds.mean())
+    out["mean_seeds"] = float(np.where(plan > 0, plan, n1).mean())
     return out
+
 
 @dataclass
 class BlockComponents:

@@ -312,24 +312,29 @@ def test_a_leaning_called_none_or_axial_contradicts_claim_6():
     assert claim6(seeds(-0.1, 0.0, 0.03))["verdict"] == "inconclusive"
 
 
+def _decide(x):
+    """The leaning rule on one study's seeds ``x`` (shape (n,)): Estimate
+    and leaning_decision, as the report decides."""
+    from postproc.study.claims import leaning_decision
+
+    return leaning_decision(Estimate(x.mean(), x.std(ddof=1) / np.sqrt(len(x)), len(x) - 1, len(x), "seeds"))
+
+
 def _two_stage_by_hand(mu, sigma, n1, n_cap, reps, rng):
     """The two-stage design written out study by study with the rule itself
     (Estimate and leaning_decision), for comparison with the vectorised
     :func:`postproc.statistics.two_stage_rates`."""
-    from postproc.study.claims import NO_LEANING, leaning_decision
+    from postproc.study.claims import NO_LEANING
     from postproc.statistics import seeds_to_decide
-
-    def decide(x):
-        return leaning_decision(Estimate(x.mean(), x.std(ddof=1) / np.sqrt(len(x)), len(x) - 1, len(x), "seeds"))
 
     counts = dict.fromkeys(("none", "lateral", "axial", "undecided"), 0)
     for _ in range(reps):
         x = rng.normal(mu, sigma, n1)
-        word = decide(x)
+        word = _decide(x)
         if word == "undecided":
             plan = seeds_to_decide(x.mean(), x.std(ddof=1), NO_LEANING, n_max=n_cap)
             if plan is not None:
-                word = decide(np.concatenate([x, rng.normal(mu, sigma, plan[0] - n1)]))
+                word = _decide(np.concatenate([x, rng.normal(mu, sigma, plan[0] - n1)]))
         counts[word] += 1
     return {k: v / reps for k, v in counts.items()}
 
@@ -340,7 +345,7 @@ def test_two_stage_rates_without_extension_are_the_rule_s_exact_rates():
     standard errors of the replications), nothing is extended, and the
     vectorised rule gives leaning_decision's word on every study."""
     from postproc.study.claims import NO_LEANING, leaning_decision
-    from postproc.statistics import _leaning_words, two_stage_rates
+    from postproc.statistics import leaning_words, two_stage_rates
 
     reps = 4000
     tol = lambda p: 4 * np.sqrt(max(p * (1 - p), 1 / reps) / reps)
@@ -353,8 +358,12 @@ def test_two_stage_rates_without_extension_are_the_rule_s_exact_rates():
             assert abs(r[k] - exact[k]) <= tol(exact[k]), (mu, sigma, k, r[k], exact[k])
     rng = np.random.default_rng(3)
     m, s = rng.normal(0, 0.03, 2000), rng.uniform(0.001, 0.05, 2000)
-    words = _leaning_words(m, s, 6, NO_LEANING)
-    assert list(words) == [leaning_decision(Estimate(a, b / np.sqrt(6), 5, 6, "seeds")) for a, b in zip(m, s)]
+    h = t.ppf(0.975, 5) * s / np.sqrt(6)
+    m[:3], h[:3] = (np.nan, np.inf, 0.01), (0.01, 0.01, np.inf)      # intervals that are not finite
+    words = leaning_words(m - h, m + h, NO_LEANING)
+    assert list(words) == [leaning_decision(Estimate(a, b / np.sqrt(6), 5, 6, "seeds"))
+                           for a, b in zip(m, s * np.where(np.isinf(h), np.inf, 1.0))]
+    assert list(words[:3]) == ["undecided"] * 3
 
 
 @pytest.mark.parametrize("mu, sigma", [(0.0, 0.032), (0.03, 0.032), (0.015, 0.018)])
@@ -395,16 +404,13 @@ def test_two_stage_rates_decide_each_study_as_the_rule_does_on_the_same_draws():
     Estimate and leaning_decision and extended by seeds_to_decide on its own
     first-stage seeds: the shares are equal exactly, so the extension reuses
     stage one's seeds and extends to the planned size."""
-    from postproc.study.claims import NO_LEANING, leaning_decision
+    from postproc.study.claims import NO_LEANING
     from postproc.statistics import seeds_to_decide, two_stage_rates
-
-    def decide(x):
-        return leaning_decision(Estimate(x.mean(), x.std(ddof=1) / np.sqrt(len(x)), len(x) - 1, len(x), "seeds"))
 
     mu, sigma, n1, cap, reps = 0.01, 0.03, 6, 16, 800
     rng = np.random.default_rng(21)
     x = rng.normal(mu, sigma, size=(reps, n1))
-    words = [decide(row) for row in x]
+    words = [_decide(row) for row in x]
     plan = {}
     for i, w in enumerate(words):
         if w == "undecided":
@@ -414,7 +420,7 @@ def test_two_stage_rates_decide_each_study_as_the_rule_does_on_the_same_draws():
     for size in sorted(plan):
         more = rng.normal(mu, sigma, size=(len(plan[size]), size - n1))
         for i, extra in zip(plan[size], more):
-            words[i] = decide(np.concatenate([x[i], extra]))
+            words[i] = _decide(np.concatenate([x[i], extra]))
     r = two_stage_rates(mu, sigma, n1, cap, NO_LEANING, reps=reps, rng=21)
     assert {k: r[k] for k in ("none", "lateral", "axial", "undecided")} == \
         {k: words.count(k) / reps for k in ("none", "lateral", "axial", "undecided")}

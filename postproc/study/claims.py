@@ -23,8 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..statistics import (Estimate, difference, plateau_estimate, seed_scatter, seeds_needed, seeds_to_decide,
-                          steady_indices)
+from ..statistics import (Estimate, difference, leaning_words, plateau_estimate, seed_scatter, seeds_needed,
+                          seeds_to_decide, steady_indices)
 
 NEGLIGIBLE = 0.05
 SFF_TOLERANCE = 0.15
@@ -126,16 +126,7 @@ def leaning_decision(est, margin=NO_LEANING):
     >>> leaning_decision(Estimate(0.0, 0.015, 4, 5, "seeds"))           # [-0.042, 0.042]: not inside 0.03
     'undecided'
     """
-    lo, hi = est.ci()
-    if not (np.isfinite(lo) and np.isfinite(hi)):
-        return "undecided"
-    if -margin < lo and hi < margin:
-        return "none"
-    if hi < 0:
-        return "lateral"
-    if lo > 0:
-        return "axial"
-    return "undecided"
+    return str(leaning_words(*est.ci(), margin))
 
 
 #: a leaning's decision as claim 6's condition (it claims "lateral")
