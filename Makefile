@@ -19,10 +19,13 @@ SHAPES ?=
 # COUNTS="lmgc90 lmgc90-2009": the contact counts claim 6 is read by besides ours
 # (default lmgc90); on a finished study make study makes only the missing analyses
 COUNTS ?=
+# ARCHIVE=DEST: an archive of analysed runs (make archive; yade_scripts/archive.py):
+# make study runs only the seeds it does not hold, and reads those it does
+ARCHIVE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study results compare test-slurm system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
@@ -102,9 +105,15 @@ shapes: $(SHAPES_LIB)
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES)) \
-	    $(if $(COUNTS),--counts $(COUNTS))
+	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE))
 	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ]; then \
 	  $(PY) -m postproc.cli compare-results $(STUDY) || true; fi
+
+# Keep STUDY's analysed runs (numbers only, no dumps) in ARCHIVE, to carry a
+# long study to another host: make study ... ARCHIVE=DEST runs only the rest.
+archive: venv
+	@test -n "$(ARCHIVE)" || { echo "make archive: give ARCHIVE=DEST (e.g. reference_data/<study name>)"; exit 2; }
+	$(PY) -m yade_scripts.archive $(STUDY) $(ARCHIVE)
 
 # After make study: its results against the committed ones, which the README's
 # claims table shows ("same as the README", or each difference; exit 1 then).

@@ -48,7 +48,10 @@ def test_what_make_study_runs_is_what_docs_study_quotes():
     recipe = makefile_recipe("study")
     assert "SHAPES ?=\n" in text("Makefile")     # no library of one's own by default: the $(if ...) adds nothing
     assert "COUNTS ?=\n" in text("Makefile")     # the study's default counts: the $(if ...) adds nothing
-    recipe = recipe.replace("$(if $(SHAPES),--library $(SHAPES))", "").replace("$(if $(COUNTS),--counts $(COUNTS))", "")
+    assert "ARCHIVE ?=\n" in text("Makefile")    # no archive of analysed runs by default: the same
+    for part in ("$(if $(SHAPES),--library $(SHAPES))", "$(if $(COUNTS),--counts $(COUNTS))",
+                 "$(if $(ARCHIVE),--archive $(ARCHIVE))"):
+        recipe = recipe.replace(part, "")
     for name, value in v.items():
         recipe = recipe.replace(f"$({name})", value)
     cmd = re.search(r"\$\(PY\) -m (yade_scripts\.study [^@]*)", recipe).group(1)   # then the comparison

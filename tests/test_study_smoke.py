@@ -308,6 +308,78 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, m
     assert is_png(out / "report-failed" / "fig_qp.png")
 
 
+def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_library, tmp_path, capsys):
+    """``python -m yade_scripts.archive`` keeps every analysed run's numbers
+    without its dump or figures; a new study folder (a new host) with
+    ``--archive`` runs none of the usable archived seeds, runs again the one
+    whose record is not today's code's, and reports the same numbers as the
+    study made from the dumps; ``--collect --archive`` reads it the same way."""
+    import hashlib
+
+    from yade_scripts.archive import RUN_RECORD, archived
+    from yade_scripts.archive import main as archive_main
+    from yade_scripts.study import ARCHIVED, collect, main
+
+    out, _, _ = study
+    arch = tmp_path / "arch"
+    assert archive_main([str(out), str(arch)]) == 0
+    for s, counts in (("polyhedra", ["lmgc90"]), ("spheres", [])):
+        for k in (1, 2):
+            rec = json.loads((arch / f"{s}-ensemble" / f"{s}-seed{k}{RUN_RECORD}").read_text())
+            dump = out / f"{s}-ensemble" / f"{s}-seed{k}.h5"
+            assert rec["dump"]["sha256"] == hashlib.sha256(dump.read_bytes()).hexdigest()
+            assert rec["counts"] == counts and rec["dump"]["bytes"] == dump.stat().st_size
+    assert not list(arch.rglob("*.h5")) and not list(arch.rglob("*.png"))
+    capsys.readouterr()
+    assert archive_main([str(out), str(arch)]) == 0                # a second time: nothing added
+    assert capsys.readouterr().out.count("already archived") == 4
+    # one record made by other analysis code: that seed is named and runs again
+    stale = arch / "spheres-ensemble" / f"spheres-seed2{RUN_RECORD}"
+    rec = json.loads(stale.read_text())
+    stale.write_text(json.dumps({**rec, "code": "0" * 64}))
+    new = tmp_path / "new"
+    assert main(["--preset", "tiny", "--out", str(new), "--ensemble", "2", "--library", shape_library,
+                 "--archive", str(arch)]) == 0
+    said = capsys.readouterr().out
+    assert said.count("taken from the archive") == 3
+    assert "spheres-seed2.h5 archived but not used: analysed by other analysis code" in said
+    assert "spheres-seed2 started" in said and "polyhedra-seed1 started" not in said
+    manifest = json.loads((new / "manifest.json").read_text())
+    assert [r["status"] for s in ("polyhedra", "spheres") for r in manifest[s]] == ["ok"] * 4
+    assert [("archived" in r) for s in ("polyhedra", "spheres") for r in manifest[s]] == [True, True, True, False]
+    assert not (new / "polyhedra-ensemble" / "polyhedra-seed1.h5").exists()
+    # the figures that read a dump start from a seed whose dump is here: S2's seed 2, none of S1
+    md = (new / "report" / "report.md").read_text()
+    assert "polar data of S1" in md and "polar data of S2" not in md
+    assert (new / "report" / "fig_polar.png").exists() and not (new / "report" / "fig_types_polar.png").exists()
+    assert "from the archive" in md
+    # the same numbers as from the dumps (seed 2 of S2 ran again on this host: the same run, step for step)
+    for name in ("comparison.csv", "claims.csv", "claim6.csv"):
+        pd.testing.assert_frame_equal(pd.read_csv(new / "report" / name), pd.read_csv(out / "report" / name))
+    # a file that is not as recorded: that seed is refused, with the file named
+    summary = arch / "polyhedra-ensemble" / "analysis-polyhedra-seed1" / "summary.csv"
+    text = summary.read_text()
+    summary.write_text(text.replace("shear", "Shear", 1))
+    held = archived(str(arch), str(new / "polyhedra-ensemble"), counts=["lmgc90"])
+    assert held["polyhedra-seed1.h5"][0] == "refused" and "summary.csv is missing or not as recorded" in \
+        held["polyhedra-seed1.h5"][1]
+    assert held["polyhedra-seed2.h5"][0] == "ok"
+    # a count the archive lacks refuses the S1 seeds, not the S2 ones
+    held = archived(str(arch), str(new / "polyhedra-ensemble"), counts=["lmgc90", "lmgc90-2009"])
+    assert "no analysis by the lmgc90-2009 count" in held["polyhedra-seed2.h5"][1]
+    assert archived(str(arch), str(new / "spheres-ensemble"), counts=["lmgc90-2009"])["spheres-seed1.h5"][0] == "ok"
+    # collect: the archived seeds are runs, not unfinished lines; a refused one is unfinished
+    runs, pending, failed, _ = collect(str(new), archive=str(arch))
+    assert pending == ["polyhedra-ensemble/polyhedra-seed1 (not started)"] and failed == []
+    summary.write_text(text)
+    runs, pending, failed, _ = collect(str(new), archive=str(arch))
+    assert pending == [] and failed == []
+    assert {s: [st for _, _, st in runs[s]] for s in runs} == {"polyhedra": [ARCHIVED, ARCHIVED],
+                                                             "spheres": [ARCHIVED, 0]}
+    for name in ("comparison.csv", "claim6.csv"):
+        pd.testing.assert_frame_equal(pd.read_csv(new / "report" / name), pd.read_csv(out / "report" / name))
+
+
 def test_study_runs_s1_on_an_imported_library(tmp_path, monkeypatch):
     """``make study SHAPES=LIB.h5`` with a library imported from meshes (as a
     user's scans would be): the tiny S1 runs on the imported grains (the

@@ -52,6 +52,8 @@ from .runlock import RunBusy, RunLock, describe
 from .runstate import EXIT_BUSY, EXIT_TERM, complete, read_attempts
 
 
+#: the status of a run taken from an archive of analysed runs (:mod:`yade_scripts.archive`)
+ARCHIVED = "archived"
 #: a run folder set aside because its parameters changed (FOLDER.old-K)
 SET_ASIDE = re.compile(r"\.old-\d+$")
 #: the lock on a folder's manifest and report (:func:`report_lock`)
@@ -188,7 +190,7 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None,
-                 counts=None, figures=True):
+                 counts=None, figures=True, archive=None):
     """Run seeds 1..n of each sample in one schedule: the study of ``make
     study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
 
@@ -229,12 +231,18 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         (default :data:`postproc.study.counts.EXTRA_COUNTS`).
     figures : bool, optional
         Draw the analyses' figures (default; False: numbers only).
+    archive : str, optional
+        An archive of analysed runs (:mod:`yade_scripts.archive`): a seed
+        whose dump is not complete here and that the archive holds usable
+        (:func:`yade_scripts.archive.archived`) is not run; its status is
+        :data:`ARCHIVED`.
 
     Returns
     -------
     dict
         sample -> [(label "seed K", dump path, status)], status 0 complete,
-        else the exit code or the reason (:func:`yade_scripts.pool.run_pool`).
+        :data:`ARCHIVED` taken from the archive, else the exit code or the
+        reason (:func:`yade_scripts.pool.run_pool`).
 
     Raises
     ------
@@ -247,8 +255,7 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     from .pool import Job, run_pool
     from .slurm import estimate
 
-    _need_yade()
-    pool, rows = [], {}
+    pool, rows, kept = [], {}, set()
     for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
         _set_aside_if_changed(folder, preset, s, overrides)
@@ -260,14 +267,50 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         p = resolve(preset, s, overrides)
         cost = estimate(p)["core_hours"] * 3600
         rows[s] = read_table(folder)
+        kept.update(_from_archive(archive, folder, [dump_of(folder, r) for _, r in rows[s]], counts))
         pool += [Job(folder, k, r["description"], dump_of(folder, r), cost, tag=s,
                      widen=(s == "polyhedra" and p["contact_engine"] == "kernel"),
                      threads=min((job_threads or {}).get(s, 1), jobs))
-                 for k, r in rows[s]]
+                 for k, r in rows[s] if dump_of(folder, r) not in kept]
+    if pool:
+        _need_yade()
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
                       after=functools.partial(analyse_after, counts=counts, figures=figures))
-    return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r), status[r["description"]])
+    return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r),
+                 ARCHIVED if dump_of(os.path.join(out, f"{s}-ensemble"), r) in kept else status[r["description"]])
                 for _, r in rows[s]] for s in samples}
+
+
+def _from_archive(archive, table, dumps, counts):
+    """The dumps of the runs of the run folder ``table`` (their
+    dumps ``dumps``) that the archive ``archive`` holds usable and whose dump
+    is not complete here (:func:`yade_scripts.archive.archived`), a set;
+    each archived run not usable is named, and runs again."""
+    if not archive:
+        return set()
+    held = _archived(archive, table, counts)
+    out = set()
+    for dump in dumps:
+        how, what = held.get(os.path.basename(dump), (None, None))
+        if how is None or complete(dump):
+            continue
+        if how == "ok":
+            out.add(dump)
+            print(f"[study] {os.path.basename(dump)}: taken from the archive {archive} (analysed on "
+                  f"{what['record'].get('saved', '?')}), not run here", flush=True)
+        else:
+            print(f"[study] {what}", flush=True)
+    return out
+
+
+def _archived(archive, table, counts):
+    """:func:`yade_scripts.archive.archived` for the study's ``counts``
+    (None: :data:`postproc.study.counts.EXTRA_COUNTS`)."""
+    from postproc.study.counts import EXTRA_COUNTS
+
+    from .archive import archived
+
+    return archived(archive, table, counts=EXTRA_COUNTS if counts is None else counts)
 
 
 def analysis_folder(dump):
@@ -428,7 +471,7 @@ def report_lock(out, wait=False):
             time.sleep(REPORT_WAIT_SECONDS)
 
 
-def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True):
+def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True, archive=None):
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
     Holds OUT's report lock (:func:`report_lock`) meanwhile, or raises
@@ -449,15 +492,18 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     uses its steady snapshots and says how far it got. ``attempts``
     {(sample, label): [exit code of each attempt]}
     (default: each run's record, :func:`run_exits`) goes into the manifest
-    when a run was resumed."""
+    when a run was resumed. A run of status :data:`ARCHIVED` is read from
+    the archive ``archive`` (:func:`yade_scripts.archive.archived`): its
+    analyses are not made again, its manifest entry is "ok" with an
+    ``archived`` record and a note."""
     lock = report_lock(out)
     try:
-        return _analyse_and_report(out, runs, attempts, unfinished, counts, figures)
+        return _analyse_and_report(out, runs, attempts, unfinished, counts, figures, archive)
     finally:
         lock.release()
 
 
-def _analyse_and_report(out, runs, attempts, unfinished, counts, figures):
+def _analyse_and_report(out, runs, attempts, unfinished, counts, figures, archive):
     """:func:`analyse_and_report`'s work, its lock held."""
     from postproc.study.counts import analyse_counts
     from postproc.study.report import build_report
@@ -466,6 +512,12 @@ def _analyse_and_report(out, runs, attempts, unfinished, counts, figures):
     for s, items in runs.items():
         manifest[s] = []
         for label, dump, status in items:
+            if status == ARCHIVED:
+                entry = _archived_entry(out, archive, dump, counts, label)
+                if entry["status"] != "ok":
+                    failed.append(f"{s} {label}")
+                manifest[s].append(entry)
+                continue
             stem = os.path.splitext(dump)[0]
             folder = os.path.dirname(dump)
             analysis = analysis_folder(dump)
@@ -521,6 +573,24 @@ def _analyse_and_report(out, runs, attempts, unfinished, counts, figures):
     return failed
 
 
+def _archived_entry(out, archive, dump, counts, label):
+    """The manifest entry of a run taken from the archive ``archive``
+    (paths relative to the study ``out``)."""
+    how, what = _archived(archive, os.path.dirname(dump), counts).get(os.path.basename(dump), (None, None))
+    entry = {"label": label, "dump": os.path.relpath(dump, out)}
+    if how != "ok":
+        return {**entry, "status": f"not in the archive any more ({what or 'no record'})"}
+    rec = what["record"]
+    print(f"[study] {label} of {os.path.basename(os.path.dirname(dump))}: from the archive {archive}", flush=True)
+    return {**entry, "analysis": os.path.relpath(what["analysis"], out),
+            "info": what["info"] and os.path.relpath(what["info"], out), "status": "ok",
+            "counts": {c: os.path.relpath(f, out) for c, f in what["counts"].items()},
+            "archived": {"archive": os.path.relpath(archive, out), "dump_sha256": rec["dump"]["sha256"],
+                         "saved": rec.get("saved")},
+            "note": f"from the archive {archive}: analysed on {rec.get('saved', '?')}, its dump "
+                    f"({rec['dump']['snapshots']} snapshots, SHA-256 {rec['dump']['sha256'][:12]}) not on this host"}
+
+
 def unusable_samples(out):
     """Samples of OUT/manifest.json with no run that is ok or partial."""
     with open(os.path.join(out, "manifest.json")) as fh:
@@ -528,7 +598,17 @@ def unusable_samples(out):
     return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
 
 
-def collect(folder, counts=None, figures=True):
+def run_folders(folder):
+    """The generated run folders (with a ``table.txt``): ``folder`` itself,
+    else those one level below it but for the ones set aside
+    (:data:`SET_ASIDE`); [] when there are none."""
+    if os.path.exists(os.path.join(folder, "table.txt")):
+        return [folder]
+    return sorted(os.path.join(folder, d) for d in os.listdir(folder)
+                  if os.path.exists(os.path.join(folder, d, "table.txt")) and not SET_ASIDE.search(d))
+
+
+def collect(folder, counts=None, figures=True, archive=None):
     """Analyse and report whatever has finished in the generated run folders
     at or below ``folder``, and say what every other line is: ``python -m
     yade_scripts.study --collect DIR``, e.g. after a SLURM array.
@@ -561,11 +641,16 @@ def collect(folder, counts=None, figures=True):
     figures : bool, optional
         Draw the analyses' and the report's figures (default; False:
         numbers only).
+    archive : str, optional
+        An archive of analysed runs (:mod:`yade_scripts.archive`): a line
+        whose dump is not complete here and that the archive holds usable
+        is taken from it, not listed as unfinished.
 
     Returns
     -------
     runs : dict
-        The runs analysed: sample -> [(label, dump, 0)].
+        The runs analysed: sample -> [(label, dump, 0 or
+        :data:`ARCHIVED`)].
     pending : list of str
         The lines not finished: "<folder>/<description> (<state>)".
     failed : list of str
@@ -601,21 +686,20 @@ def collect(folder, counts=None, figures=True):
     """
     if not os.path.isdir(folder):
         raise ConfigError(f"{folder}: no such folder")
-    tables = [folder] if os.path.exists(os.path.join(folder, "table.txt")) else sorted(
-        os.path.join(folder, d) for d in os.listdir(folder)
-        if os.path.exists(os.path.join(folder, d, "table.txt")) and not SET_ASIDE.search(d))
+    tables = run_folders(folder)
     if not tables:
         raise ConfigError(f"{folder}: no generated run folder (table.txt) in it or one level below")
     lock = report_lock(folder)      # before looking at the runs: a refusal is one line, and no older scan
     try:                            # overwrites what a study's end wrote meanwhile
-        return _collect(folder, tables, counts, figures)
+        return _collect(folder, tables, counts, figures, archive)
     finally:
         lock.release()
 
 
-def _collect(folder, tables, counts, figures):
+def _collect(folder, tables, counts, figures, archive):
     """:func:`collect`'s work on its run folders ``tables``, the report lock held."""
-    from .batch import dump_of, table_lines
+    from .archive import line_dump
+    from .batch import table_lines
     from .runstate import state_of
     from .slurm import queue_detail, queue_states
 
@@ -634,6 +718,7 @@ def _collect(folder, tables, counts, figures):
             continue
         todo = []
         queue = queue_states(t) if os.path.exists(os.path.join(t, "slurm.sh")) else {}
+        held = _from_archive(archive, t, [line_dump(t, x) for x in lines if not x.error], counts)
         for line in lines:
             label = prefix + (f"seed {line.row['seed']}" if "seed" in line.row and not line.error
                               else line.description)
@@ -642,9 +727,10 @@ def _collect(folder, tables, counts, figures):
             if line.error:
                 st_detail, dump = f"invalid line: {line.error}", None
             else:
-                own = os.path.join(t, line.description)
-                dump = (os.path.join(own, os.path.basename(dump_of(t, line.row))) if os.path.isdir(own)
-                        else dump_of(t, line.row))
+                dump = line_dump(t, line)
+                if dump in held:
+                    runs.setdefault(sample, []).append((label, dump, ARCHIVED))
+                    continue
                 st = state_of(dump)
                 bad = whole(dump) if st.finished else None
                 if st.finished and bad is None:
@@ -693,7 +779,7 @@ def _collect(folder, tables, counts, figures):
     if not runs:
         print(f"study: no run has finished yet ({len(pending)} not finished): the manifest and the report list them",
               file=sys.stderr)
-    failed = analyse_and_report(folder, runs, unfinished=others, counts=counts, figures=figures)
+    failed = analyse_and_report(folder, runs, unfinished=others, counts=counts, figures=figures, archive=archive)
     return runs, pending, failed, resubmit
 
 
@@ -741,6 +827,9 @@ def main(argv=None):
                     help="the contact counts claim 6 is read by besides ours (postproc analyze --types), "
                          "each S1 dump analysed once more per count: default lmgc90; e.g. --counts lmgc90 "
                          "lmgc90-2009; none: --counts with nothing after it")
+    ap.add_argument("--archive", metavar="DEST",
+                    help="an archive of analysed runs (python -m yade_scripts.archive STUDY DEST): seeds it "
+                         "holds are not run, their archived analyses are used (ensembles and --collect)")
     ap.add_argument("--no-figures", action="store_true",
                     help="numbers only: the analyses and the report without their figures (faster)")
     args = ap.parse_args(argv)
@@ -753,6 +842,14 @@ def main(argv=None):
         except InputError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
+    if args.archive and not os.path.isdir(args.archive):
+        print(f"study: error: --archive {args.archive}: no such folder (an archive is made by python -m "
+              f"yade_scripts.archive STUDY DEST)", file=sys.stderr)
+        return 2
+    if args.archive and not args.collect and args.ensemble < 2:
+        print("study: error: --archive reads the seeds of an ensemble (--ensemble N >= 2) or a --collect",
+              file=sys.stderr)
+        return 2
     if args.analyse:
         import signal
 
@@ -763,7 +860,8 @@ def main(argv=None):
         return analyse_one(args.analyse, args.counts, figures=not args.no_figures)
     if args.collect:
         try:
-            runs, pending, failed, _ = collect(args.collect, args.counts, figures=not args.no_figures)
+            runs, pending, failed, _ = collect(args.collect, args.counts, figures=not args.no_figures,
+                                               archive=args.archive)
         except ConfigError as exc:
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
@@ -814,7 +912,7 @@ def _study(args, overrides):
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
                                 job_threads={"polyhedra": args.job_threads}, counts=args.counts,
-                                figures=not args.no_figures)
+                                figures=not args.no_figures, archive=args.archive)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
@@ -828,7 +926,8 @@ def _study(args, overrides):
         return EXIT_TERM
     lock = report_lock(args.out, wait=True)        # the manifest read back as written: no collect in between
     try:
-        failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures)
+        failed = analyse_and_report(args.out, runs, counts=args.counts, figures=not args.no_figures,
+                                    archive=args.archive)
         missing = unusable_samples(args.out)
     finally:
         lock.release()

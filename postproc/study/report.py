@@ -83,6 +83,14 @@ def usable_runs(runs, sample):
     return sorted(rs, key=lambda r: r.get("status") != "ok")
 
 
+def figure_runs(runs, sample):
+    """:func:`usable_runs` of ``sample`` with those whose dump is on this
+    host first (a run taken from an archive of analysed runs,
+    :mod:`yade_scripts.archive`, has none): the runs the figures that read
+    a dump, or copy an analysis's figures, start from."""
+    return sorted(usable_runs(runs, sample), key=lambda r: not os.path.exists(r.get("dump") or ""))
+
+
 def run_summaries(runs):
     """{sample: [summary DataFrame per usable run]}. The shear snapshots of a
     partial run before the start of the steady state of a complete run
@@ -326,7 +334,7 @@ def _slab_snapshots(runs):
 
     chosen, eq = {}, {}
     for s in SAMPLES:
-        ok = usable_runs(runs, s)
+        ok = figure_runs(runs, s)
         if not ok:
             continue
         p = os.path.join(ok[0]["analysis"], "summary.csv") if ok[0].get("analysis") else None
@@ -402,7 +410,7 @@ def _report_figures(out, runs, summaries, pub, problems):
            caption="q/p (signed, axial) against (2/5)(a+a_l+a_n+a_t), every shear snapshot, seed fig. 8")
     polar = {}
     for s in SAMPLES:
-        ok = usable_runs(runs, s)
+        ok = figure_runs(runs, s)
         if ok:
             try:
                 polar[s] = _polar_data(ok[0])
@@ -411,22 +419,22 @@ def _report_figures(out, runs, summaries, pub, problems):
     if polar:
         figure("fig_polar.png", plots.plot_report_polar, polar,
                caption="P_Ω(θ) and ⟨ℓ⟩(θ) with their harmonic fits at εq ≈ 0.3 (or the last "
-                       "snapshot), first seed, seed figs. 5 and 7")
-    s1 = usable_runs(runs, "polyhedra")
+                       "snapshot), first seed with its dump, seed figs. 5 and 7")
+    s1 = figure_runs(runs, "polyhedra")
     if s1:
         try:
             gp = group_branch_polar(s1[0])
             figure("fig_types_polar.png", plots.plot_group_polar, *gp,
                    caption="branch-vector directions P_Ω(θ) of simple and triple contacts of S1 "
-                           "(the analysis's contact-type criterion) at εq ≈ 0.3 or the last snapshot, first seed: "
-                           "the paper's claim-6 figure")
+                           "(the analysis's contact-type criterion) at εq ≈ 0.3 or the last snapshot, first seed "
+                           "with its dump: the paper's claim-6 figure")
         except Exception as exc:
             problems.append(f"figure fig_types_polar.png not drawn: {exc.__class__.__name__}: {exc}")
         for name, cap in (("contact_types.png", "contact types of S1 against εq: proportions "
                            "(bands: the criterion's threshold halved and doubled), force ratios, "
-                           "signed fabric, q/p shares (first seed)"),
+                           "signed fabric, q/p shares (first seed with its dump)"),
                           ("footprint.png", "footprint extents L1/d and L2/d of S1's polyhedra contacts "
-                           "(steady shear, first seed) with the threshold t, t/2 and 2t: where the "
+                           "(steady shear, first seed with its dump) with the threshold t, t/2 and 2t: where the "
                            "simple, double and triple groups overlap"),
                           ("force_pdf.png", "densities of f_n/⟨f_n⟩ by contact type, S1, steady shear"),
                           ("networks.png", "strong and weak networks of S1")):
@@ -442,8 +450,9 @@ def _report_figures(out, runs, summaries, pub, problems):
         figure("packing_slab.png", _slab_pictures, picked, "force",
                caption="force networks in a slab 1.5 mean diameters thick through the middle of the sample "
                        "(normal to y; z is the compression axis), both samples at the same strain (the snapshot "
-                       "of each nearest the largest εq both reached, first seed): grains cut by the mid-plane, "
-                       "contacts between centres, width and colour by f_n/⟨f_n⟩. 3-D: postproc export-vtk")
+                       "of each nearest the largest εq both reached, first seed with its dump): grains cut by "
+                       "the mid-plane, contacts between centres, width and colour by f_n/⟨f_n⟩. "
+                       "3-D: postproc export-vtk")
     if "polyhedra" in picked:
         figure("s1_slab_types.png", _slab_pictures, {"polyhedra": picked["polyhedra"]}, "type",
                caption="the same slab of S1, contacts coloured by type (the analysis's criterion), width by "

@@ -1,0 +1,355 @@
+"""A study's analysed runs kept without their dumps, to carry a long study from host to host.
+
+    python -m yade_scripts.archive STUDY DEST
+
+A 5000-grain study runs for many hours, longer than a host may be kept: a
+new host starts with none of the old one's run folders. The archive keeps,
+of every run of STUDY that is complete, adds up and is analysed by today's
+code, what the report reads (the analysis folders' numbers: ``*.csv``,
+``*.json``, ``*.txt``; no figures, no dump) and its record
+``<stem>.archived.json``: the dump's name, size, snapshot count and SHA-256,
+the analysis code's hash (:func:`postproc.provenance.code_hash`), the
+SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
+(``DEST/<run folder>/``, each with a copy of its ``params.json`` and the
+SHA-256 of its shape library), so it is small (about 100 kB a 5000-grain
+S1 seed) and can be committed.
+
+``make study ... ARCHIVE=DEST`` (``python -m yade_scripts.study --archive
+DEST``) then runs only the seeds DEST does not hold: an archived seed is
+used as it is (:func:`archived`) when its run folder has the same
+parameters and shape library, its files are those recorded and its
+analysis was made by today's code, and it is never run again, so no seed
+is counted twice; any other archived seed is named with the reason and
+run again. A seed whose complete dump is on this host is analysed from it,
+as always. ``--collect DIR --archive DEST`` reads it the same way. Runs
+carried over this way come from other hosts: each repeats step for step
+only on its own host's CPU (docs/measurements.md, "Preparation"), and the
+statistics over seeds are what they share.
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import hashlib
+import json
+import os
+import shutil
+import sys
+import tempfile
+
+from .parameters import ConfigError
+
+#: the analysis files kept: the numbers the report reads, not the figures
+KEPT_SUFFIXES = (".csv", ".json", ".txt")
+#: a run folder's record in the archive: its params.json's copy is beside it
+FOLDER_RECORD = "archive.json"
+#: the record of one archived run, beside where its dump would be
+RUN_RECORD = ".archived.json"
+
+
+def sha256_of(path, chunk=1 << 22):
+    """SHA-256 (hex) of a file's bytes."""
+    h = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(chunk), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def line_dump(table, line):
+    """The dump of run line ``line`` of the run folder ``table``: in the
+    line's own folder ``<description>/`` when there is one (a SLURM array
+    task's), else next to the table."""
+    from .batch import dump_of
+
+    own = os.path.join(table, line.description)
+    return (os.path.join(own, os.path.basename(dump_of(table, line.row))) if os.path.isdir(own)
+            else dump_of(table, line.row))
+
+
+def _analysis_folders(dump):
+    """{name: folder} of a dump's analyses: "" its primary one, COUNT its
+    analysis with that contact count (:func:`postproc.study.counts.count_folder`)."""
+    from .study import analysis_folder
+
+    primary = analysis_folder(dump)
+    out = {"": primary}
+    parent, base = os.path.split(primary)
+    for name in sorted(os.listdir(parent)) if os.path.isdir(parent) else []:
+        if name.startswith(base + "-") and os.path.isdir(os.path.join(parent, name)):
+            out[name[len(base) + 1:]] = os.path.join(parent, name)
+    return out
+
+
+def _made_from(folder, dump):
+    """None when ``folder`` holds an analysis (summary.csv, source.json) of
+    the dump file ``dump`` as it is now, made by today's code; else why not."""
+    from postproc.provenance import SOURCE_FILE, code_hash, input_files
+
+    try:
+        with open(os.path.join(folder, SOURCE_FILE)) as fh:
+            src = json.load(fh)
+        if not os.path.exists(os.path.join(folder, "summary.csv")):
+            return "no summary.csv"
+    except (OSError, ValueError):
+        return "no readable source.json"
+    if src.get("code") != code_hash():
+        return "made by other analysis code"
+    if src.get("input") != input_files(dump):
+        return "made from another dump file"
+    return None
+
+
+def _library_sha(table):
+    """SHA-256 of the shape library a run folder's params.json names, or
+    None (no library: spheres)."""
+    with open(os.path.join(table, "params.json")) as fh:
+        lib = json.load(fh).get("library")
+    path = os.path.join(table, lib) if lib else None
+    return sha256_of(path) if path and os.path.exists(path) else None
+
+
+def _folder_record(table):
+    """What a run folder's archived runs must share with a folder that uses
+    them: its params.json and its shape library's SHA-256."""
+    with open(os.path.join(table, "params.json")) as fh:
+        params = json.load(fh)
+    return {"params": params, "library_sha256": _library_sha(table)}
+
+
+def save(study, dest, echo=print):
+    """Add to the archive ``dest`` every run of ``study`` that is complete,
+    adds up (:meth:`postproc.schema.DumpReader.verify`) and whose primary
+    analysis was made from its dump by today's code, with every analysis of
+    it by another contact count that is current too.
+
+    A run already archived from the same dump is left as it is; a run whose
+    seed is archived from another dump (another host's run) is refused, so
+    that no seed is archived twice. Each run's files are written to a
+    temporary folder and moved into place, its record last: a run is in
+    the archive when, and only when, its record is.
+
+    Parameters
+    ----------
+    study : str
+        A study folder (or one generated run folder).
+    dest : str
+        The archive's folder (made when missing).
+    echo : callable
+        Where each run's line goes.
+
+    Returns
+    -------
+    saved : list of str
+        "<run folder>/<dump name>" of each run added.
+    skipped : list of str
+        One line per run not added, with why.
+
+    Raises
+    ------
+    ConfigError
+        ``study`` holds no run folder, or one of its run folders is
+        archived in ``dest`` with other parameters or another shape library.
+    """
+    from postproc.provenance import code_hash
+    from postproc.schema import DumpReader
+
+    from .batch import table_lines
+    from .runstate import complete
+    from .study import run_folders, whole
+
+    if not os.path.isdir(study) or not run_folders(study):
+        raise ConfigError(f"{study}: no generated run folder (table.txt) in it or one level below")
+    saved, skipped = [], []
+    for table in run_folders(study):
+        name = os.path.basename(os.path.abspath(table))
+        into = os.path.join(dest, name)
+        mine = _folder_record(table)
+        there = _read_json(os.path.join(into, FOLDER_RECORD))
+        if there is not None and there != mine:
+            raise ConfigError(f"{into}: archived runs of other parameters or another shape library than {table}")
+        os.makedirs(into, exist_ok=True)
+        if there is None:
+            _write_json(os.path.join(into, FOLDER_RECORD), mine)
+            shutil.copyfile(os.path.join(table, "params.json"), os.path.join(into, "params.json"))
+        for line in table_lines(table):
+            if line.error:
+                continue
+            dump = line_dump(table, line)
+            stem = os.path.splitext(os.path.basename(dump))[0]
+            where = f"{name}/{os.path.basename(dump)}"
+            if not complete(dump):
+                skipped.append(f"{where}: not complete")
+                continue
+            bad = whole(dump)
+            folders = _analysis_folders(dump)
+            why = f"does not add up ({bad})" if bad else _made_from(folders[""], dump)
+            if why:
+                skipped.append(f"{where}: {why}")
+                continue
+            record_path = os.path.join(into, stem + RUN_RECORD)
+            old = _read_json(record_path)
+            sha = sha256_of(dump)
+            if old is not None:
+                if old.get("dump", {}).get("sha256") != sha:
+                    skipped.append(f"{where}: its seed is archived from another run (dump SHA-256 "
+                                   f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
+                elif old.get("code") != code_hash():
+                    skipped.append(f"{where}: archived by other analysis code; move {record_path} aside "
+                                   f"to archive it again")
+                else:
+                    skipped.append(f"{where}: already archived")
+                continue
+            counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
+            with DumpReader(dump) as r:
+                n = len(r)
+            kept = {"": folders[""], **counts}
+            files = _copy_run(dump, table, into, kept)
+            info = os.path.relpath(os.path.splitext(dump)[0] + ".info.json", table)
+            record = {"seed": line.row.get("seed"), "description": line.description,
+                      "analyses": {c: os.path.relpath(f, table) for c, f in kept.items()},
+                      "info": info if info in files else None,
+                      "dump": {"name": os.path.basename(dump), "bytes": os.path.getsize(dump),
+                               "snapshots": n, "sha256": sha},
+                      "code": code_hash(), "counts": sorted(counts), "files": files,
+                      "saved": datetime.datetime.now().isoformat(timespec="seconds")}
+            _write_json(record_path, record)
+            saved.append(where)
+            echo(f"[archive] {where}: kept ({len(files)} files, counts: {', '.join(sorted(counts)) or 'none'})")
+    return saved, skipped
+
+
+def _copy_run(dump, table, into, folders):
+    """Copy a run's kept files (its info and attempts records, and of each
+    analysis folder the files of :data:`KEPT_SUFFIXES`) from ``table`` to
+    ``into``, each folder through a temporary one; {path relative to
+    ``into``: SHA-256}."""
+    stem = os.path.splitext(dump)[0]
+    files = {}
+    for path in (stem + ".info.json", stem + ".attempts.json"):
+        if os.path.exists(path):
+            rel = os.path.relpath(path, table)
+            os.makedirs(os.path.dirname(os.path.join(into, rel)), exist_ok=True)
+            shutil.copyfile(path, os.path.join(into, rel))
+            files[rel] = sha256_of(path)
+    for folder in folders.values():
+        rel = os.path.relpath(folder, table)
+        tmp = tempfile.mkdtemp(prefix=".tmp-", dir=into)
+        for f in sorted(os.listdir(folder)):
+            if f.endswith(KEPT_SUFFIXES) and os.path.isfile(os.path.join(folder, f)):
+                shutil.copyfile(os.path.join(folder, f), os.path.join(tmp, f))
+                files[f"{rel}/{f}"] = sha256_of(os.path.join(folder, f))
+        target = os.path.join(into, rel)
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        if os.path.isdir(target):
+            shutil.rmtree(target)
+        os.replace(tmp, target)
+    return files
+
+
+def archived(dest, table, counts=()):
+    """The archived runs of the run folder ``table`` in the archive
+    ``dest``, each usable or not, with why.
+
+    A run is usable when its record is there, the archive's copy of the run
+    folder has the same parameters and shape library as ``table``, every
+    file it records has the recorded SHA-256, its analyses were made by
+    today's analysis code, and it has an analysis by every contact count of
+    ``counts``.
+
+    Parameters
+    ----------
+    dest : str or None
+        The archive (None: none, returns {}).
+    table : str
+        A generated run folder of the study or the collect.
+    counts : sequence of str
+        The other contact counts the study reads (S1 runs only).
+
+    Returns
+    -------
+    dict
+        dump name -> ("ok", entry) or ("refused", one line why). An entry has
+        "analysis" (its primary analysis folder in the archive), "counts"
+        {count: folder}, "info" (its run.info.json, or None) and "record".
+    """
+    from postproc.provenance import code_hash
+
+    if not dest:
+        return {}
+    into = os.path.join(dest, os.path.basename(os.path.abspath(table)))
+    there = _read_json(os.path.join(into, FOLDER_RECORD))
+    if there is None:
+        return {}
+    records = sorted(f for f in os.listdir(into) if f.endswith(RUN_RECORD))
+    with open(os.path.join(table, "params.json")) as fh:
+        sample = json.load(fh).get("sample")
+    same = there == _folder_record(table)
+    out = {}
+    for f in records:
+        rec = _read_json(os.path.join(into, f))
+        name = (rec or {}).get("dump", {}).get("name") or f[: -len(RUN_RECORD)] + ".h5"
+        why = None
+        if not rec or "analyses" not in rec:
+            why = "its record cannot be read"
+        elif not same:
+            why = "archived from a run folder of other parameters or another shape library"
+        elif rec.get("code") != code_hash():
+            why = "analysed by other analysis code, and its dump is not here to analyse again"
+        else:
+            for rel, sha in rec.get("files", {}).items():
+                p = os.path.join(into, rel)
+                if not os.path.exists(p) or sha256_of(p) != sha:
+                    why = f"{rel} is missing or not as recorded"
+                    break
+            missing = [c for c in (counts if sample == "polyhedra" else ()) if c not in rec.get("counts", [])]
+            if why is None and missing:
+                why = f"no analysis by the {', '.join(missing)} count"
+        if why:
+            out[name] = ("refused", f"{into}/{name} archived but not used: {why}; it runs again")
+            continue
+        where = {c: os.path.join(into, rel) for c, rel in rec["analyses"].items()}
+        out[name] = ("ok", {"analysis": where.pop(""), "counts": where, "record": rec,
+                            "info": rec.get("info") and os.path.join(into, rec["info"])})
+    return out
+
+
+def _read_json(path):
+    try:
+        with open(path) as fh:
+            return json.load(fh)
+    except FileNotFoundError:
+        return None
+    except (OSError, ValueError):
+        return {}
+
+
+def _write_json(path, data):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as fh:
+        json.dump(data, fh, indent=1, sort_keys=True)
+        fh.write("\n")
+    os.replace(tmp, path)
+
+
+def main(argv=None):
+    """``python -m yade_scripts.archive STUDY DEST``: :func:`save`; exit 0
+    when it ran (each run kept or skipped is named), 2 for a bad STUDY or
+    DEST (one line)."""
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.archive", description=__doc__.splitlines()[0])
+    ap.add_argument("study", help="the study folder (or one generated run folder)")
+    ap.add_argument("dest", help="the archive's folder, e.g. reference_data/<study name>")
+    args = ap.parse_args(argv)
+    try:
+        saved, skipped = save(args.study, args.dest)
+    except (ConfigError, OSError) as exc:
+        print(f"archive: error: {exc}", file=sys.stderr)
+        return 2
+    for line in skipped:
+        print(f"[archive] {line}", flush=True)
+    print(f"archive: {len(saved)} run(s) added to {args.dest}, {len(skipped)} not", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
