@@ -20,7 +20,8 @@ SHAPES ?=
 # (default lmgc90); on a finished study make study makes only the missing analyses
 COUNTS ?=
 # ARCHIVE=DEST: an archive of analysed runs (make archive; yade_scripts/archive.py):
-# make study runs only the seeds it does not hold, and reads those it does
+# make study runs only the seeds it does not hold, reads those it does, and adds
+# each run it completes as soon as it is analysed
 ARCHIVE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE

@@ -211,6 +211,26 @@ def test_work_after_a_run_fills_a_free_core_and_not_one_a_run_waits_for(tmp_path
     assert data["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(data["attempts"], 2))
 
 
+def test_work_after_a_run_first_takes_the_free_core_before_a_waiting_run(tmp_path, fake):
+    """``after_first``: one core, two 0.4 s jobs and a job complete at the
+    start: each job's work starts as soon as a core is free, before the next
+    waiting run, so every run but the first starts after the work of the one
+    before it has ended."""
+    js = jobs_in(tmp_path / "f", [("a", 0.4), ("b", 0.4), ("old", 0.1)])
+    (tmp_path / "f" / "old.h5").write_text("complete")
+    rec = str(tmp_path / "schedule.json")
+    st = run_pool(js, 1, record=rec, echo=lambda m: None, yade=fake, after=_after(tmp_path, 0.2), after_first=True)
+    assert st == {"a": 0, "b": 0, "old": 0}
+    data = json.load(open(rec))
+    runs = {a["job"]: a for a in data["attempts"] if a.get("kind") != "after"}
+    after = {a["job"]: a for a in data["attempts"] if a.get("kind") == "after"}
+    assert sorted(after) == ["after a", "after b", "after old"]
+    # one core: the work after "old" (complete at the start) goes before any run, a's before b starts
+    assert after["after old"]["end"] <= runs["a"]["start"] + 1e-9
+    assert after["after a"]["start"] >= runs["a"]["end"] - 1e-9
+    assert after["after a"]["end"] <= runs["b"]["start"] + 1e-9
+
+
 def test_failed_work_after_a_run_is_reported_and_the_run_stays_done(tmp_path, fake):
     js = jobs_in(tmp_path / "f", [("a", 0.1)])
     msgs = []

@@ -344,6 +344,14 @@ def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_librar
     assert said.count("taken from the archive") == 3
     assert "spheres-seed2.h5 archived but not used: analysed by other analysis code" in said
     assert "spheres-seed2 started" in said and "polyhedra-seed1 started" not in said
+    # the seed run here was analysed at once and replaced its stale record in the archive
+    from postproc.provenance import code_hash
+    assert "spheres-seed2: the work after it started" in said
+    assert ("spheres-seed2.h5: its archived run was analysed by other code, replaced"
+            in (new / "spheres-ensemble" / "spheres-seed2.after.log").read_text())
+    rec2 = json.loads(stale.read_text())
+    dump2 = new / "spheres-ensemble" / "spheres-seed2.h5"
+    assert rec2["code"] == code_hash() and rec2["dump"]["sha256"] == hashlib.sha256(dump2.read_bytes()).hexdigest()
     manifest = json.loads((new / "manifest.json").read_text())
     assert [r["status"] for s in ("polyhedra", "spheres") for r in manifest[s]] == ["ok"] * 4
     assert [("archived" in r) for s in ("polyhedra", "spheres") for r in manifest[s]] == [True, True, True, False]

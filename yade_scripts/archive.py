@@ -36,6 +36,7 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 
 from .parameters import ConfigError
 
@@ -45,6 +46,10 @@ KEPT_SUFFIXES = (".csv", ".json", ".txt")
 FOLDER_RECORD = "archive.json"
 #: the record of one archived run, beside where its dump would be
 RUN_RECORD = ".archived.json"
+#: the archive's lock: one process adds to it at a time (:func:`save`)
+LOCK = "archive.lock"
+#: seconds between two tries of the lock
+LOCK_WAIT_SECONDS = 0.2
 
 
 def sha256_of(path, chunk=1 << 22):
@@ -123,11 +128,14 @@ def save(study, dest, echo=print):
     analysis was made from its dump by today's code, with every analysis of
     it by another contact count that is current too.
 
-    A run already archived from the same dump is left as it is; a run whose
-    seed is archived from another dump (another host's run) is refused, so
-    that no seed is archived twice. Each run's files are written to a
+    A run already archived from the same dump by today's code is left as it
+    is; a run whose seed is archived from another dump (another host's
+    run) by today's code is refused, so that no seed is archived twice; an
+    archived run made by other analysis code (never used again,
+    :func:`archived`) is replaced. Each run's files are written to a
     temporary folder and moved into place, its record last: a run is in
-    the archive when, and only when, its record is.
+    the archive when, and only when, its record is. One process adds to an
+    archive at a time (``DEST/archive.lock``; another waits for it).
 
     Parameters
     ----------
@@ -151,6 +159,35 @@ def save(study, dest, echo=print):
         ``study`` holds no run folder, or one of its run folders is
         archived in ``dest`` with other parameters or another shape library.
     """
+    from .study import run_folders
+
+    if not os.path.isdir(study) or not run_folders(study):
+        raise ConfigError(f"{study}: no generated run folder (table.txt) in it or one level below")
+    os.makedirs(dest, exist_ok=True)
+    lock = _lock(dest, echo)
+    try:
+        return _save(study, dest, echo)
+    finally:
+        lock.release()
+
+
+def _lock(dest, echo):
+    """The archive's lock (:data:`LOCK`), held; waits for another holder."""
+    from .runlock import RunBusy, RunLock, describe
+
+    lock, said = RunLock(os.path.join(dest, LOCK), "archive", subject=f"the archive {dest}"), False
+    while True:
+        try:
+            return lock.acquire()
+        except RunBusy as exc:
+            if not said:
+                echo(f"[archive] waiting for {describe(exc.holder)} to finish adding to {dest}")
+                said = True
+            time.sleep(LOCK_WAIT_SECONDS)
+
+
+def _save(study, dest, echo):
+    """:func:`save`'s work, the archive's lock held."""
     from postproc.provenance import code_hash
     from postproc.schema import DumpReader
 
@@ -158,8 +195,6 @@ def save(study, dest, echo=print):
     from .runstate import complete
     from .study import run_folders, whole
 
-    if not os.path.isdir(study) or not run_folders(study):
-        raise ConfigError(f"{study}: no generated run folder (table.txt) in it or one level below")
     saved, skipped = [], []
     for table in run_folders(study):
         name = os.path.basename(os.path.abspath(table))
@@ -190,16 +225,16 @@ def save(study, dest, echo=print):
             record_path = os.path.join(into, stem + RUN_RECORD)
             old = _read_json(record_path)
             sha = sha256_of(dump)
-            if old is not None:
+            if old is not None and old.get("code") == code_hash():
                 if old.get("dump", {}).get("sha256") != sha:
                     skipped.append(f"{where}: its seed is archived from another run (dump SHA-256 "
                                    f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
-                elif old.get("code") != code_hash():
-                    skipped.append(f"{where}: archived by other analysis code; move {record_path} aside "
-                                   f"to archive it again")
                 else:
                     skipped.append(f"{where}: already archived")
                 continue
+            if old is not None:
+                echo(f"[archive] {where}: its archived run was analysed by other code, replaced")
+                os.remove(record_path)
             counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
             with DumpReader(dump) as r:
                 n = len(r)

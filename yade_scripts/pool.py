@@ -41,7 +41,9 @@ running runs goes through here: the study's single seeds
   ``after(job)`` gives a command; it runs on one core of its own, only
   when no run waits, and before a freed core goes to widening, so the
   analyses of the finished runs fill the cores that the last runs leave
-  idle, and the pool ends when they have. Its output goes to
+  idle, and the pool ends when they have (``after_first``: on the first
+  free core, before the waiting runs, for a study that keeps its
+  finished runs as it goes, :mod:`yade_scripts.archive`). Its output goes to
   ``STEM.after.log``; a failure is reported and loses nothing (the caller
   can do the work again).
 * ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
@@ -342,7 +344,7 @@ def _catch_stop_signals(flag):
 
 
 def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, note=None,
-             max_resumes=MAX_RESUMES, after=None):
+             max_resumes=MAX_RESUMES, after=None, after_first=False):
     """Run jobs on a fixed number of cores, each to its end: the one loop
     every launcher uses (the module docstring gives the schedule).
 
@@ -386,6 +388,11 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     after : callable, optional
         job -> command (argv list) or None: the work after each complete
         job, run on a free core (its output in ``STEM.after.log``).
+    after_first : bool, optional
+        False (default): the work after runs waits until no run waits;
+        True: it takes the first free core, before any waiting run (a study
+        longer than its host, whose finished runs are to be analysed and
+        kept while it goes: :mod:`yade_scripts.archive`).
 
     Returns
     -------
@@ -430,12 +437,12 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     """
     if stopping is not None or threading.current_thread() is not threading.main_thread():
         return _run_pool(jobs, cores, record, echo, yade, stopping or (lambda: False), note, max_resumes, after,
-                         own_session=False)
+                         own_session=False, after_first=after_first)
     signals = []
     restore = _catch_stop_signals(signals)
     try:
         return _run_pool(jobs, cores, record, echo, yade, lambda: bool(signals), note, max_resumes, after,
-                         own_session=True)
+                         own_session=True, after_first=after_first)
     finally:
         restore()
 
@@ -473,7 +480,7 @@ def release_runs(locks):
         lock.release()
 
 
-def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session):
+def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, after_first):
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
@@ -489,12 +496,14 @@ def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, afte
             echo(f"{job.name}: attempt(s) {', '.join(map(str, killed))} ended without a record (killed with their "
                  f"launcher): recorded as killed")
     try:
-        return _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks)
+        return _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks,
+                           after_first)
     finally:
         release_runs(locks)
 
 
-def _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks):
+def _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, after, own_session, locks,
+                after_first):
     status, waiting, todo, doing = {}, [], [], []      # todo, doing: the work after runs
 
     def queue_after(job):
@@ -554,15 +563,15 @@ def _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, af
             if running:
                 echo(f"[pool] stopping: SIGTERM to {len(running)} run(s), each writes a checkpoint")
         busy = sum(r.threads for r in running.values()) + len(doing)
-        while waiting and (busy + waiting[0].threads <= cores or not (running or doing)):
-            job = waiting.pop(0)
-            launch(job, job.threads)
-            busy += job.threads
-        while todo and not waiting and busy < cores:
+        while todo and (after_first or not waiting) and busy < cores:
             job, cmd = todo.pop(0)
             doing.append(_After(job, cmd, own_session))
             echo(f"{job.name}: the work after it started on a free core (log {doing[-1].log})")
             busy += 1
+        while waiting and (busy + waiting[0].threads <= cores or not (running or doing)):
+            job = waiting.pop(0)
+            launch(job, job.threads)
+            busy += job.threads
         choice = None if stop_sent else widen_choice(
             cores - busy, len(waiting) + len(todo),
             [(r.job, r.threads, r.started) for r in running.values() if not r.requested],

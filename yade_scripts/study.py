@@ -235,7 +235,9 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         An archive of analysed runs (:mod:`yade_scripts.archive`): a seed
         whose dump is not complete here and that the archive holds usable
         (:func:`yade_scripts.archive.archived`) is not run; its status is
-        :data:`ARCHIVED`.
+        :data:`ARCHIVED`. Each run that completes here is then analysed at
+        once, on the first free core (``after_first`` of
+        :func:`yade_scripts.pool.run_pool`), and added to the archive.
 
     Returns
     -------
@@ -275,7 +277,8 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     if pool:
         _need_yade()
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
-                      after=functools.partial(analyse_after, counts=counts, figures=figures))
+                      after=functools.partial(analyse_after, counts=counts, figures=figures, archive=archive),
+                      after_first=archive is not None) if pool else {}
     return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r),
                  ARCHIVED if dump_of(os.path.join(out, f"{s}-ensemble"), r) in kept else status[r["description"]])
                 for _, r in rows[s]] for s in samples}
@@ -321,15 +324,17 @@ def analysis_folder(dump):
     return os.path.join(os.path.dirname(dump), name)
 
 
-def analyse_after(job, counts=None, figures=True):
+def analyse_after(job, counts=None, figures=True, archive=None):
     """The pool's work after a complete run (:func:`yade_scripts.pool.run_pool`'s
     ``after``): ``python -m yade_scripts.study --analyse DUMP [--counts
     ...]``, the analyses the study makes of it, done while other runs still
     go; the study's own pass then keeps them (:func:`analyse_dump`).
     ``counts``: the other contact counts (default
     :data:`postproc.study.counts.EXTRA_COUNTS`; an empty sequence: none);
-    ``figures=False``: ``--no-figures``."""
-    more = ([] if counts is None else ["--counts", *counts]) + ([] if figures else ["--no-figures"])
+    ``figures=False``: ``--no-figures``; ``archive``: ``--archive DEST``,
+    the run then kept in that archive (:mod:`yade_scripts.archive`)."""
+    more = (([] if counts is None else ["--counts", *counts]) + ([] if figures else ["--no-figures"])
+            + ([] if archive is None else ["--archive", os.path.abspath(archive)]))
     return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump), *more]
 
 
@@ -358,6 +363,26 @@ def analyse_one(dump, counts=None, figures=True):
             print(f"[study] {line}", flush=True)
         return 1 if bad else 0
     return 0
+
+
+def archive_one(dump, archive):
+    """Add the analysed runs of ``dump``'s run folder to the archive
+    ``archive`` (:func:`yade_scripts.archive.save`), what ``--analyse DUMP
+    --archive DEST`` does after the analyses; 0, or 1 when ``dump``'s run
+    is not in the archive afterwards (the reason printed in one line)."""
+    from .archive import save
+
+    try:
+        saved, skipped = save(os.path.dirname(os.path.abspath(dump)), archive,
+                              echo=lambda m: print(m, flush=True))
+    except (ConfigError, OSError) as exc:
+        print(f"study: error: archive {archive}: {exc}", file=sys.stderr)
+        return 1
+    mine = f"{os.path.basename(os.path.dirname(os.path.abspath(dump)))}/{os.path.basename(dump)}"
+    why = [x for x in skipped if x.startswith(mine + ":") and not x.endswith(": already archived")]
+    for line in why:
+        print(f"study: error: {line}", file=sys.stderr)
+    return 1 if why else 0
 
 
 def run_exits(dump):
@@ -843,10 +868,10 @@ def main(argv=None):
             print(f"study: error: {exc}", file=sys.stderr)
             return 2
     if args.archive and not os.path.isdir(args.archive):
-        print(f"study: error: --archive {args.archive}: no such folder (an archive is made by python -m "
-              f"yade_scripts.archive STUDY DEST)", file=sys.stderr)
+        print(f"study: error: --archive {args.archive}: no such folder (make it, empty, to start an archive; "
+              f"python -m yade_scripts.archive STUDY DEST adds a study's analysed runs to one)", file=sys.stderr)
         return 2
-    if args.archive and not args.collect and args.ensemble < 2:
+    if args.archive and not (args.collect or args.analyse) and args.ensemble < 2:
         print("study: error: --archive reads the seeds of an ensemble (--ensemble N >= 2) or a --collect",
               file=sys.stderr)
         return 2
@@ -857,7 +882,8 @@ def main(argv=None):
         if not complete(args.analyse):
             print(f"study: error: {args.analyse}: not a complete dump", file=sys.stderr)
             return 2
-        return analyse_one(args.analyse, args.counts, figures=not args.no_figures)
+        code = analyse_one(args.analyse, args.counts, figures=not args.no_figures)
+        return archive_one(args.analyse, args.archive) if code == 0 and args.archive else code
     if args.collect:
         try:
             runs, pending, failed, _ = collect(args.collect, args.counts, figures=not args.no_figures,
