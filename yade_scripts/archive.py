@@ -11,7 +11,7 @@ code, what the report reads (the analysis folders' numbers: ``*.csv``,
 the analysis code's hash (:func:`postproc.provenance.code_hash`), the
 SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
 (``DEST/<run folder>/``, each with a copy of its ``params.json`` and the
-SHA-256 of its shape library), so it is small (about 100 kB a 5000-grain
+fingerprint of its shape library's content), so it is small (about 100 kB a 5000-grain
 S1 seed) and can be committed.
 
 ``make study ... ARCHIVE=DEST`` (``python -m yade_scripts.study --archive
@@ -105,21 +105,54 @@ def _made_from(folder, dump):
     return None
 
 
+def library_fingerprint(path):
+    """SHA-256 (hex) of a shape library's content: every dataset (its path,
+    dtype, shape and bytes) and every attribute of the HDF5 file in sorted
+    order, but the file's ``name`` attribute (the name it was written
+    under). Two builds of the same library are two files whose bytes differ
+    (the name, HDF5's own layout), with the same fingerprint."""
+    import h5py
+    import numpy as np
+
+    h = hashlib.sha256()
+
+    def attrs(obj, where):
+        for k in sorted(obj.attrs):
+            if where == "/" and k == "name":
+                continue
+            h.update(f"{where}@{k}".encode())
+            h.update(repr(np.asarray(obj.attrs[k]).tolist()).encode())
+
+    with h5py.File(path, "r") as f:
+        attrs(f, "/")
+        names = []
+        f.visit(names.append)
+        for name in sorted(names):
+            obj = f[name]
+            attrs(obj, name)
+            if isinstance(obj, h5py.Dataset):
+                data = np.ascontiguousarray(obj[()])
+                h.update(f"{name}:{data.dtype.str}:{data.shape}".encode())
+                h.update(data.tobytes() if data.dtype.kind != "O" else repr(data.tolist()).encode())
+    return h.hexdigest()
+
+
 def _library_sha(table):
-    """SHA-256 of the shape library a run folder's params.json names, or
-    None (no library: spheres)."""
+    """:func:`library_fingerprint` of the shape library a run folder's
+    params.json names, or None (no library: spheres)."""
     with open(os.path.join(table, "params.json")) as fh:
         lib = json.load(fh).get("library")
     path = os.path.join(table, lib) if lib else None
-    return sha256_of(path) if path and os.path.exists(path) else None
+    return library_fingerprint(path) if path and os.path.exists(path) else None
 
 
 def _folder_record(table):
     """What a run folder's archived runs must share with a folder that uses
-    them: its params.json and its shape library's SHA-256."""
+    them: its params.json and its shape library's content
+    (:func:`library_fingerprint`)."""
     with open(os.path.join(table, "params.json")) as fh:
         params = json.load(fh)
-    return {"params": params, "library_sha256": _library_sha(table)}
+    return {"params": params, "library_fingerprint": _library_sha(table)}
 
 
 def save(study, dest, echo=print):
