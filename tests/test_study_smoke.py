@@ -347,7 +347,7 @@ def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_librar
     # the seed run here was analysed at once and replaced its stale record in the archive
     from postproc.provenance import code_hash
     assert "spheres-seed2: the work after it started" in said
-    assert ("spheres-seed2.h5: its archived run was analysed by other code, replaced"
+    assert ("spheres-seed2.h5: archived again (its archived run was analysed by other code)"
             in (new / "spheres-ensemble" / "spheres-seed2.after.log").read_text())
     rec2 = json.loads(stale.read_text())
     dump2 = new / "spheres-ensemble" / "spheres-seed2.h5"

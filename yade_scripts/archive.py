@@ -10,9 +10,9 @@ code, what the report reads (the analysis folders' numbers: ``*.csv``,
 ``<stem>.archived.json``: the dump's name, size, snapshot count and SHA-256,
 the analysis code's hash (:func:`postproc.provenance.code_hash`), the
 SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
-(``DEST/<run folder>/``, each with a copy of its ``params.json`` and the
-fingerprint of its shape library's content), so it is small (about 100 kB a 5000-grain
-S1 seed) and can be committed.
+(``DEST/<run folder>/``, each with ``archive.json``: its parameters and a
+fingerprint of its shape library's content), so it is small (about 100 kB
+a 5000-grain S1 seed) and can be committed.
 
 ``make study ... ARCHIVE=DEST`` (``python -m yade_scripts.study --archive
 DEST``) then runs only the seeds DEST does not hold: an archived seed is
@@ -42,7 +42,7 @@ from .parameters import ConfigError
 
 #: the analysis files kept: the numbers the report reads, not the figures
 KEPT_SUFFIXES = (".csv", ".json", ".txt")
-#: a run folder's record in the archive: its params.json's copy is beside it
+#: a run folder's record in the archive: its params.json and shape library (:func:`_folder_record`)
 FOLDER_RECORD = "archive.json"
 #: the record of one archived run, beside where its dump would be
 RUN_RECORD = ".archived.json"
@@ -137,7 +137,7 @@ def library_fingerprint(path):
     return h.hexdigest()
 
 
-def _library_sha(table):
+def _library_of(table):
     """:func:`library_fingerprint` of the shape library a run folder's
     params.json names, or None (no library: spheres)."""
     with open(os.path.join(table, "params.json")) as fh:
@@ -152,7 +152,7 @@ def _folder_record(table):
     (:func:`library_fingerprint`)."""
     with open(os.path.join(table, "params.json")) as fh:
         params = json.load(fh)
-    return {"params": params, "library_fingerprint": _library_sha(table)}
+    return {"params": params, "library_fingerprint": _library_of(table)}
 
 
 def save(study, dest, echo=print):
@@ -239,7 +239,6 @@ def _save(study, dest, echo):
         os.makedirs(into, exist_ok=True)
         if there is None:
             _write_json(os.path.join(into, FOLDER_RECORD), mine)
-            shutil.copyfile(os.path.join(table, "params.json"), os.path.join(into, "params.json"))
         for line in table_lines(table):
             if line.error:
                 continue
@@ -249,26 +248,28 @@ def _save(study, dest, echo):
             if not complete(dump):
                 skipped.append(f"{where}: not complete")
                 continue
-            bad = whole(dump)
             folders = _analysis_folders(dump)
+            counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
+            record_path = os.path.join(into, stem + RUN_RECORD)
+            old = _read_json(record_path)
+            current = bool(old) and old.get("code") == code_hash()
+            if current and _same_file(old, into, dump) and set(counts) <= set(old.get("counts", [])):
+                skipped.append(f"{where}: already archived")
+                continue
+            bad = whole(dump)
             why = f"does not add up ({bad})" if bad else _made_from(folders[""], dump)
             if why:
                 skipped.append(f"{where}: {why}")
                 continue
-            record_path = os.path.join(into, stem + RUN_RECORD)
-            old = _read_json(record_path)
             sha = sha256_of(dump)
-            if old is not None and old.get("code") == code_hash():
-                if old.get("dump", {}).get("sha256") != sha:
-                    skipped.append(f"{where}: its seed is archived from another run (dump SHA-256 "
-                                   f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
-                else:
-                    skipped.append(f"{where}: already archived")
+            if current and old.get("dump", {}).get("sha256") != sha:
+                skipped.append(f"{where}: its seed is archived from another run (dump SHA-256 "
+                               f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
                 continue
             if old is not None:
-                echo(f"[archive] {where}: its archived run was analysed by other code, replaced")
+                again = "with more counts" if current else "its archived run was analysed by other code"
+                echo(f"[archive] {where}: archived again ({again})")
                 os.remove(record_path)
-            counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
             with DumpReader(dump) as r:
                 n = len(r)
             kept = {"": folders[""], **counts}
@@ -285,6 +286,20 @@ def _save(study, dest, echo):
             saved.append(where)
             echo(f"[archive] {where}: kept ({len(files)} files, counts: {', '.join(sorted(counts)) or 'none'})")
     return saved, skipped
+
+
+def _same_file(record, into, dump):
+    """Whether the archived run ``record`` (in the archive's run folder
+    ``into``) was analysed from the dump file ``dump`` as it is now (its
+    primary analysis's source.json names the same file, size and
+    modification time), without reading the dump."""
+    from postproc.provenance import SOURCE_FILE, input_files
+
+    try:
+        with open(os.path.join(into, record["analyses"][""], SOURCE_FILE)) as fh:
+            return json.load(fh).get("input") == input_files(dump)
+    except (OSError, ValueError, KeyError, TypeError):
+        return False
 
 
 def _copy_run(dump, table, into, folders):

@@ -279,9 +279,11 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
                       after=functools.partial(analyse_after, counts=counts, figures=figures, archive=archive),
                       after_first=archive is not None) if pool else {}
-    return {s: [(f"seed {r['seed']}", dump_of(os.path.join(out, f"{s}-ensemble"), r),
-                 ARCHIVED if dump_of(os.path.join(out, f"{s}-ensemble"), r) in kept else status[r["description"]])
-                for _, r in rows[s]] for s in samples}
+    def outcome(s, r):
+        dump = dump_of(os.path.join(out, f"{s}-ensemble"), r)
+        return f"seed {r['seed']}", dump, ARCHIVED if dump in kept else status[r["description"]]
+
+    return {s: [outcome(s, r) for _, r in rows[s]] for s in samples}
 
 
 def _from_archive(archive, table, dumps, counts):
