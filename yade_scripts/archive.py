@@ -11,7 +11,7 @@ code, what the report reads (the analysis folders' numbers: ``*.csv``,
 the analysis code's hash (:func:`postproc.provenance.code_hash`), the
 SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
 (``DEST/<run folder>/``, each with ``archive.json``: its parameters and a
-fingerprint of its shape library's content), so it is small (about 100 kB
+fingerprint of its shape library's content), so it is small (about 0.4 MB
 a 5000-grain S1 seed) and can be committed.
 
 ``make study ... ARCHIVE=DEST`` (``python -m yade_scripts.study --archive
