@@ -6,6 +6,8 @@ import os
 import subprocess
 import sys
 import textwrap
+import threading
+import time
 
 import pytest
 
@@ -54,6 +56,36 @@ def test_a_second_process_is_refused_in_one_line_naming_the_holder(tmp_path):
     # released: the next one gets it, and no stale record is left
     assert path.read_text() == ""
     assert child(TRY, path) == (0, "GOT")
+
+
+def test_a_waiting_taker_gets_the_lock_once_its_holder_lets_go_and_says_so_once(tmp_path):
+    path = tmp_path / "run.lock"
+    p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.readline()"), str(path)],
+                         stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    said, released = [], []
+    try:
+        assert p.stdout.readline().strip() == "HELD"
+        t = threading.Timer(0.5, lambda: (released.append(time.monotonic()), p.communicate("\n")))
+        t.start()
+        try:
+            lock = RunLock(str(path), "archive").acquire_waiting(0.02, said.append)
+        finally:
+            t.join()
+        got = time.monotonic()
+        try:
+            assert lock.acquired and runlock.holds(str(path))        # held by this process
+            assert holder(str(path))["pid"] == os.getpid() == json.loads(path.read_text())["pid"]
+        finally:
+            lock.release()
+    finally:
+        if p.poll() is None:
+            p.communicate("\n")
+    assert got >= released[0]
+    assert len(said) == 1 and said[0]["pid"] == p.pid and said[0]["what"] == "study"   # ~25 tries, said once
+    # a free lock is taken at once, with nothing said
+    with RunLock(str(path), "archive").acquire_waiting(0.02, said.append):
+        pass
+    assert len(said) == 1
 
 
 def test_a_dead_holder_s_lock_is_free_and_its_record_is_taken_over(tmp_path):
@@ -230,8 +262,6 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
     analyses stubbed; the lock and the waiting are the real ones), while
     ``analyse_and_report`` alone, not waiting, is refused."""
     import argparse
-    import threading
-    import time
 
     from yade_scripts import study
 

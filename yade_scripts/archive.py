@@ -36,7 +36,6 @@ import os
 import shutil
 import sys
 import tempfile
-import time
 
 from .parameters import ConfigError
 
@@ -206,17 +205,11 @@ def save(study, dest, echo=print):
 
 def _lock(dest, echo):
     """The archive's lock (:data:`LOCK`), held; waits for another holder."""
-    from .runlock import RunBusy, RunLock, describe
+    from .runlock import RunLock, describe
 
-    lock, said = RunLock(os.path.join(dest, LOCK), "archive", subject=f"the archive {dest}"), False
-    while True:
-        try:
-            return lock.acquire()
-        except RunBusy as exc:
-            if not said:
-                echo(f"[archive] waiting for {describe(exc.holder)} to finish adding to {dest}")
-                said = True
-            time.sleep(LOCK_WAIT_SECONDS)
+    lock = RunLock(os.path.join(dest, LOCK), "archive", subject=f"the archive {dest}")
+    return lock.acquire_waiting(LOCK_WAIT_SECONDS, lambda holder: echo(
+        f"[archive] waiting for {describe(holder)} to finish adding to {dest}"))
 
 
 def _save(study, dest, echo):

@@ -29,7 +29,10 @@ Who holds it:
   anything.
 * the writer of a folder's manifest and report holds ``FOLDER/report.lock``
   (:func:`yade_scripts.study.report_lock`): a study at its end, which waits
-  for it, or a ``--collect``, which refuses while another holds it.
+  for it, or a ``--collect``, which refuses while another holds it;
+* the writer of an archive of analysed runs holds ``DEST/archive.lock``
+  (:func:`yade_scripts.archive.save`), and a second one waits for it
+  (:meth:`RunLock.acquire_waiting`).
 
 POSIX locks belong to a process, and closing *any* descriptor of the file
 releases them all; so a process opens each lock file once (a registry of
@@ -309,6 +312,33 @@ class RunLock:
             fcntl.lockf(fd, fcntl.LOCK_UN)
         finally:
             os.close(fd)
+
+    def acquire_waiting(self, poll_seconds, say):
+        """Take the lock, waiting for as long as another process holds it.
+
+        Parameters
+        ----------
+        poll_seconds : float
+            Seconds between two tries, > 0.
+        say : callable
+            ``say(holder)``, called once, with the holder's record (dict,
+            :func:`own_record` of that process), when the lock is first
+            found held: how the caller tells its user that it waits.
+
+        Returns
+        -------
+        RunLock
+            ``self``, holding the lock.
+        """
+        said = False
+        while True:
+            try:
+                return self.acquire()
+            except RunBusy as exc:
+                if not said:
+                    say(exc.holder)
+                    said = True
+                time.sleep(poll_seconds)
 
     def __enter__(self):
         return self.acquire()

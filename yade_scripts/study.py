@@ -42,7 +42,6 @@ import os
 import re
 import shutil
 import sys
-import time
 
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
 from .parameters import SAMPLES, changed
@@ -484,18 +483,10 @@ def report_lock(out, wait=False):
     """
     lock = RunLock(os.path.join(out, REPORT_LOCK), "study" if wait else "collect",
                    subject=f"the report of {out} (manifest.json, report/)")
-    said = False
-    while True:
-        try:
-            return lock.acquire()
-        except RunBusy as exc:
-            if not wait:
-                raise
-            if not said:
-                print(f"[study] waiting for {describe(exc.holder)} to finish writing the manifest and report of "
-                      f"{out}", flush=True)
-                said = True
-            time.sleep(REPORT_WAIT_SECONDS)
+    if not wait:
+        return lock.acquire()
+    return lock.acquire_waiting(REPORT_WAIT_SECONDS, lambda holder: print(
+        f"[study] waiting for {describe(holder)} to finish writing the manifest and report of {out}", flush=True))
 
 
 def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, figures=True, archive=None):
