@@ -388,7 +388,6 @@ def seeds_to_decide(mean, sd, margin, level=0.95, n_max=100000):
     return None
 
 
-
 def leaning_words(lo, hi, margin):
     """Claim 6's leaning rule on intervals, over arrays: the one place its
     comparisons are written (:func:`postproc.study.claims.leaning_decision`
