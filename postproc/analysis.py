@@ -29,7 +29,31 @@ _IDX = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "yz": (1, 2), "xz": (0, 2), "x
 
 @dataclass
 class SnapshotResult:
-    """Everything computed for one snapshot."""
+    """Everything computed for one snapshot.
+
+    Attributes
+    ----------
+    row : dict
+        The scalars of the snapshot's ``summary.csv`` row (stresses in Pa,
+        compression positive; anisotropies; coordination; networks;
+        contact types).
+    angular : postproc.angular.AngularFunctions
+        The binned angular functions of the force-bearing particle pairs
+        (for the polar plots).
+    fits : dict
+        Their harmonic fits (``a_fit``, ``a_l_fit``, ``a_n_fit``,
+        ``a_t_fit``, ...; :func:`postproc.angular.fit_harmonics`).
+    normal_force : ndarray, shape (C',)
+        N, the normal forces of the C' force-bearing particle-particle
+        contacts (compression positive).
+    labels : ndarray of str, shape (C',)
+        Their classes: "VV".."FF" for polyhedra pairs under the chosen
+        criterion, "sphere" otherwise (all "sphere" without contact types).
+    extents : ndarray, shape (P, 2), or None
+        Footprint extents L1/d >= L2/d (dimensionless) of the force-bearing
+        polyhedra pairs, NaN for a pair without overlap, when the criterion
+        gives them (:attr:`postproc.classify.Classes.rel`); else None.
+    """
 
     row: dict                  # scalars for summary.csv
     angular: AngularFunctions  # binned functions (for the polar plots)
@@ -42,7 +66,21 @@ class SnapshotResult:
 
 def wall_forces_from_contacts(cs: ContactSet):
     """(6, 3) N, force on each wall slot summed from the wall contacts, or
-    None when the wall slots are unknown."""
+    None when the wall slots are unknown.
+
+    Parameters
+    ----------
+    cs : postproc.contactset.ContactSet
+        The snapshot's resolved contacts.
+
+    Returns
+    -------
+    ndarray, shape (6, 3), or None
+        N, the force on each wall by the particles, walls in
+        ``WALL_ORDER`` (x-, x+, y-, y+, z-, z+): the sum of ``wall_sign *
+        force`` over its contacts (zero for a wall without contact); None
+        when no contact has a known wall slot.
+    """
     known = cs.wall_slot >= 0
     if not known.any():
         return None
@@ -72,7 +110,7 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     (seed figs. 10-12 and claim 6), and the class of each contact.
 
     ``classifier`` a :class:`postproc.classify.Classifier` under any of its
-    six criteria (:func:`postproc.classify.classifier_for` makes the point
+    seven criteria (:func:`postproc.classify.classifier_for` makes the point
     count by default). ``sel`` (C,) bool marks the
     force-bearing particle-particle contacts, over which proportions, force
     ratios, force shares and the signed branch fabric of each class are
@@ -80,8 +118,8 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     over all contacts (walls as their own class) and sum to the total;
     ``ct_qp_<k>`` is class k's share of q_axial/p. ``ct_frac_<k>_lo`` /
     ``_hi`` are the proportions with the criterion's parameter (footprint
-    threshold, angular tolerance, the point count's alpha or the common
-    plane's band) halved and doubled, and so are ``ct_fratio_<k>_lo``,
+    threshold, angular tolerance, the point count's alpha, the common
+    plane's band or LMGC90's alert distance) halved and doubled, and so are ``ct_fratio_<k>_lo``,
     ``ct_fabric_<k>_lo``, ``strong_frac_FF_lo``, ``weak_frac_FF_lo`` (and
     ``_hi``), claim 6's quantities for its band test. ``z_points`` counts
     a contact as 1, 2 or 3 points (simple, double, triple), as a multi-point
@@ -89,6 +127,37 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     paper's convention). ``total`` is the (3, 3) stress over all contacts
     the partials must sum to. Returns (row, labels (C,), extents (P, 2) of
     the force-bearing polyhedra pairs or None).
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        The snapshot (with normals, body kinds, shapes and orientations).
+    cs : postproc.contactset.ContactSet
+        Its resolved contacts (C).
+    sel : ndarray of bool, shape (C,)
+        The force-bearing particle-particle contacts.
+    classifier : postproc.classify.Classifier
+        The contact-type criterion.
+    p : float
+        Pa, the mean stress of the total stress (compression positive).
+    total : ndarray, shape (3, 3)
+        Pa, the stress over all contacts (seed eq. 2).
+    axis : ndarray, shape (3,)
+        The unit compression axis.
+
+    Returns
+    -------
+    row : dict
+        The ``ct_*``, ``strong_frac_FF_*``, ``weak_frac_FF_*`` columns
+        described above, the classifier's columns, ``ct_l1_median``,
+        ``ct_l2_median`` (when extents are given) and
+        ``ct_points_per_contact`` (mean of 1, 2, 3 over the simple, double,
+        triple force-bearing contacts).
+    labels : ndarray of str, shape (C,)
+        The class of every contact ("VV".."FF", "sphere", "wall").
+    extents : ndarray, shape (P, 2), or None
+        Dimensionless L1/d >= L2/d of the force-bearing polyhedra pairs
+        (NaN: no overlap), or None when the criterion gives none.
     """
     res = classifier.classify(snap, variants=True)
     labels = res.labels
@@ -142,7 +211,19 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
 
 def group_labels_of(labels):
     """(C,) group of each class label: "simple", "double", "triple" for
-    the pair types, the label itself otherwise ("sphere", "wall")."""
+    the pair types, the label itself otherwise ("sphere", "wall").
+
+    Parameters
+    ----------
+    labels : array_like of str, shape (C,)
+        Contact classes ("VV".."FF", "sphere", "wall").
+
+    Returns
+    -------
+    ndarray of str, shape (C,)
+        The paper's group of each pair type (``GROUP_OF``: VV, VE, VF, EE
+        simple, EF double, FF triple), other labels unchanged.
+    """
     labels = np.asarray(labels)
     out = labels.astype(object)
     for k, g in GROUP_OF.items():
@@ -170,11 +251,53 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     compression axis (it equals q once sigma_1 lies along the axis).
 
     ``tables``: the contact-type criterion of polyhedra snapshots, a
-    :class:`postproc.classify.Classifier` under any of its six criteria
+    :class:`postproc.classify.Classifier` under any of its seven criteria
     (:func:`postproc.classify.classifier_for` makes the point count by
     default), or the angular :class:`postproc.contacttypes.ShapeTables`
     (angular criterion at ``theta_deg``); None (the default) for no contact
     types.
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        The snapshot: bodies, contacts (forces on id2 by id1, N), volume
+        (m^3), box or wall forces; normals, body kinds, shapes and
+        orientations for contact types.
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis (:func:`postproc.axes.axis_vector`; default 2,
+        z).
+    nbins : int, optional
+        The number of angle bins on [0, pi/2] of the angular functions
+        (default 18, 5 deg each).
+    errors : bool, optional
+        Also give the anisotropies' standard errors ``a_se``, ``a_l_se``,
+        ``a_n_se``, ``a_t_se`` (default True).
+    tables : postproc.classify.Classifier, postproc.contacttypes.ShapeTables or None, optional
+        The contact-type criterion, as said above (used only when the
+        snapshot has a polyhedron).
+    theta_deg : float, optional
+        deg, the angular tolerance when ``tables`` is a ShapeTables
+        (default 5).
+
+    Returns
+    -------
+    SnapshotResult
+        The ``summary.csv`` row: identification, the stress components,
+        principal values (Pa) and directions of the three forms, p, q =
+        (sigma_1 - sigma_3)/3, q/p, q_axial/p, sin phi = 3q/(2p + q), the
+        relative differences between the forms; a, a_l, a_n, a_t (and
+        ``_se``, ``_fit``), l0 (m), f0 (N), ``sff``, the residuals;
+        coordination ``z``; the fraction of forces below the mean; the
+        strong and weak networks and their shares of q_axial/p; contact
+        types when asked for; the contact counts. With it the angular
+        functions, their fits, and the normal forces, classes and
+        footprint extents of the force-bearing particle pairs.
+
+    Raises
+    ------
+    InputError
+        A bad snapshot (:func:`postproc.contactset.resolve`), no
+        force-bearing particle-particle contact, or a contact-type error.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
     cs = resolve(snap)
@@ -272,7 +395,28 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
 def add_strains(rows, lengths, reference, axis=2):
     """Add eps_1, eps_2, eps_3, eps_q, eps_v (compression positive, seed
     eq. 3) to each row, from the box lengths (S, 3) and the reference box
-    (3,). Rows whose box is unknown get NaN."""
+    (3,). Rows whose box is unknown get NaN.
+
+    Parameters
+    ----------
+    rows : list of dict, length S
+        The summary rows, one per state, changed in place.
+    lengths : array_like, shape (S, 3)
+        m, the box lengths of each row (NaN when unknown).
+    reference : array_like, shape (3,)
+        m, the box at zero strain (the start of shear).
+    axis : int, str or array_like of shape (3,), optional
+        The compression axis (default 2); a vector counts as the
+        coordinate axis of its largest component.
+
+    Returns
+    -------
+    list of dict
+        ``rows``, each with ``eps_1`` (axial), ``eps_2`` >= ``eps_3`` (the
+        lateral strains), ``eps_q`` = eps_1 - eps_3 and ``eps_v`` = eps_1 +
+        eps_2 + eps_3, dimensionless, eps = ln(L0 / L)
+        (:func:`postproc.strain.box_strains`).
+    """
     eps = box_strains(lengths, reference, int(np.argmax(np.abs(axis_vector(axis)))))
     for k, row in enumerate(rows):
         for name, vals in eps.items():

@@ -8,6 +8,26 @@ def axis_vector(axis):
     """The unit compression axis from 0/1/2, 'x'/'y'/'z' or a 3-vector.
 
     Returns (3,) float, unit norm.
+
+    Parameters
+    ----------
+    axis : int, str or array_like of shape (3,)
+        The compression (axial) axis: an index 0, 1 or 2 (a scalar is
+        truncated by ``int``), a letter "x", "y" or "z" (case and
+        surrounding spaces ignored), or a direction vector of any finite,
+        non-zero length (dimensionless).
+
+    Returns
+    -------
+    ndarray, shape (3,)
+        float, the unit vector along ``axis``: the basis vector for an index
+        or a letter, else the given vector normalised (its sign kept).
+
+    Raises
+    ------
+    ValueError
+        An unknown letter, an index other than 0, 1, 2, or a zero or
+        non-finite vector.
     """
     if isinstance(axis, str):
         key = axis.strip().lower()
@@ -28,7 +48,22 @@ def axis_vector(axis):
 
 
 def rotation_z_to(axis):
-    """(3, 3) proper rotation R with R @ e_z = axis (Rodrigues' formula)."""
+    """(3, 3) proper rotation R with R @ e_z = axis (Rodrigues' formula).
+
+    Parameters
+    ----------
+    axis : int, str or array_like of shape (3,)
+        The target direction, as :func:`axis_vector` takes it (normalised
+        there).
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        float, a proper rotation (det +1) turning the unit vector e_z onto
+        the unit ``axis``: the rotation about e_z x axis by the angle between
+        them; the identity when cos(e_z, axis) > 1 - 1e-15, and the half
+        turn about x, diag(1, -1, -1), when it is < -1 + 1e-15.
+    """
     e = axis_vector(axis)
     z = np.array([0.0, 0.0, 1.0])
     c = float(z @ e)
@@ -45,7 +80,20 @@ def rotation_z_to(axis):
 
 def quaternion_matrices(q):
     """(n, 3, 3) rotation matrices (local -> global) of quaternions (n, 4)
-    in (w, x, y, z) order; the quaternions are normalised first."""
+    in (w, x, y, z) order; the quaternions are normalised first.
+
+    Parameters
+    ----------
+    q : array_like, shape (n, 4)
+        Orientation quaternions (w, x, y, z), scalar part first, of any
+        non-zero norm (a dump's ``bodies/orientation``).
+
+    Returns
+    -------
+    ndarray, shape (n, 3, 3)
+        float, R[i] turns body i's local-frame vectors into global ones,
+        x_global = R[i] @ x_local. A zero quaternion gives NaN rows.
+    """
     q = np.asarray(q, float)
     q = q / np.linalg.norm(q, axis=1)[:, None]
     w, x, y, z = q.T

@@ -67,7 +67,24 @@ def reconcile(pair, f1, f2, group):
     """(C,) int index into PAIR_TYPES: the angular pair types ``pair`` made
     to agree with the footprint groups ``group`` (SIMPLE, DOUBLE, TRIPLE):
     triple -> FF, double -> EF, simple -> VF when a side is a FACE, else
-    the angular type (VV, VE or EE). f1, f2 (C,) the sides' features."""
+    the angular type (VV, VE or EE). f1, f2 (C,) the sides' features.
+
+    Parameters
+    ----------
+    pair : array_like of int, shape (C,)
+        The angular pair types, indices into PAIR_TYPES
+        (:func:`postproc.contacttypes.classify_contacts`).
+    f1, f2 : array_like of int, shape (C,)
+        The two sides' angular features (VERTEX 0, EDGE 1, FACE 2).
+    group : array_like of int, shape (C,)
+        The footprint groups, SIMPLE 0, DOUBLE 1, TRIPLE 2
+        (:func:`postproc.footprint.footprint_groups`).
+
+    Returns
+    -------
+    ndarray of int8, shape (C,)
+        The index into PAIR_TYPES of each contact's reconciled type.
+    """
     out = np.asarray(pair, np.int8).copy()
     g = np.asarray(group)
     face = (np.asarray(f1) == FACE) | (np.asarray(f2) == FACE)
@@ -86,7 +103,32 @@ class Classes:
     poly (C,) bool the polyhedra pairs; rel (P, 2) their footprint extents
     over the pair size (footprint method; NaN where the footprint is
     missing); columns: scalars for summary.csv (criterion, parameter,
-    footprint source, fallbacks)."""
+    footprint source, fallbacks).
+
+    Attributes
+    ----------
+    labels : ndarray of str, shape (C,)
+        The class of each contact at the criterion's parameter: "VV".."FF"
+        (PAIR_TYPES) for a polyhedra pair, "sphere" for a particle pair
+        with a sphere, "wall" for a wall contact.
+    variants : dict
+        {"lo": labels, "hi": labels}, each (C,) str, at half and twice the
+        parameter (for the ``ct_*_lo`` / ``_hi`` columns); empty when the
+        variants were not asked for.
+    poly : ndarray of bool, shape (C,)
+        True for the P polyhedra pairs.
+    rel : ndarray of float, shape (P, 2), or None
+        Dimensionless footprint extents L1/d >= L2/d of the polyhedra pairs
+        (:func:`postproc.footprint.relative_extents`), NaN for a pair
+        without overlap: from the "footprint" method ((0, 2) without
+        polyhedra pairs) and from "points" when footprints and finite
+        sizes are at hand; None otherwise.
+    columns : dict
+        Scalars for summary.csv: ``ct_method``, ``ct_threshold`` (the
+        parameter), ``ct_theta_deg`` and the method's own
+        (``ct_fp_recomputed``, ``ct_fp_missing``, ``ct_relabelled``,
+        ``ct_pts_h_median`` (m), ``ct_cp_empty``, ``ct_alert_m`` (m)).
+    """
 
     labels: np.ndarray
     variants: dict
@@ -121,7 +163,9 @@ class Classifier:
 
     shapes : (vertices, triangles, triangle_faces) lists as returned by
     :meth:`postproc.schema.DumpReader.shapes`. method : "points" (the
-    default), "footprint" or "angular". threshold : t in units of the pair
+    default), "footprint", "angular", "commonplane", "lmgc90",
+    "lmgc90-planplan" or "lmgc90-2009" (``METHODS``; module docstring).
+    threshold : t in units of the pair
     size (footprint; default :data:`postproc.footprint.DEFAULT_THRESHOLD`).
     theta_deg : the angular tolerance (the criterion itself for "angular";
     the feature labels of contacts without overlap otherwise; default 5).
@@ -137,6 +181,36 @@ class Classifier:
     band is tau times: "vertex" (the default: the distance from the centre
     to the extreme vertex, LMGC90's older routine) or "normal" (that
     distance along the common plane's normal, LMGC90's current routine).
+
+    Raises InputError (one line) for an unknown method, ``recompute`` or
+    ``reference``, theta not in (0, 45) deg, t not in (0, 1), a tolerance
+    not finite and > 0, or bad shapes.
+
+    Attributes
+    ----------
+    method : str
+        The criterion, one of ``METHODS``.
+    theta_deg : float
+        deg, the angular tolerance theta, 0 < theta < 45.
+    threshold : float
+        t, in units of the pair size d, 0 < t < 1 (the "footprint" method).
+    tolerance : float
+        The parameter of "points" (alpha, dimensionless), "commonplane"
+        (tau, in units of ref) or the LMGC90 routes (the alert distance in
+        units of the smallest grain radius), > 0.
+    recompute : str
+        "auto", "always" or "never".
+    reference : str
+        "vertex" or "normal" (the "commonplane" method).
+    tables : postproc.contacttypes.ShapeTables
+        The angular criterion's tables (every method labels with them first).
+    parameter : float
+        Property: the criterion's parameter (alpha, t, theta in deg, tau or
+        the alert distance in smallest grain radii).
+    point_tables, plane_tables, lmgc90_tables, geometry
+        Properties, built on first use: the tables of the "points",
+        "commonplane" and LMGC90 counts and the overlap kernel's shapes
+        (:class:`postproc.footprint.Geometry`).
     """
 
     def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
@@ -197,7 +271,31 @@ class Classifier:
     def classify(self, snap, variants=True):
         """:class:`Classes` of every contact of the snapshot ``snap``.
         Raises InputError (one line, naming the snapshot) for a polyhedron
-        without a shape, a bad normal, a bad footprint or size."""
+        without a shape, a bad normal, a bad footprint or size.
+
+        Parameters
+        ----------
+        snap : postproc.schema.Snapshot
+            A dump's snapshot: normals (from id1 to id2), body kinds, shape
+            indices, positions (m) and orientations; the "footprint" method
+            also reads ``sizes`` (m) and the dumped footprints, "points" the
+            dumped overlap volumes and areas (else recomputes them).
+        variants : bool, optional
+            Also classify at half and twice the parameter (default True).
+
+        Returns
+        -------
+        Classes
+            The labels (C,) str ("VV".."FF", "sphere", "wall"), the variants
+            at half and twice the parameter, the polyhedra pairs, the
+            relative footprint extents and the summary columns.
+
+        Raises
+        ------
+        InputError
+            As said above, or a missing overlap or footprint with
+            ``recompute="never"``.
+        """
         if self.method == "angular":
             lab = classify_snapshot(snap, self.tables, self.theta_deg)
             var = {}
@@ -398,7 +496,33 @@ class Classifier:
 
 def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, tolerance=None):
     """Check the contact-type options before any file is opened; raises
-    InputError (one line) for an unknown criterion or a bad parameter."""
+    InputError (one line) for an unknown criterion or a bad parameter.
+
+    Parameters
+    ----------
+    method : str, optional
+        The criterion, one of ``METHODS`` (default "points").
+    threshold : float or None, optional
+        t in units of the pair size, checked to lie in (0, 1) whatever the
+        method (None: not given).
+    theta_deg : float or None, optional
+        The angular tolerance, deg, in (0, 45) (None: not given).
+    tolerance : float or None, optional
+        The method's parameter, finite and > 0: tau for "commonplane", the
+        alert distance (smallest grain radii) for the LMGC90 routes, alpha
+        otherwise (None: not given).
+
+    Returns
+    -------
+    None
+        Nothing: it only raises.
+
+    Raises
+    ------
+    InputError
+        As said above (a ``theta_deg`` that is not a number raises
+        ValueError instead).
+    """
     if method not in METHODS:
         raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
     if threshold is not None:
@@ -415,7 +539,27 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
 
 def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None, tolerance=None):
     """A :class:`Classifier` for a dump's shapes, or None when there are
-    none (spheres, flat tables). Bad shapes raise InputError."""
+    none (spheres, flat tables). Bad shapes raise InputError.
+
+    Parameters
+    ----------
+    shapes : tuple of three lists, or None
+        (vertices, triangles, triangle_faces) as
+        :meth:`postproc.schema.DumpReader.shapes` returns them; None or
+        empty lists for a dump without shapes.
+    method, threshold, theta_deg, tolerance
+        As :class:`Classifier` (``recompute="auto"``, ``reference="vertex"``).
+
+    Returns
+    -------
+    Classifier or None
+        The classifier, or None when there are no shapes.
+
+    Raises
+    ------
+    InputError
+        Bad shapes or options (:class:`Classifier`).
+    """
     if shapes is None or not len(shapes[0]):
         return None
     return Classifier(shapes, method, threshold, theta_deg, tolerance=tolerance)
@@ -423,7 +567,28 @@ def classifier_for(shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None
 
 class AngularTables(Classifier):
     """The angular criterion at ``theta_deg`` from prebuilt
-    :class:`postproc.contacttypes.ShapeTables` (no triangles needed)."""
+    :class:`postproc.contacttypes.ShapeTables` (no triangles needed).
+
+    Parameters
+    ----------
+    tables : postproc.contacttypes.ShapeTables
+        The dump's shapes.
+    theta_deg : float or None, optional
+        deg, in (0, 45) (None: ``DEFAULT_THETA_DEG`` = 5); InputError
+        otherwise.
+
+    Attributes
+    ----------
+    method : str
+        "angular".
+    theta_deg : float
+        deg, the angular tolerance.
+    tables : postproc.contacttypes.ShapeTables
+        The tables given.
+    threshold, tolerance, recompute
+        The defaults (``DEFAULT_THRESHOLD``, ``DEFAULT_ALPHA``, "never"),
+        unused by the angular criterion.
+    """
 
     def __init__(self, tables, theta_deg=None):
         self.method = "angular"
@@ -442,7 +607,27 @@ class AngularTables(Classifier):
 def snapshot_classes(snap, classifier):
     """(C,) str class of every contact of ``snap``: the classifier's labels
     when there is one (a dump with shapes), else "sphere" for particle pairs
-    and "wall" for wall contacts."""
+    and "wall" for wall contacts.
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        The snapshot.
+    classifier : Classifier or None
+        The dump's classifier (:func:`classifier_for`), or None.
+
+    Returns
+    -------
+    ndarray of str, shape (C,)
+        The classifier's labels ("VV".."FF", "sphere", "wall"; no variants)
+        when there is a classifier and the snapshot has a polyhedron (body
+        kind 1); else "sphere" when both ids are bodies and "wall" otherwise.
+
+    Raises
+    ------
+    InputError
+        As :meth:`Classifier.classify`.
+    """
     if classifier is not None and snap.body_kind is not None and np.any(snap.body_kind == 1):
         return classifier.classify(snap, variants=False).labels
     both = (lookup(snap.id1, snap.body_ids) >= 0) & (lookup(snap.id2, snap.body_ids) >= 0)

@@ -107,7 +107,26 @@ class PlaneTables:
     mask (S, V) bool; tri (S, T, 3) int vertex indices (padded with the
     first triangle); tri_normals (S, T, 3) unit outward; tri_mask (S, T)
     bool; adjacent (S, V, V) bool, True where two vertices share a triangle
-    edge; radius (S,) m the largest vertex distance."""
+    edge; radius (S,) m the largest vertex distance.
+
+    Attributes
+    ----------
+    vertices : ndarray of float64, shape (S, V, 3)
+        m, local frame (origin at the centre of mass), padded with 0.
+    mask : ndarray of bool, shape (S, V)
+        True for a vertex, False for padding.
+    tri : ndarray of int64, shape (S, T, 3)
+        Each shape's triangles (vertex indices), padded with its first.
+    tri_normals : ndarray of float64, shape (S, T, 3)
+        Unit outward triangle normals (padding: the first triangle's).
+    tri_mask : ndarray of bool, shape (S, T)
+        True for a triangle, False for padding.
+    adjacent : ndarray of bool, shape (S, V, V)
+        True where two vertices share a triangle edge (the diagonals inside
+        a polygonal face included).
+    radius : ndarray of float64, shape (S,)
+        m, the largest centre-to-vertex distance of each shape.
+    """
 
     vertices: np.ndarray
     mask: np.ndarray
@@ -122,7 +141,26 @@ def plane_tables(vertices, triangles):
     """:class:`PlaneTables` from per-shape vertices (V_s, 3) m and outward
     triangles (T_s, 3), as in a dump's ``/shapes``. Raises InputError (one
     line) for bad shapes (the checks of
-    :func:`postproc.contactpoints.point_tables`)."""
+    :func:`postproc.contactpoints.point_tables`).
+
+    Parameters
+    ----------
+    vertices : sequence of array_like, each of shape (V_s, 3)
+        m, each shape's vertices in its local frame.
+    triangles : sequence of array_like of int, each of shape (T_s, 3)
+        Each shape's outward (counter-clockwise seen from outside)
+        triangles.
+
+    Returns
+    -------
+    PlaneTables
+        The padded tables of the S shapes.
+
+    Raises
+    ------
+    InputError
+        Bad shapes, as said above.
+    """
     pt = point_tables(vertices, triangles)
     S, V = pt.mask.shape
     T = max(len(t) for t in triangles)
@@ -153,12 +191,48 @@ def _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, neighbor, r
 
 
 def check_neighbor(tau, what="common plane: the band tolerance tau"):
-    """tau as a float; InputError unless finite and > 0."""
+    """tau as a float; InputError unless finite and > 0.
+
+    Parameters
+    ----------
+    tau : object
+        The band tolerance tau (dimensionless, in units of ref; LMGC90's
+        ``cundall_neighbor``): a number or a string of one.
+    what : str, optional
+        Its name in the message.
+
+    Returns
+    -------
+    float
+        tau, finite and > 0.
+
+    Raises
+    ------
+    InputError
+        Not a number, not finite, or <= 0.
+    """
     return positive_tolerance(tau, what)
 
 
 def check_reference(reference):
-    """reference unchanged; InputError (one line) unless one of REFERENCES."""
+    """reference unchanged; InputError (one line) unless one of REFERENCES.
+
+    Parameters
+    ----------
+    reference : str
+        How the band's ref is measured: "vertex" (centre to extreme vertex)
+        or "normal" (that distance along the common plane's normal).
+
+    Returns
+    -------
+    str
+        ``reference``, one of ``REFERENCES``.
+
+    Raises
+    ------
+    InputError
+        Any other value.
+    """
     if reference not in REFERENCES:
         raise InputError(f"common plane: reference must be one of {', '.join(REFERENCES)}, got {reference!r}")
     return reference
@@ -184,7 +258,35 @@ def cundall_plane(XA, vA, XB, vB, n0, rsize, iterations=DEFAULT_ITERATIONS):
     XA (C, V, 3), XB global vertices m; vA, vB (C, V) bool the visible
     ones; n0 (C, 3) unit start normals from A to B; rsize (C,) m the
     smaller body radius (the convergence scale). Returns (n (C, 3) unit,
-    gap (C,) m, iA (C,) A's highest vertex, iB (C,) B's lowest)."""
+    gap (C,) m, iA (C,) A's highest vertex, iB (C,) B's lowest).
+
+    Parameters
+    ----------
+    XA, XB : ndarray, shape (C, V, 3)
+        m, the global vertices of A (id1) and B (id2), padded to V.
+    vA, vB : ndarray of bool, shape (C, V)
+        Their visible vertices (padding False).
+    n0 : ndarray, shape (C, 3)
+        The unit start normals, from A to B.
+    rsize : ndarray, shape (C,)
+        m, the smaller body radius of each pair: a trial is accepted when
+        it raises the gap by at least ``GAP_TOL`` * rsize.
+    iterations : int, optional
+        The most rounds of eight trials (default ``DEFAULT_ITERATIONS`` =
+        100); 0 keeps n0.
+
+    Returns
+    -------
+    n : ndarray, shape (C, 3)
+        The common plane's unit normal, from A to B.
+    gap : ndarray, shape (C,)
+        m, g(n) = min_B (x . n) - max_A (x . n) over the visible vertices:
+        positive when the bodies are apart, negative for an
+        interpenetration.
+    iA, iB : ndarray of int, shape (C,)
+        The vertex indices (into V) of A's highest and B's lowest visible
+        vertex along n.
+    """
     n = n0.copy()
     C = len(n)
     rows = np.arange(C)
@@ -351,8 +453,9 @@ def _intersection_points(HA, HB, tol):
 def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal,
                    neighbor=DEFAULT_NEIGHBOR, reference="vertex", iterations=DEFAULT_ITERATIONS,
                    alert=None):
-    """LMGC90's common-plane contact points of each polyhedra pair (module
-    docstring).
+    """Common-plane contact points of each polyhedra pair by the band count
+    (module docstring; LMGC90's kind of detection, not its own count, which
+    is :func:`lmgc90_points`).
 
     tables :class:`PlaneTables`; shape1, shape2 (C,) int shape rows of A =
     id1 and B = id2; pos (C, 3) m centre-of-mass positions (the shapes'
@@ -371,6 +474,44 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal,
     interpenetration), ``band`` m (d1 - max(0, g/2) = tau ref), and
     ``normal`` (C, 3) the common plane's normal. Raises InputError (one
     line) for bad shapes, indices or non-finite input.
+
+    Parameters
+    ----------
+    tables : PlaneTables
+        The shapes (:func:`plane_tables`).
+    shape1, shape2 : array_like of int, shape (C,)
+        The shape rows of A = id1 and B = id2.
+    pos1, pos2 : array_like, shape (C, 3)
+        m, their centre-of-mass positions.
+    quat1, quat2 : array_like, shape (C, 4)
+        Their orientations (w, x, y, z), local -> global.
+    normal : array_like, shape (C, 3)
+        Unit contact normals, from A to B (the search's start).
+    neighbor : float, optional
+        tau > 0, dimensionless (default ``DEFAULT_NEIGHBOR`` = 0.1).
+    reference : {"vertex", "normal"}, optional
+        How ref is measured (default "vertex").
+    iterations : int, optional
+        Rounds of Cundall's search, >= 0 (default 100).
+    alert : float or None, optional
+        m, the alert distance (default None: no test).
+
+    Returns
+    -------
+    dict
+        (C,) arrays ``points`` int64 (0..4), ``group`` int8 (SIMPLE 0,
+        DOUBLE 1, TRIPLE 2), ``pair`` int8, ``feature1``, ``feature2`` int8
+        (1 kept vertex VERTEX, 2 joined by a triangle edge EDGE, else
+        VERTEX, 3+ FACE), ``k1``, ``k2`` int64, ``gap`` float64 m (positive:
+        apart), ``band`` float64 m (tau ref), and ``normal`` (C, 3) unit,
+        from A to B. A pair over the alert distance keeps its features,
+        counts, gap and normal, with 0 points.
+
+    Raises
+    ------
+    InputError
+        As said above, a bad tau or reference, iterations not an integer
+        >= 0, or a non-finite alert distance.
     """
     s1, s2, p1, p2, q1, q2, n0 = _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal,
                                         neighbor, reference, iterations, alert)
@@ -428,7 +569,24 @@ def groups_and_pairs(points, f1, f2):
     sides' features (C,): the group (SIMPLE for 0 or 1 point, DOUBLE for 2,
     TRIPLE for 3+, int8) and the pair type (int8 index into PAIR_TYPES)
     made to agree with it: triple -> FF, double -> EF, simple -> VF when a
-    side is a face, else the features' type."""
+    side is a face, else the features' type.
+
+    Parameters
+    ----------
+    points : array_like of int, shape (C,)
+        The number of contact points of each pair.
+    f1, f2 : array_like of int, shape (C,)
+        The two sides' features (VERTEX 0, EDGE 1, FACE 2).
+
+    Returns
+    -------
+    group : ndarray of int8, shape (C,)
+        The paper's group: SIMPLE 0 (0 or 1 point), DOUBLE 1 (2), TRIPLE 2
+        (3 or more).
+    pair : ndarray of int8, shape (C,)
+        The index into PAIR_TYPES of the pair type agreeing with the group
+        (as :func:`postproc.classify.reconcile`).
+    """
     pts = np.asarray(points)
     group = np.where(pts >= 3, TRIPLE, np.where(pts == 2, DOUBLE, SIMPLE)).astype(np.int8)
     pair = pair_types(f1, f2).astype(np.int8)
@@ -494,7 +652,36 @@ class LmgcShape:
     bool the vertices shared by 3+ faces (``f2f_sommet``); edges (E, 2) the
     topological edges (pairs of consecutive corners along a contour, lower
     index first, ``f2f_edge``); radius m the largest centre-vertex
-    distance; min_radius_face m the smallest triangle circumradius."""
+    distance; min_radius_face m the smallest triangle circumradius.
+
+    Attributes
+    ----------
+    vertices : ndarray, shape (V, 3)
+        m, local frame, origin at the centre of mass.
+    triangles : ndarray of int64, shape (T, 3)
+        Vertex indices, each oriented so that its normal points away from
+        the centre (as POLYR fixes it).
+    normals : ndarray, shape (T, 3)
+        Unit outward triangle normals, (s2 - s3) x (s2 - s1) normalised
+        (LMGC90's ``compute_info_triangle``).
+    faces : list of ndarray of int
+        The triangle indices of each of the F topological faces.
+    face_normal : ndarray, shape (F, 3)
+        The unit normal of each face's first triangle.
+    contour : list of ndarray of int
+        The corner vertices along each face's contour (``sommet``).
+    corner : ndarray of bool, shape (V,)
+        True for a vertex on the contours of 3 or more faces (``f2f_sommet``).
+    edges : ndarray of int64, shape (E, 2)
+        The topological edges, lower index first (``f2f_edge``).
+    edge_set : set of tuple
+        The same edges as (i, j) pairs, i < j, for lookup.
+    radius : float
+        m, the largest centre-vertex distance.
+    min_radius_face : float
+        m, the smallest triangle outer radius (half the longest side of an
+        obtuse or flat triangle, else the circumradius).
+    """
 
     vertices: np.ndarray
     triangles: np.ndarray
@@ -533,7 +720,27 @@ def lmgc90_shape(vertices, triangles):
     """:class:`LmgcShape` of one polyhedron: vertices (V, 3) m in the local
     frame (origin at the centre of mass), triangles (T, 3) outward
     counter-clockwise. The topology is LMGC90's ``build_topology_surface_T3``
-    (topo angle 5 deg). Raises InputError (one line) for an open surface."""
+    (topo angle 5 deg).
+
+    It does not check the surface: an open or otherwise bad surface gives a
+    meaningless topology, no error (:func:`lmgc90_tables` runs the checks
+    of :func:`postproc.contactpoints.point_tables` first, which do not test
+    closedness either).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+        m, the vertices in the local frame, origin at the centre of mass.
+    triangles : array_like of int, shape (T, 3)
+        Vertex indices of a closed triangulated surface (triangles whose
+        normal points towards the centre are turned over).
+
+    Returns
+    -------
+    LmgcShape
+        The shape with its triangle normals, topological faces, contours,
+        corners and edges.
+    """
     V = np.asarray(vertices, float)
     T = np.asarray(triangles, np.int64)
     nT = len(T)
@@ -638,7 +845,26 @@ def lmgc90_shape(vertices, triangles):
 
 def lmgc90_tables(vertices, triangles):
     """:class:`LmgcTables`: the :class:`LmgcShape` of each shape (a dump's ``/shapes``).
-    Raises InputError (one line) for bad shapes."""
+    Raises InputError (one line) for bad shapes.
+
+    Parameters
+    ----------
+    vertices : sequence of array_like, each of shape (V_s, 3)
+        m, each shape's vertices in its local frame (origin at the centre of
+        mass).
+    triangles : sequence of array_like of int, each of shape (T_s, 3)
+        Each shape's outward triangles.
+
+    Returns
+    -------
+    LmgcTables
+        One :class:`LmgcShape` per shape, with the padded arrays.
+
+    Raises
+    ------
+    InputError
+        The checks of :func:`postproc.contactpoints.point_tables`.
+    """
     point_tables(vertices, triangles)                       # the shared checks, one-line errors
     return LmgcTables([lmgc90_shape(v, t) for v, t in zip(vertices, triangles)])
 
@@ -1428,9 +1654,39 @@ def lmgc90_pair(cd, an, adist, route="lmgc90", neighbor=DEFAULT_NEIGHBOR, iterat
     distance (m). Returns a dict: ``points`` (k, 3) m, ``gaps`` (k,) m,
     ``normal`` (3,) the common plane's (from an to cd), ``gap`` the plane's
     gap, ``stage`` the contact-type code (cd 1/2/3 + an 10/20/30, -1 when the
-    shadow overlap separates the pair); the planplan and 2009 routes report
+    shadow overlap separates the pair; the planplan and 2009 routes report
     the same code though they do not use it). route: one of
-    :data:`LMGC90_ROUTES` (:func:`lmgc90_points`)."""
+    :data:`LMGC90_ROUTES` (:func:`lmgc90_points`).
+
+    Parameters
+    ----------
+    cd, an : _Body
+        The posed candidate and antagonist (world vertices X (V, 3) m,
+        triangle and face normals, centre c (3,) m).
+    adist : float
+        m, the alert distance.
+    route : str, optional
+        One of ``LMGC90_ROUTES`` (default "lmgc90").
+    neighbor : float, optional
+        LMGC90's cundall_neighbor, the band in units of ref (default 0.1).
+    iterations : int, optional
+        cundall_iter (default ``LMGC90_ITERATIONS`` = 200).
+    min_radius : float or None, optional
+        m, the convergence scale of Cundall's search (None: the smaller of
+        the two shapes' radii).
+    sep : array_like of shape (3,) or None, optional
+        The start direction (None: from an's centre to cd's, normalised).
+    clip_eps : float, optional
+        m, the Clipper2 grid (default ``CLIP_EPS`` = 1e-8).
+
+    Returns
+    -------
+    dict
+        ``points`` ndarray (k, 3) m, k = 0..4 (no point: (0, 3));
+        ``gaps`` ndarray (k,) m; ``normal`` ndarray (3,) unit, from an to
+        cd; ``gap`` float m (positive: apart); ``stage`` int, the code as
+        said above, also -1 when a side has no visible corner.
+    """
     if sep is None:
         sep = cd.c - an.c
         sep = sep / np.linalg.norm(sep)
@@ -1518,12 +1774,47 @@ def _point_stage(cd, an, adists, route, neighbor, clip_eps, normal, t, s, gap, j
 
 
 def check_alert(alert, what="the alert distance"):
-    """alert as a float; InputError (one line) unless finite and > 0."""
+    """alert as a float; InputError (one line) unless finite and > 0.
+
+    Parameters
+    ----------
+    alert : object
+        The alert distance (m, or in units the caller states): a number or
+        a string of one.
+    what : str, optional
+        Its name in the message.
+
+    Returns
+    -------
+    float
+        alert, finite and > 0.
+
+    Raises
+    ------
+    InputError
+        Not a number, not finite, or <= 0.
+    """
     return positive_tolerance(alert, what)
 
 
 def check_route(route):
-    """route unchanged; InputError (one line) unless one of LMGC90_ROUTES."""
+    """route unchanged; InputError (one line) unless one of LMGC90_ROUTES.
+
+    Parameters
+    ----------
+    route : str
+        "lmgc90", "lmgc90-planplan" or "lmgc90-2009".
+
+    Returns
+    -------
+    str
+        ``route``, one of ``LMGC90_ROUTES``.
+
+    Raises
+    ------
+    InputError
+        Any other value.
+    """
     if route not in LMGC90_ROUTES:
         raise InputError(f"LMGC90 count: route must be one of {', '.join(LMGC90_ROUTES)}, got {route!r}")
     return route
@@ -1579,6 +1870,46 @@ def lmgc90_points(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, 
     10/20/30; -1 when the shadow overlap separates the pair), and the lists
     ``xyz`` (each (k, 3) m, the points) and ``gaps`` (each (k,) m).
     Raises InputError (one line) for bad indices or non-finite input.
+
+    Parameters
+    ----------
+    tables : LmgcTables or list of LmgcShape
+        The shapes (:func:`lmgc90_tables`).
+    shape_cd, shape_an : array_like of int, shape (C,)
+        The shape rows of the candidate and the antagonist.
+    pos_cd, pos_an : array_like, shape (C, 3)
+        m, their centres of mass (never equal).
+    quat_cd, quat_an : array_like, shape (C, 4)
+        Their orientations (w, x, y, z), local -> global.
+    alert : float
+        m, the alert distance, finite and > 0.
+    route : str, optional
+        One of ``LMGC90_ROUTES`` (default "lmgc90").
+    neighbor : float, optional
+        cundall_neighbor, > 0 (default ``DEFAULT_NEIGHBOR`` = 0.1).
+    iterations : int, optional
+        cundall_iter (default ``LMGC90_ITERATIONS`` = 200).
+    min_radius : float or None, optional
+        m, the sample's smallest grain radius (None: the smallest shape
+        radius of ``tables``).
+    clip_eps : float, optional
+        m, the Clipper2 grid (default ``CLIP_EPS`` = 1e-8).
+
+    Returns
+    -------
+    dict
+        As said above. A pair with no contact (separated by the shadow
+        overlap, or a gap above the alert distance) has 0 points, stage -1,
+        VERTEX features and the shadow overlap's gap and direction. The
+        features ``feature_cd`` and ``feature_an`` come from the stage
+        code: a side with 2 kept corners not joined by a topological edge
+        is a VERTEX.
+
+    Raises
+    ------
+    InputError
+        As said above, coinciding centres, an unknown route or a bad alert
+        distance or neighbor.
     """
     return lmgc90_points_alerts(tables, shape_cd, pos_cd, quat_cd, shape_an, pos_an, quat_an, [alert],
                                 route=route, neighbor=neighbor, iterations=iterations, min_radius=min_radius,
@@ -1689,7 +2020,31 @@ class LmgcTables(list):
     to common sizes for the vectorised detection: ``V`` (S, Vmax, 3)
     vertices, ``vmask`` (S, Vmax), ``corner`` (S, Vmax), ``N`` (S, Tmax, 3)
     triangle normals, ``tmask`` (S, Tmax), ``tri`` (S, Tmax, 3) and ``rmin``
-    the smallest shape radius."""
+    the smallest shape radius.
+
+    Parameters
+    ----------
+    shapes : iterable of LmgcShape
+        The shapes, in shape-row order (at least one).
+
+    Attributes
+    ----------
+    V : ndarray, shape (S, Vmax, 3)
+        m, local vertices, padded with 0.
+    vmask : ndarray of bool, shape (S, Vmax)
+        True for a vertex.
+    corner : ndarray of bool, shape (S, Vmax)
+        True for a topological corner (:attr:`LmgcShape.corner`).
+    N : ndarray, shape (S, Tmax, 3)
+        Unit outward triangle normals, padded with 0.
+    tmask : ndarray of bool, shape (S, Tmax)
+        True for a triangle.
+    tri : ndarray of int64, shape (S, Tmax, 3)
+        Triangles (vertex indices), padded with each shape's first.
+    rmin : float
+        m, the smallest shape radius (largest centre-vertex distance), the
+        smallest grain radius d/2 of the shapes.
+    """
 
     def __init__(self, shapes):
         super().__init__(shapes)

@@ -75,11 +75,27 @@ _BLOCK = 1 << 11
 class PointTables:
     """Per-shape local geometry padded to the largest shape.
 
-    vertices (S, Vmax, 3) float64 m (local frame, padded with 0);
-    mask (S, Vmax) bool, True for a vertex; plane_normals (S, Tmax, 3) unit
-    outward normals of the triangles and plane_offsets (S, Tmax) m (a point
-    x of the shape has n . x <= offset for every plane), padded with copies
-    of the first plane; radius (S,) m the largest vertex distance."""
+    Built by :func:`point_tables` (S shapes, at most Vmax vertices and Tmax
+    triangles).
+
+    Attributes
+    ----------
+    vertices : ndarray of float64, shape (S, Vmax, 3)
+        m, the vertices in each shape's local frame (origin at the body's
+        position, its centre of mass), padded with 0.
+    mask : ndarray of bool, shape (S, Vmax)
+        True for a vertex, False for padding.
+    plane_normals : ndarray of float64, shape (S, Tmax, 3)
+        Unit outward normals of the triangles, padded with copies of the
+        first triangle's.
+    plane_offsets : ndarray of float64, shape (S, Tmax)
+        m, the offset of each triangle's plane: a point x of the shape has
+        n . x <= offset for every plane; padded with copies of the first
+        plane's.
+    radius : ndarray of float64, shape (S,)
+        m, the largest distance from the local origin to a vertex (None
+        when the tables are made without it).
+    """
 
     vertices: np.ndarray
     mask: np.ndarray
@@ -92,7 +108,27 @@ def point_tables(vertices, triangles):
     """:class:`PointTables` from per-shape vertex arrays (V_s, 3) m in the
     local frames and outward (counter-clockwise) triangles (T_s, 3), as in
     a dump's ``/shapes``. Raises InputError (one line) for a shape with
-    fewer than 4 or non-finite vertices, bad or degenerate triangles."""
+    fewer than 4 or non-finite vertices, bad or degenerate triangles.
+
+    Parameters
+    ----------
+    vertices : sequence of array_like, each of shape (V_s, 3)
+        m, each shape's vertices in its local frame, V_s >= 4, finite.
+    triangles : sequence of array_like of int, each of shape (T_s, 3)
+        Each shape's triangles as vertex indices (0..V_s - 1), T_s >= 4,
+        counter-clockwise seen from outside (outward normals).
+
+    Returns
+    -------
+    PointTables
+        The padded tables of the S shapes, ``radius`` included.
+
+    Raises
+    ------
+    InputError
+        No shapes, unequal numbers of vertex and triangle sets, or a shape
+        as listed above (one line naming the shape).
+    """
     if vertices is None or len(vertices) == 0:
         raise InputError("contact points: no shapes")
     if len(triangles) != len(vertices):
@@ -151,6 +187,30 @@ def check_pose_arrays(where, n_shapes, arrays):
     Returns the arrays in order, shape rows as int64 and the others as
     float. Raises InputError (one line naming the array and the first bad
     contact).
+
+    Parameters
+    ----------
+    where : str
+        The message prefix ("contact points", "common plane", ...).
+    n_shapes : int
+        The number of shape rows S.
+    arrays : sequence of (str, array_like, tuple)
+        (name, value, required shape) of each array, e.g. ("shape1",
+        shape1, (C,)), ("pos1", pos1, (C, 3)) m, ("quat1", quat1, (C, 4)),
+        ("normal", normal, (C, 3)).
+
+    Returns
+    -------
+    list of ndarray
+        The arrays in the order given: shape rows as int64, the others as
+        float64, shapes unchanged.
+
+    Raises
+    ------
+    InputError
+        A value of another shape, shape rows not integer or outside
+        0..n_shapes - 1, a non-finite value, a quaternion of zero norm or a
+        normal whose norm is not within 1e-6 of 1.
     """
     given = []
     for name, a, shp in arrays:
@@ -216,6 +276,44 @@ def touching_counts(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
     partner's face normal closest to n; >= 1 while g + delta >= 0) and the
     penetration g along n (negative when the bodies are apart along n). Raises InputError (one line)
     for bad shapes, indices or non-finite input.
+
+    Parameters
+    ----------
+    tables : PointTables
+        The shapes (:func:`point_tables`).
+    shape1, shape2 : array_like of int, shape (C,)
+        The shape rows of A = id1 and B = id2.
+    pos1, pos2 : array_like, shape (C, 3)
+        m, their centre-of-mass positions (the shapes' local origins).
+    quat1, quat2 : array_like, shape (C, 4)
+        Their orientations (w, x, y, z), local -> global, need not be
+        normalised.
+    normal : array_like, shape (C, 3)
+        Unit contact normals n, from A to B.
+    h : array_like, shape (C,)
+        m, >= 0, the overlap's mean thickness V / area (overlap volume over
+        the area of its shadow on the contact plane).
+    alpha : float, optional
+        The tolerance alpha >= 0, dimensionless: delta = alpha h (default
+        ``DEFAULT_ALPHA`` = 0.1).
+
+    Returns
+    -------
+    k1, k2 : ndarray of int64, shape (C,)
+        The touching-vertex counts of A and B: the vertices within
+        g_u + delta of their body's support height along u, the larger
+        count of u = n and u = the partner's face normal closest to n.
+        delta carries a round-off margin of 1e-9 (max|pos1| + max|pos2| +
+        the two radii), so that exactly flush faces count.
+    g : ndarray of float64, shape (C,)
+        m, the penetration along n, g = max_A (x . n) - min_B (x . n):
+        positive for an overlap, negative when the bodies are apart along n.
+
+    Raises
+    ------
+    InputError
+        Bad arrays (:func:`check_pose_arrays`), h < 0, or alpha not finite
+        and >= 0; one line.
     """
     s1, s2, p1, p2, q1, q2, n, h = _check(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h, alpha)
     C = len(s1)
@@ -258,7 +356,19 @@ def _slab_counts(X1, m1, X2, m2, u, tol):
 
 def features_of(count):
     """(C,) int8 feature code (contacttypes VERTEX, EDGE, FACE) from a
-    touching-vertex count (C,): 1 vertex, 2 edge, 3 or more face."""
+    touching-vertex count (C,): 1 vertex, 2 edge, 3 or more face.
+
+    Parameters
+    ----------
+    count : array_like of int, shape (C,)
+        Touching-vertex counts (:func:`touching_counts`).
+
+    Returns
+    -------
+    ndarray of int8, shape (C,)
+        VERTEX (0) for a count of 1 (and of 0), EDGE (1) for 2, FACE (2)
+        for 3 or more.
+    """
     c = np.asarray(count)
     return np.where(c >= 3, FACE, np.where(c == 2, EDGE, VERTEX)).astype(np.int8)
 
@@ -273,6 +383,31 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
     ``pair`` int8 index into contacttypes.PAIR_TYPES (VV .. FF),
     ``feature1``, ``feature2`` int8 (VERTEX, EDGE, FACE), ``k1``, ``k2``
     the touching-vertex counts and ``g`` m the penetration along n.
+
+    Parameters
+    ----------
+    tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h, alpha
+        As :func:`touching_counts`: the shapes, (C,) shape rows, (C, 3)
+        centres of mass (m), (C, 4) quaternions (w, x, y, z) of A = id1
+        and B = id2, (C, 3) unit normals from A to B, (C,) V/area (m) and
+        alpha.
+
+    Returns
+    -------
+    dict of ndarray, each of shape (C,)
+        ``points`` int64: LMGC90's number of contact points, 1 for a simple
+        pair (a side a vertex, or both edges), 2 for EF, and for FF the
+        smaller of the two touching counts (>= 3, a lower bound of the
+        intersection's); ``group`` int8: SIMPLE 0, DOUBLE 1 (EF), TRIPLE
+        2 (FF); ``pair`` int8: index into contacttypes.PAIR_TYPES;
+        ``feature1``, ``feature2`` int8: VERTEX 0, EDGE 1, FACE 2
+        (:func:`features_of`); ``k1``, ``k2`` int64: the touching counts;
+        ``g`` float64, m: the penetration along n (positive: overlap).
+
+    Raises
+    ------
+    InputError
+        As :func:`touching_counts`.
     """
     k1, k2, g = touching_counts(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h, alpha)
     f1, f2 = features_of(k1), features_of(k2)
@@ -286,7 +421,30 @@ def contact_points(tables, shape1, pos1, quat1, shape2, pos2, quat2, normal, h,
 
 def positive_tolerance(value, what, meaning=""):
     """``value`` as a float; InputError naming ``what`` (and, in brackets,
-    ``meaning``) unless it is a finite number > 0."""
+    ``meaning``) unless it is a finite number > 0.
+
+    Parameters
+    ----------
+    value : object
+        The value to check: a number or anything ``float`` reads (a string
+        of a number).
+    what : str
+        Its name in the message (e.g. "--tolerance").
+    meaning : str, optional
+        What it means, added in brackets to the message of a value that is
+        not finite and > 0 (default: nothing added).
+
+    Returns
+    -------
+    float
+        ``value`` as a float, finite and > 0.
+
+    Raises
+    ------
+    InputError
+        Not a number, not finite (an integer beyond float's range
+        included), or <= 0.
+    """
     try:
         a = float(value)
     except (TypeError, ValueError):
@@ -299,5 +457,24 @@ def positive_tolerance(value, what, meaning=""):
 
 
 def check_alpha(alpha, what="--tolerance"):
-    """alpha as a float; InputError unless finite and > 0."""
+    """alpha as a float; InputError unless finite and > 0.
+
+    Parameters
+    ----------
+    alpha : object
+        The tolerance alpha (dimensionless, delta = alpha V/area): a number
+        or a string of one.
+    what : str, optional
+        The option's name in the message (default "--tolerance").
+
+    Returns
+    -------
+    float
+        alpha, finite and > 0 (:func:`touching_counts` itself also takes 0).
+
+    Raises
+    ------
+    InputError
+        Not a number, not finite, or <= 0 (:func:`positive_tolerance`).
+    """
     return positive_tolerance(alpha, what, "delta = alpha * V/area")

@@ -36,8 +36,11 @@ class ContactSet:
         pp contacts: ``wall_sign * force`` is the force on the wall.
     normal_force : (C,) N, magnitude of the normal force: |force_normal| when
         the source gives the contact normal split, else the radial component
-        force . l/|l| (pp) or |force| (walls).
+        force . l/|l| (pp; positive for a repulsive, compressive contact) or
+        |force| (walls).
     n_particles : int, B.
+    volume : float, m^3, the snapshot's volume V (``snap.volume``, > 0), the
+        V of the stress sums.
     """
 
     force: np.ndarray
@@ -80,7 +83,24 @@ def _has_duplicates(ids):
 
 
 def lookup(ids, table_ids):
-    """Row of each id in ``table_ids`` (unique ids), -1 where absent."""
+    """Row of each id in ``table_ids`` (unique ids), -1 where absent.
+
+    Parameters
+    ----------
+    ids : array_like of int, shape (N,)
+        The ids to look up (body or wall ids; any integers).
+    table_ids : array_like of int, shape (M,)
+        The table's ids, each at most once (the row returned for a
+        duplicated id is not defined).
+
+    Returns
+    -------
+    ndarray of int64, shape (N,)
+        The row (0..M-1) of each id in ``table_ids``, or -1 when it is not
+        there (all -1 for an empty table). Dense non-negative ids (largest
+        < 4 M + 64, as YADE numbers its bodies) use a direct lookup table,
+        others a sorted search.
+    """
     ids = np.asarray(ids, np.int64)
     table_ids = np.asarray(table_ids, np.int64)
     if len(table_ids) == 0:
@@ -109,6 +129,31 @@ def resolve(snap: Snapshot) -> ContactSet:
     NaN/inf in positions, contact points or forces, duplicate body ids,
     contacts naming unknown ids, self-contacts, wall-wall contacts, and
     particle-particle contacts with coincident centres.
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        One snapshot: body ids (B,) and centres (B, 3) m, wall ids (W,),
+        contact ids id1, id2 (C,), contact points (C, 3) m, total forces
+        (C, 3) N on id2 by id1 and, when the source has them, the normal
+        forces (C, 3) N, a periodic cell (3, 3) m and explicit branch
+        vectors (C, 3) m (NaN allowed for wall contacts).
+
+    Returns
+    -------
+    ContactSet
+        The contacts resolved against the bodies (see its Attributes): rows
+        of the two sides, arms (branch vectors for particle pairs, m),
+        wall slots and signs, normal forces (N), B and the volume (m^3).
+        A wall slot is known (0..5, ``WALL_ORDER``) only when the snapshot
+        lists exactly six walls.
+
+    Raises
+    ------
+    InputError
+        One line naming the snapshot and the first offending contact or
+        body, for each case listed above, or branch vectors of a shape
+        other than (C, 3) or non-finite for a particle pair.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
     V = float(snap.volume)

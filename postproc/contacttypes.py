@@ -52,14 +52,28 @@ class ShapeTables:
     """Per-shape arrays padded to the largest shape (S shapes, at most Vmax
     vertices, at most Dmax geometric faces at a vertex).
 
-    vertices (S, Vmax, 3) float32 local frame, padded with 0; pad (S, Vmax)
-    0 for a vertex and -inf for padding; vertex_normals (S, Vmax, Dmax, 3)
-    float32 unit outward normals of the geometric faces that contain each
-    vertex, padded with 0; edge_length (S, Vmax, Vmax) float32 length of
-    the geometric edge between two vertices, 0 when they are not the ends
-    of an edge; vertex_face_size (S, Vmax, Dmax) float32 m, the diameter
-    (largest distance between two of its vertices) of each of those faces,
-    0 for padding.
+    Built by :func:`shape_tables` from a dump's ``/shapes``; read by the
+    angular criterion (:func:`touching_features`).
+
+    Attributes
+    ----------
+    vertices : ndarray of float32, shape (S, Vmax, 3)
+        m, the vertices in each shape's local frame (as in ``/shapes``),
+        padded with 0.
+    pad : ndarray of float32, shape (S, Vmax)
+        0 for a vertex and -inf for padding (added to the heights along a
+        direction, so that padding is never a support vertex).
+    vertex_normals : ndarray of float32, shape (S, Vmax, Dmax, 3)
+        Unit outward normals (of the area-weighted sum of each face's
+        triangle normals) of the geometric faces that contain each vertex,
+        padded with 0.
+    edge_length : ndarray of float32, shape (S, Vmax, Vmax)
+        m, the length of the geometric edge between two vertices, 0 when
+        they are not the ends of an edge (the diagonals between two
+        triangles of one geometric face are not edges).
+    vertex_face_size : ndarray of float32, shape (S, Vmax, Dmax)
+        m, the diameter (largest distance between two of its vertices) of
+        each of those faces, 0 for padding.
     """
 
     vertices: np.ndarray
@@ -72,7 +86,30 @@ class ShapeTables:
 def shape_tables(vertices, triangles, triangle_faces):
     """Build :class:`ShapeTables` from per-shape lists (as stored in a dump's
     ``/shapes``): vertices (V_s, 3), triangles (T_s, 3) outward, and the
-    geometric face of each triangle (T_s,)."""
+    geometric face of each triangle (T_s,).
+
+    Parameters
+    ----------
+    vertices : sequence of array_like, each of shape (V_s, 3)
+        m, the vertices of each shape s in its local frame.
+    triangles : sequence of array_like of int, each of shape (T_s, 3)
+        Vertex indices of each shape's triangles, ordered so that
+        (v1 - v0) x (v2 - v0) points outward (counter-clockwise seen from
+        outside).
+    triangle_faces : sequence of array_like of int, each of shape (T_s,)
+        The geometric face (0..F_s - 1) each triangle belongs to: the
+        triangles of one planar polygonal face share a number.
+
+    Returns
+    -------
+    ShapeTables
+        The padded tables of the S shapes, in float32.
+
+    Raises
+    ------
+    InputError
+        No shapes, or a geometric face of zero area.
+    """
     S = len(vertices)
     if S == 0:
         raise InputError("no shapes to classify contacts with")
@@ -136,7 +173,23 @@ def to_local(quaternion, vectors):
     """(C, 3) float32 global vectors expressed in the local frames of bodies
     with orientations (C, 4) (w, x, y, z), local -> global, not necessarily
     normalised: v' = R(q)^T v, computed component-wise (the transpose of
-    the unit quaternion's rotation matrix applied to each vector)."""
+    the unit quaternion's rotation matrix applied to each vector).
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (C, 4)
+        Orientations (w, x, y, z) of the bodies, local -> global, of any
+        non-zero norm (cast to float32).
+    vectors : array_like, shape (C, 3)
+        One global vector per body (any unit; unit directions here), cast
+        to float32.
+
+    Returns
+    -------
+    ndarray of float32, shape (C, 3)
+        R(q)^T v of each row: the vector in its body's local frame, in the
+        unit of ``vectors``.
+    """
     q = np.asarray(quaternion, np.float32)
     v = np.asarray(vectors, np.float32)
     w, x, y, z = q.T
@@ -160,6 +213,30 @@ def touching_features(tables, shape, quaternion, direction, theta_deg=DEFAULT_TH
     quaternion (C, 4) orientations (w, x, y, z), local -> global;
     direction (C, 3) unit vector from the body towards its partner (global).
     Returns (C,) int8.
+
+    Parameters
+    ----------
+    tables : ShapeTables
+        The shapes (:func:`shape_tables`).
+    shape : array_like of int, shape (C,)
+        The row of each body's shape in ``tables``.
+    quaternion : array_like, shape (C, 4)
+        Orientations (w, x, y, z), local -> global, of any non-zero norm.
+    direction : array_like, shape (C, 3)
+        Unit vector u from the body towards its partner, global frame: +n
+        for id1 and -n for id2, n the contact normal from id1 to id2.
+    theta_deg : float, optional
+        The angular tolerance theta, degrees (default
+        ``DEFAULT_THETA_DEG`` = 5).
+
+    Returns
+    -------
+    ndarray of int8, shape (C,)
+        The touching feature of each body (module docstring, computed in
+        float32): FACE (2) when a geometric face containing the support
+        vertex has its outward normal within theta of u; else EDGE (1) when
+        the two vertices furthest along u are the ends of an edge with
+        s_1 - s_2 <= sin(theta) |v_1 - v_2|; else VERTEX (0).
     """
     shape = np.asarray(shape, np.int64)
     C = len(shape)
@@ -195,7 +272,22 @@ def touching_features(tables, shape, quaternion, direction, theta_deg=DEFAULT_TH
 
 
 def pair_types(f1, f2):
-    """(C,) int index into PAIR_TYPES of the unordered feature pairs."""
+    """(C,) int index into PAIR_TYPES of the unordered feature pairs.
+
+    Parameters
+    ----------
+    f1, f2 : array_like of int, shape (C,)
+        The feature codes of the two sides (VERTEX 0, EDGE 1, FACE 2), in
+        either order.
+
+    Returns
+    -------
+    ndarray of int8, shape (C,)
+        The index into PAIR_TYPES of each unordered pair: 0 VV, 1 VE, 2 VF,
+        3 EE, 4 EF, 5 FF. ``GROUP_OF`` maps these to the paper's groups:
+        simple (VV, VE, VF, EE: one contact point), double (EF: two),
+        triple (FF: three or more).
+    """
     lo, hi = np.minimum(f1, f2), np.maximum(f1, f2)
     # VV VE VF EE EF FF  <->  (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)
     table = np.array([[0, 1, 2], [1, 3, 4], [2, 4, 5]], np.int8)
@@ -203,7 +295,19 @@ def pair_types(f1, f2):
 
 
 def first_degenerate_normal(normal):
-    """Index of the first normal that is not a finite unit vector, else -1."""
+    """Index of the first normal that is not a finite unit vector, else -1.
+
+    Parameters
+    ----------
+    normal : array_like, shape (C, 3)
+        Contact normals (dimensionless).
+
+    Returns
+    -------
+    int
+        The row of the first normal whose norm is not within 1e-6 of 1
+        (NaN and infinite rows included), or -1 when all are unit vectors.
+    """
     norm = np.linalg.norm(np.asarray(normal, float), axis=1)
     bad = ~(np.abs(norm - 1) < 1e-6)
     return int(np.flatnonzero(bad)[0]) if bad.any() else -1
@@ -216,6 +320,34 @@ def classify_contacts(tables, shape1, shape2, q1, q2, normal, theta_deg=DEFAULT_
     orientations (w, x, y, z); normal (C, 3) unit, from id1 to id2.
     Returns (feature1, feature2, pair) as (C,) int arrays; ``pair`` indexes
     PAIR_TYPES. Raises InputError for a degenerate normal.
+
+    Parameters
+    ----------
+    tables : ShapeTables
+        The shapes (:func:`shape_tables`).
+    shape1, shape2 : array_like of int, shape (C,)
+        The shape rows of id1 and id2 in ``tables``.
+    q1, q2 : array_like, shape (C, 4)
+        Their orientations (w, x, y, z), local -> global.
+    normal : array_like, shape (C, 3)
+        Unit contact normals n from id1 to id2: id1 touches along +n, id2
+        along -n.
+    theta_deg : float, optional
+        The angular tolerance, degrees (default 5).
+
+    Returns
+    -------
+    feature1, feature2 : ndarray of int8, shape (C,)
+        The touching features of id1 and id2 (VERTEX 0, EDGE 1, FACE 2;
+        :func:`touching_features`).
+    pair : ndarray of int8, shape (C,)
+        The index into PAIR_TYPES of the unordered pair (:func:`pair_types`).
+
+    Raises
+    ------
+    InputError
+        A normal whose norm is not within 1e-6 of 1
+        (:func:`first_degenerate_normal`).
     """
     n = np.asarray(normal, float)
     k = first_degenerate_normal(n)
@@ -235,6 +367,41 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG, features=False)
     without a shape, a shape index out of range or a degenerate normal.
     With ``features``, returns (labels, poly (C,) bool the polyhedra pairs,
     feature1 (P,), feature2 (P,), pair (P,)) for those P pairs.
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        A dump's snapshot: contact normals (from id1 to id2), body kinds
+        (0 sphere, 1 polyhedron), shape indices and orientations.
+    tables : ShapeTables
+        The dump's shapes (:func:`shape_tables`).
+    theta_deg : float, optional
+        The angular tolerance, degrees (default 5).
+    features : bool, optional
+        Also return the features and pair indices of the polyhedra pairs
+        (default False).
+
+    Returns
+    -------
+    labels : ndarray of str, shape (C,)
+        "VV".."FF" (PAIR_TYPES) for a contact between two polyhedra,
+        "sphere" for a particle pair with a sphere on either side, "wall"
+        for a contact with a wall (a particle pair of any other body kind
+        keeps "wall" too).
+    poly : ndarray of bool, shape (C,)
+        With ``features`` only: True for the P polyhedra pairs.
+    feature1, feature2 : ndarray of int8, shape (P,)
+        With ``features`` only: the touching features of id1 and id2 of
+        those pairs (VERTEX 0, EDGE 1, FACE 2).
+    pair : ndarray of int8, shape (P,)
+        With ``features`` only: their index into PAIR_TYPES.
+
+    Raises
+    ------
+    InputError
+        A snapshot without normals, body kinds or shape indices (a flat
+        table), a polyhedron without a shape or with a shape index out of
+        range, or a degenerate normal; one line naming the snapshot.
     """
     where = f"snapshot {snap.name} (step {snap.step})"
 
@@ -276,7 +443,30 @@ def classify_snapshot(snap, tables, theta_deg=DEFAULT_THETA_DEG, features=False)
 def contact_classes(snap, tables, theta_deg=DEFAULT_THETA_DEG):
     """Class of every contact of ``snap``: :func:`classify_snapshot` when the
     dump has shapes (``tables`` not None), else "sphere" for particle-particle
-    contacts and "wall" for wall contacts. Returns (C,) str."""
+    contacts and "wall" for wall contacts. Returns (C,) str.
+
+    Parameters
+    ----------
+    snap : postproc.schema.Snapshot
+        The snapshot (with normals, body kinds, shape indices and
+        orientations when ``tables`` is given).
+    tables : ShapeTables or None
+        The dump's shapes, or None (spheres, flat contact tables).
+    theta_deg : float, optional
+        The angular tolerance, degrees (default 5).
+
+    Returns
+    -------
+    ndarray of str, shape (C,)
+        The class of each contact: with ``tables``, "VV".."FF", "sphere" or
+        "wall" (:func:`classify_snapshot`); without, "sphere" when both ids
+        are bodies of the snapshot and "wall" otherwise.
+
+    Raises
+    ------
+    InputError
+        As :func:`classify_snapshot`, when ``tables`` is given.
+    """
     if tables is not None:
         return classify_snapshot(snap, tables, theta_deg)
 

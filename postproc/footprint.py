@@ -52,14 +52,47 @@ DEFAULT_THRESHOLD = 0.1           # t, in units of the pair size d: a convention
 
 def pair_size(d1, d2):
     """(C,) m, the size of a pair: the harmonic mean 2 d1 d2 / (d1 + d2) of
-    the particles' sizes d1, d2 (C,) m (the contact kernel's d_pair)."""
+    the particles' sizes d1, d2 (C,) m (the contact kernel's d_pair).
+
+    Parameters
+    ----------
+    d1, d2 : array_like, shape (C,)
+        m, the sizes of the two particles (a dump's ``bodies/size``: twice
+        the largest centre-to-vertex distance of a polyhedron, twice the
+        radius of a sphere); any broadcastable shapes.
+
+    Returns
+    -------
+    ndarray of float, shape (C,)
+        m, d = 2 d1 d2 / (d1 + d2) (not checked: sizes summing to 0 give
+        NaN or inf).
+    """
     d1 = np.asarray(d1, float)
     d2 = np.asarray(d2, float)
     return 2 * d1 * d2 / (d1 + d2)
 
 
 def check_threshold(threshold, what="--threshold"):
-    """The threshold as a float; InputError unless finite and in (0, 1)."""
+    """The threshold as a float; InputError unless finite and in (0, 1).
+
+    Parameters
+    ----------
+    threshold : object
+        The threshold t, in units of the pair size d: a number or a string
+        of one.
+    what : str, optional
+        The option's name in the message (default "--threshold").
+
+    Returns
+    -------
+    float
+        t, finite, 0 < t < 1.
+
+    Raises
+    ------
+    InputError
+        Not a number, not finite, or outside (0, 1).
+    """
     try:
         t = float(threshold)
     except (TypeError, ValueError):
@@ -74,7 +107,27 @@ def relative_extents(extents, d):
 
     extents (C, 2) m (L1, L2 in any order); d (C,) m, > 0. Raises InputError
     naming the first contact with a non-finite or negative extent, or a
-    non-positive or non-finite size."""
+    non-positive or non-finite size.
+
+    Parameters
+    ----------
+    extents : array_like, shape (C, 2)
+        m, the footprint's principal extents L1, L2 in any order (the
+        kernel's ``contacts/footprint`` or :func:`recompute`), finite and
+        >= 0.
+    d : array_like, shape (C,)
+        m, the pair sizes (:func:`pair_size`), finite and > 0.
+
+    Returns
+    -------
+    ndarray of float, shape (C, 2)
+        Dimensionless (L1/d, L2/d) with L1 >= L2.
+
+    Raises
+    ------
+    InputError
+        Arrays of other shapes, or as said above (one line).
+    """
     x = np.asarray(extents, float)
     d = np.asarray(d, float)
     if x.ndim != 2 or x.shape[1] != 2 or d.shape != (len(x),):
@@ -96,7 +149,23 @@ def footprint_groups(rel, threshold=DEFAULT_THRESHOLD):
 
     rel (C, 2) the footprint extents L1 >= L2 over the pair size
     (:func:`relative_extents`); threshold t in units of d. simple: L1 < t;
-    triple: L2 >= t; double otherwise. Two comparisons per contact."""
+    triple: L2 >= t; double otherwise. Two comparisons per contact.
+
+    Parameters
+    ----------
+    rel : array_like, shape (C, 2)
+        Dimensionless L1/d >= L2/d (:func:`relative_extents`); a NaN
+        compares as below t.
+    threshold : float, optional
+        t, in units of d (default ``DEFAULT_THRESHOLD`` = 0.1).
+
+    Returns
+    -------
+    ndarray of int8, shape (C,)
+        The number of extents >= t: SIMPLE 0 (L1 < t d: a point, one contact
+        point in LMGC90's count), DOUBLE 1 (L1 >= t d > L2: a line, two),
+        TRIPLE 2 (L2 >= t d: an area, three or more).
+    """
     rel = np.asarray(rel)
     t = rel.dtype.type(threshold)
     return (rel[:, 0] >= t).astype(np.int8) + (rel[:, 1] >= t).astype(np.int8)
@@ -105,7 +174,25 @@ def footprint_groups(rel, threshold=DEFAULT_THRESHOLD):
 class Geometry:
     """The dump's shapes packed for the contact kernel (to recompute
     footprints). vertices, triangles: one (V, 3) m / (T, 3) int array per
-    shape, local frames, as in a dump's ``/shapes``."""
+    shape, local frames, as in a dump's ``/shapes``.
+
+    Parameters
+    ----------
+    vertices : sequence of array_like, each of shape (V_s, 3)
+        m, each shape's vertices in its local frame.
+    triangles : sequence of array_like of int, each of shape (T_s, 3)
+        Each shape's outward triangles (vertex indices).
+
+    Attributes
+    ----------
+    table : shapes.overlap.ShapeTable
+        The shapes as the compiled overlap kernel takes them.
+
+    Raises
+    ------
+    InputError
+        Shapes the kernel rejects (its message, prefixed "/shapes: ").
+    """
 
     def __init__(self, vertices, triangles):
         # loads the compiled kernel: only when overlaps must be recomputed
@@ -126,7 +213,38 @@ def recompute(geometry, shape1, pos1, quat1, shape2, pos2, quat2, threads=0):
     quat (P, 4) (w, x, y, z) local -> global. Returns (footprint (P, 2) m,
     largest first; area (P,) m^2; volume (P,) m^3). A pair whose grains do
     not overlap gets volume 0 and footprint (0, 0). Bad poses or indices
-    raise InputError."""
+    raise InputError.
+
+    Parameters
+    ----------
+    geometry : Geometry
+        The dump's shapes.
+    shape1, shape2 : array_like of int, shape (P,)
+        The shape rows of A = id1 and B = id2.
+    pos1, pos2 : array_like, shape (P, 3)
+        m, their centre-of-mass positions.
+    quat1, quat2 : array_like, shape (P, 4)
+        Their orientations (w, x, y, z), local -> global.
+    threads : int, optional
+        OpenMP threads of the kernel (0, the default: all cores); the
+        results do not depend on it.
+
+    Returns
+    -------
+    footprint : ndarray, shape (P, 2)
+        m, the principal extents L1 >= L2 of the overlap's shadow on the
+        contact plane.
+    area : ndarray, shape (P,)
+        m^2, the area of that shadow.
+    volume : ndarray, shape (P,)
+        m^3, the overlap volume V (so V / area is its mean thickness).
+
+    Raises
+    ------
+    InputError
+        What the kernel rejects (its message, prefixed "recomputing
+        footprints: ").
+    """
     # loads the compiled kernel: only when overlaps must be recomputed
     from shapes.overlap import OverlapError, batch_overlap
 

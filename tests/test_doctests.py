@@ -12,7 +12,9 @@ import pytest
 
 #: the analysis library's modules whose public API is documented in numpydoc
 NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
-                                            "strain", "statistics")) + ("yade_scripts.runlock", "yade_scripts.runstate")
+                                            "strain", "statistics", "analysis", "axes", "periodic", "contactset",
+                                            "contacttypes", "contactpoints", "commonplane", "footprint",
+                                            "classify")) + ("yade_scripts.runlock", "yade_scripts.runstate")
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
                                            "pertype", "statistics")) + ("yade_scripts.runlock", "yade_scripts.runstate")
