@@ -246,7 +246,7 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     Anisotropies from tensors (:func:`postproc.fabric.anisotropies`) over the
     force-bearing particle-particle contacts, and from harmonic fits of the
     binned functions (suffix ``_fit``). ``sff`` = (2/5)(a + a_l + a_n + a_t)
-    (eq. 8) and ``sff_residual`` = q_axial/p - sff, where q_axial =
+    (eq. 10) and ``sff_residual`` = q_axial/p - sff, where q_axial =
     (sigma_axis - mean lateral)/3 is the signed deviator along the
     compression axis (it equals q once sigma_1 lies along the axis).
 

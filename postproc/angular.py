@@ -9,14 +9,14 @@ theta_k <= theta < theta_{k+1} and pi - theta_{k+1} < theta <= pi - theta_k,
 a solid angle 4 pi (cos theta_k - cos theta_{k+1}).
 
 * P_Omega(theta) = N_k / (N dOmega_k), normalised so that its integral over
-  the sphere is 1 (seed eq. 4);
+  the sphere is 1 (seed eq. 5);
 * <l>(theta), <f_n'>(theta), <f_t'>(theta): means over the contacts of the
-  bin (eqs. 4 and 7), f_t' = f . t' with t' the unit vector orthogonal to n'
+  bin (eqs. 5 and 8), f_t' = f . t' with t' the unit vector orthogonal to n'
   in the meridian plane pointing towards the axis, so that <f_t'> > 0 where
   friction resists the axial compression.
 
 The fits (:func:`fit_harmonics`) are weighted least squares of the harmonic
-forms of eqs. 5-7 with weights dOmega_k, so that with many bins they approach
+forms of eqs. 6, 7 and 9 with weights dOmega_k, so that with many bins they approach
 the L2 projection on the sphere. The regressors are the *bin averages* of
 3cos^2 theta - 1 and sin 2theta over each bin's solid angle, not their values
 at the bin centre, which removes the discretisation bias at first order.
@@ -48,7 +48,7 @@ class AngularFunctions:
     count : ndarray
         Contacts per bin.
     P, P_se : ndarray
-        1/sr, the density of branch directions P_Omega(theta) (seed eq. 4;
+        1/sr, the density of branch directions P_Omega(theta) (seed eq. 5;
         its integral over the sphere is 1) and its standard error.
     l_mean, l_se : ndarray
         m, the mean branch length <l>(theta) and its standard error.
@@ -97,7 +97,7 @@ def _bin_stats(idx, values, nbins, count):
 
 
 def angular_functions(branch, force, axis=2, nbins=18):
-    """Bin the branch-vector and force functions of the seed (eqs. 4, 7).
+    """Bin the branch-vector and force functions of the seed (eqs. 5, 8).
 
     Parameters
     ----------
@@ -173,7 +173,7 @@ def _wls(X, y, se, w):
 
 
 def fit_harmonics(af: AngularFunctions):
-    """Least-squares fits of the seed's harmonic forms (eqs. 5-7).
+    """Least-squares fits of the seed's harmonic forms (eqs. 6, 7 and 9).
 
     P_Omega = (1 + a P2)/(4 pi), <l> = l0 (1 + a_l P2), <f_n'> = f0 (1 + a_n
     P2), <f_t'> = f0 a_t sin 2theta, P2 = 3 cos^2 theta - 1, weighted by the
@@ -235,7 +235,7 @@ def fit_harmonics(af: AngularFunctions):
 
 
 def harmonic_curves(fits, theta):
-    """The fitted functions of eqs. 5-7 at given angles.
+    """The fitted functions of eqs. 6, 7 and 9 at given angles.
 
     Parameters
     ----------

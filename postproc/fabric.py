@@ -2,7 +2,8 @@
 
 The seed paper (Azema, Radjai & Saussine 2009) describes the angular
 distributions of the branch vectors l = l n' (n' unit) and of the contact
-forces f = f_n' n' + f_t' t' by their second-order harmonic forms (eqs. 5-7),
+forces f = f_n' n' + f_t' t' by their second-order harmonic forms (eqs. 6, 7 and 9;
+the decomposition of f is eq. 8),
 with theta measured from the compression axis and P2 = 3 cos^2 theta - 1:
 
     P(Omega)      = (1/4pi) [1 + a   P2]
@@ -80,7 +81,7 @@ def _from_means(m):
 
 def anisotropies(branch, force, axis=2, *, errors=True, chunk=_CHUNK):
     """Fabric and force anisotropies a, a_l, a_n, a_t from tensors (seed
-    eqs. 5-7; the estimators and their inversion: module docstring).
+    eqs. 6, 7 and 9; the estimators and their inversion: module docstring).
 
     Parameters
     ----------
@@ -209,7 +210,7 @@ def stress_force_fabric(a, a_l, a_n, a_t):
     Returns
     -------
     float or ndarray
-        (2/5)(a + a_l + a_n + a_t), the seed's prediction of q/p (eq. 8), the
+        (2/5)(a + a_l + a_n + a_t), the seed's prediction of q/p (eq. 10), the
         cross products of anisotropies neglected; dimensionless.
 
     Examples

@@ -74,7 +74,7 @@ def network_statistics(normal_force, branch, force, axis=2, labels=None, classes
         {"strong": dict, "weak": dict}, each with ``fraction`` (of the
         contacts), ``force_share`` (of the summed normal force), the
         anisotropies ``a``, ``a_l``, ``a_n``, ``a_t`` of the network alone
-        (seed eqs. 5-7 restricted to it, :func:`postproc.fabric.anisotropies`;
+        (seed eqs. 6, 7 and 9 restricted to it, :func:`postproc.fabric.anisotropies`;
         NaN for a network of fewer than 2 contacts) and, for each class k,
         ``frac_<k>``: the share of the network's contacts of class k.
 

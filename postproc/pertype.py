@@ -60,7 +60,7 @@ def axial_leaning(branch, axis=2):
     (claim 6's leaning): (5/4)(3 u^2 - 1), u the cosine of the branch vector
     with the compression axis. Its mean over a set of contacts is
     (5/2)(F_3 - F_1) of their fabric tensor F, the anisotropy a of seed
-    eq. 5 restricted to the set: positive towards the axis, negative towards
+    eq. 6 restricted to the set: positive towards the axis, negative towards
     the lateral (minor principal) directions.
 
     Parameters

@@ -118,7 +118,7 @@ def invariants(sigma, axis=2):
         ``directions`` : ndarray (3, 3), column k the direction of sigma_k;
         ``p`` = (s1 + s2 + s3)/3 and ``q`` = (s1 - s3)/3, Pa (the factor 1/3
         is the seed's convention, which makes q/p = (2/5) sum of
-        anisotropies, eq. 8); ``q_over_p``; ``q_axial`` = (sigma_aa - mean
+        anisotropies, eq. 10); ``q_over_p``; ``q_axial`` = (sigma_aa - mean
         lateral)/3 along ``axis``, Pa, signed (negative in extension);
         ``angle_1``, degrees between the major principal direction and the
         axis; ``antisymmetry`` = |skew(sigma)| / |sigma| (Frobenius norms).

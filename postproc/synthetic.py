@@ -1,4 +1,4 @@
-"""Synthetic contact sets drawn from the seed's harmonic forms (eqs. 5-7).
+"""Synthetic contact sets drawn from the seed's harmonic forms (eqs. 6, 7 and 9).
 
 Used by the tests (known truth) and by the benchmarks. A contact set with
 anisotropies (a, a_l, a_n, a_t) about an axis is drawn as follows, with
@@ -13,7 +13,7 @@ theta the angle between the branch direction n and the axis:
   in the hemisphere n.axis >= 0), plus an azimuthal component f0 s_t Z'
   with zero mean.
 
-So <l>, <f_n'> and <f_t'> follow eqs. 5-7 exactly. Each contact joins two
+So <l>, <f_n'> and <f_t'> follow eqs. 6, 7 and 9 exactly. Each contact joins two
 fresh bodies (ids 2k, 2k+1) placed at random in a box; the order of id1 and
 id2 is then swapped at random (n and f change sign together), which leaves
 every physical quantity unchanged.

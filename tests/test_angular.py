@@ -1,4 +1,4 @@
-"""Binned angular functions and harmonic fits (seed eqs. 4-7)."""
+"""Binned angular functions and harmonic fits (seed eqs. 5-9)."""
 import numpy as np
 import pytest
 
