@@ -14,7 +14,8 @@ import pytest
 NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
                                             "strain", "statistics", "analysis", "axes", "periodic", "contactset",
                                             "contacttypes", "contactpoints", "commonplane", "footprint",
-                                            "classify")) + ("yade_scripts.runlock", "yade_scripts.runstate")
+                                            "classify")) + tuple(f"yade_scripts.{m}" for m in (
+    "runlock", "runstate", "checkpoint", "attempt", "pool", "task", "archive", "slurm"))
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
                                            "pertype", "statistics")) + ("yade_scripts.runlock", "yade_scripts.runstate")

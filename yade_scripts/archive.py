@@ -52,7 +52,25 @@ LOCK_WAIT_SECONDS = 0.2
 
 
 def sha256_of(path, chunk=1 << 22):
-    """SHA-256 (hex) of a file's bytes."""
+    """SHA-256 (hex) of a file's bytes.
+
+    Parameters
+    ----------
+    path : str
+        The file.
+    chunk : int
+        Bytes read at a time (default 4 MiB).
+
+    Returns
+    -------
+    str
+        64 lowercase hexadecimal characters.
+
+    Raises
+    ------
+    OSError
+        The file cannot be read.
+    """
     h = hashlib.sha256()
     with open(path, "rb") as fh:
         for block in iter(lambda: fh.read(chunk), b""):
@@ -63,7 +81,22 @@ def sha256_of(path, chunk=1 << 22):
 def line_dump(table, line):
     """The dump of run line ``line`` of the run folder ``table``: in the
     line's own folder ``<description>/`` when there is one (a SLURM array
-    task's), else next to the table."""
+    task's), else next to the table.
+
+    Parameters
+    ----------
+    table : str
+        The generated run folder (its ``table.txt``).
+    line : yade_scripts.batch.TableLine
+        A run line of its table.
+
+    Returns
+    -------
+    str
+        The dump's path (:func:`yade_scripts.batch.dump_of`, moved into
+        ``table/<description>/`` when that folder exists); it may not
+        exist.
+    """
     from .batch import dump_of
 
     own = os.path.join(table, line.description)
@@ -109,7 +142,23 @@ def library_fingerprint(path):
     dtype, shape and bytes) and every attribute of the HDF5 file in sorted
     order, but the file's ``name`` attribute (the name it was written
     under). Two builds of the same library are two files whose bytes differ
-    (the name, HDF5's own layout), with the same fingerprint."""
+    (the name, HDF5's own layout), with the same fingerprint.
+
+    Parameters
+    ----------
+    path : str
+        The shape library (HDF5).
+
+    Returns
+    -------
+    str
+        64 lowercase hexadecimal characters.
+
+    Raises
+    ------
+    OSError
+        The file cannot be opened as HDF5 (h5py's error).
+    """
     import h5py
     import numpy as np
 
@@ -411,7 +460,21 @@ def _write_json(path, data):
 def main(argv=None):
     """``python -m yade_scripts.archive STUDY DEST``: :func:`save`; exit 0
     when it ran (each run kept or skipped is named), 2 for a bad STUDY or
-    DEST (one line)."""
+    DEST (one line).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line's arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code: 0 when :func:`save` ran (each run skipped on
+        stdout, the count on stderr); 2 when it refused (ConfigError) or a
+        file could not be read or written (OSError), one line on stderr.
+        (A bad command line exits 2 through argparse.)
+    """
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.archive", description=__doc__.splitlines()[0])
     ap.add_argument("study", help="the study folder (or one generated run folder)")
     ap.add_argument("dest", help="the archive's folder, e.g. reference_data/<study name>")

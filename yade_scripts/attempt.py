@@ -43,10 +43,28 @@ from .runstate import RunFiles
 
 @dataclass
 class Resumed:
-    """The checkpoint an attempt resumes from. checkpoint : its file;
-    meta, arrays : what it holds (:func:`yade_scripts.checkpoint.read`);
-    scene : YADE's saved scene (bytes); writer : the dump, reopened after
-    the checkpoint's snapshots."""
+    """The checkpoint an attempt resumes from.
+
+    Attributes
+    ----------
+    checkpoint : str
+        Its file (``STEM.ckpt`` or ``STEM.ckpt.prev``).
+    meta : dict
+        The checkpoint's metadata (:func:`yade_scripts.checkpoint.read`):
+        fingerprint, step, time, stage, eps_1, n_snapshots, dump_parameters
+        (JSON text), log_bytes, why, the run's history (wall_seconds, engine_seconds, resumes) and
+        the keys of the scene's ``get_state()``.
+    arrays : dict
+        name (str) -> numpy.ndarray: the arrays it holds.
+    scene : bytes
+        YADE's saved scene (O.save).
+    writer : postproc.schema.DumpWriter
+        The dump, reopened after the checkpoint's snapshots.
+    step : int
+        The step (YADE's iteration) the checkpoint was written at.
+    dump_parameters : dict
+        The dump's parameters as the first attempt wrote them.
+    """
     checkpoint: str
     meta: dict
     arrays: dict
@@ -65,7 +83,21 @@ class Resumed:
 
 
 def scene_bytes(O, path):
-    """The YADE scene (O.save) as bytes, through the temporary file ``path``."""
+    """The YADE scene (O.save) as bytes, through the temporary file ``path``.
+
+    Parameters
+    ----------
+    O : yade.Omega
+        The running YADE's ``O``.
+    path : str
+        The temporary file (``.yade`` or another suffix O.save takes); it
+        is overwritten, then removed.
+
+    Returns
+    -------
+    bytes
+        The saved file's content.
+    """
     O.save(path)
     with open(path, "rb") as fh:
         blob = fh.read()
@@ -74,7 +106,22 @@ def scene_bytes(O, path):
 
 
 def load_scene_bytes(O, blob, path):
-    """O.load of a scene saved by :func:`scene_bytes`, through ``path``."""
+    """O.load of a scene saved by :func:`scene_bytes`, through ``path``.
+
+    Parameters
+    ----------
+    O : yade.Omega
+        The running YADE's ``O``; its scene is replaced.
+    blob : bytes
+        A scene of :func:`scene_bytes`.
+    path : str
+        The temporary file (the same suffix as when it was saved); it is
+        overwritten, then removed.
+
+    Returns
+    -------
+    None
+    """
     with open(path, "wb") as fh:
         fh.write(blob)
     O.load(path)
@@ -103,7 +150,83 @@ class Attempt:
     step): YADE then ends its loop after that step is complete. (``O.pause()``
     from this thread would clear ``O.running`` while a step is still under
     way, so ``O.wait()`` returns early and a checkpoint could catch half a
-    step.)"""
+    step.)
+
+    Parameters
+    ----------
+    O : yade.Omega
+        The running YADE's ``O``.
+    dump : str
+        The run's dump, ``STEM.h5`` (its companions:
+        :class:`~yade_scripts.runstate.RunFiles`).
+    parameters : dict
+        The run's parameters; their :func:`yade_scripts.checkpoint.fingerprint`
+        must match a checkpoint's for it to be used.
+    checkpoint_seconds : float
+        Seconds of wall time between two periodic checkpoints (0 or less:
+        none, only on SIGTERM).
+    resume : bool
+        False: always start afresh.
+    timing : bool
+        Whether the engines' times are recorded (the scene sets
+        ``O.timingEnabled`` to it): :meth:`engine_seconds` reads them only
+        then.
+    say : callable
+        Takes each one-line message.
+
+    Attributes
+    ----------
+    O : yade.Omega
+        As given.
+    say : callable
+        As given.
+    timing : bool
+        As given.
+    checkpoint_seconds : float
+        As given.
+    files : yade_scripts.runstate.RunFiles
+        The run's files.
+    fingerprint : str
+        :func:`yade_scripts.checkpoint.fingerprint` of ``parameters``.
+    complete : bool
+        True when the dump was finished already: nothing to do.
+    resumed : Resumed or None
+        The checkpoint this attempt resumes from, or None (afresh, or
+        complete).
+    writer : postproc.schema.DumpWriter or None
+        The dump's writer once :meth:`open_dump` has run.
+    log : file object or None
+        ``STEM.log.csv``, open for writing, once :meth:`open_log` has run.
+    terminated : bool
+        True once SIGTERM has arrived.
+    failed : str or None
+        Why the scene stopped the run (:meth:`fail`), when it did.
+    scene_saving : callable
+        Returns a context manager put around O.save of a checkpoint
+        (default :func:`contextlib.nullcontext`; the scene swaps in
+        engines that any YADE can load).
+    t0 : float
+        When this attempt's clock started (seconds since the epoch).
+    last_checkpoint : float
+        When the last checkpoint was written, or the clock started (seconds
+        since the epoch).
+    earlier_wall_seconds : float
+        Wall seconds of the earlier attempts (from the checkpoint).
+    earlier_engine_seconds : dict
+        engine name (str) -> seconds of the earlier attempts.
+    resumes : list of dict
+        One per resume so far: step, stage, eps_1, checkpoint (file name),
+        written_because ("periodic" or "SIGTERM") and at (UTC, ISO 8601).
+    lock : yade_scripts.runlock.RunLock or None
+        The run's lock when this process took it itself (released at
+        exit); None when the process that started it holds it.
+
+    Raises
+    ------
+    yade_scripts.runlock.RunBusy
+        Another live process holds the run's lock (one line naming it);
+        nothing was touched.
+    """
 
     def __init__(self, O, dump, parameters, checkpoint_seconds, resume=True, timing=True, say=print):
         self.O, self.say, self.timing = O, say, timing
@@ -160,13 +283,39 @@ class Attempt:
 
     # ------------------------------------------------------------ the dump and the log
     def open_dump(self, new_dump):
-        """The dump writer: the resumed one, else ``new_dump()``."""
+        """The dump writer: the resumed one, else ``new_dump()``.
+
+        Parameters
+        ----------
+        new_dump : callable
+            Takes no argument and returns a new
+            :class:`postproc.schema.DumpWriter`; called only when the
+            attempt does not resume.
+
+        Returns
+        -------
+        postproc.schema.DumpWriter
+            The writer, also kept as :attr:`writer`.
+        """
         self.writer = self.resumed.writer if self.resumed else new_dump()
         return self.writer
 
     def open_log(self, header):
         """STEM.log.csv: appended after the checkpoint's last row when
-        resuming, else new with its ``header``."""
+        resuming, else new with its ``header``.
+
+        Parameters
+        ----------
+        header : str
+            Written as is at the start of a new log (its column line, with
+            its newline); not used when resuming.
+
+        Returns
+        -------
+        file object
+            The log, open for text writing at its end (resuming: cut to the
+            checkpoint's ``log_bytes``), also kept as :attr:`log`.
+        """
         if self.resumed:
             self.log = open(self.files.log_csv, "a+")
             self.log.truncate(min(self.resumed.meta["log_bytes"], self.log.seek(0, os.SEEK_END)))
@@ -179,7 +328,20 @@ class Attempt:
     def progress(self, **fields):
         """Rewrite the run's progress record (STEM.progress.json) with
         ``fields`` (step, stage, eps_1, steps_per_second, seconds_left ...)
-        and the time; what a scheduler reads to see how long a run has left."""
+        and the time; what a scheduler reads to see how long a run has left.
+
+        Parameters
+        ----------
+        **fields
+            JSON-serialisable values, e.g. step (int), stage (str),
+            seconds_left (float, s, or None); written with ``"time"``
+            (seconds since the epoch, now), which replaces a field of that
+            name. The file is replaced atomically.
+
+        Returns
+        -------
+        None
+        """
         path = self.files.progress
         with open(path + ".tmp", "w") as fh:
             json.dump({**fields, "time": time.time()}, fh)
@@ -188,28 +350,83 @@ class Attempt:
     # ------------------------------------------------------------ the clock and the history
     def start(self):
         """This attempt's clock starts now; the progress record says so (a
-        scheduler may send SIGTERM from now on: it is handled)."""
+        scheduler may send SIGTERM from now on: it is handled).
+
+        Returns
+        -------
+        None
+        """
         self.t0 = self.last_checkpoint = time.time()
         self.progress(step=self.O.iter, stage="starting", seconds_left=None)
 
     def wall_seconds(self):
-        """Wall time of the run so far (s), earlier attempts included."""
+        """Wall time of the run so far (s), earlier attempts included.
+
+        Returns
+        -------
+        float
+            Seconds: the earlier attempts' plus this one's since :meth:`start`.
+        """
         return self.earlier_wall_seconds + time.time() - self.t0
 
     def engine_seconds(self):
         """{engine: s} of the run so far (YADE's execTime of each engine,
-        earlier attempts included); {} without timing."""
+        earlier attempts included); {} without timing.
+
+        Returns
+        -------
+        dict
+            engine (str: its label, else its class name) -> seconds
+            (float) of this attempt's engines, each plus the earlier
+            attempts' seconds under the same name.
+        """
         now = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in self.O.engines} if self.timing else {}
         return {k: self.earlier_engine_seconds.get(k, 0.0) + v for k, v in now.items()}
 
     def history(self):
-        """{wall_seconds, engine_seconds, resumes} of the run so far."""
+        """{wall_seconds, engine_seconds, resumes} of the run so far.
+
+        Returns
+        -------
+        dict
+            "wall_seconds" (float, :meth:`wall_seconds`), "engine_seconds"
+            (dict, :meth:`engine_seconds`) and "resumes" (list of dict,
+            :attr:`resumes`).
+        """
         return {"wall_seconds": self.wall_seconds(), "resumes": self.resumes, "engine_seconds": self.engine_seconds()}
 
     # ------------------------------------------------------------ checkpoints
     def save_checkpoint(self, why, get_state, where):
         """Write STEM.ckpt now (between two steps): YADE's scene, the dump's
-        and log's positions, the history and ``get_state()``."""
+        and log's positions, the history and ``get_state()``.
+
+        Needs :meth:`open_dump` and :meth:`open_log` first. Says one line
+        (step, stage, size, time taken).
+
+        Parameters
+        ----------
+        why : str
+            Why it is written ("periodic" or "SIGTERM"), kept as the
+            metadata's ``why``.
+        get_state : callable
+            Takes no argument and returns ``(state, arrays)``: the scene's
+            JSON-serialisable dict, whose keys join the metadata, and its
+            dict of name (str) -> numpy array.
+        where : callable
+            Takes no argument and returns ``(stage, eps_1)``: the loading
+            stage (str) and the axial strain (float).
+
+        Returns
+        -------
+        None
+
+        Raises
+        ------
+        ValueError
+            A key of ``state`` is one of the checkpoint's own metadata
+            names, or an array name is reserved or of dtype object
+            (:func:`yade_scripts.checkpoint.encode`).
+        """
         O, f = self.O, self.files
         t_save = time.time()
         with self.scene_saving():
@@ -233,7 +450,26 @@ class Attempt:
     def restore(self, set_state, where):
         """Put the run back in the state of :attr:`resumed`: YADE's scene,
         then ``set_state(meta, arrays)`` for the scene's own parts (``meta``:
-        the checkpoint's metadata, the keys of ``get_state()`` among them)."""
+        the checkpoint's metadata, the keys of ``get_state()`` among them).
+
+        Needs :attr:`resumed` (not None) and :meth:`open_dump`. Takes the
+        earlier attempts' history from the checkpoint, adds this resume to
+        :attr:`resumes` and says one line.
+
+        Parameters
+        ----------
+        set_state : callable
+            ``set_state(meta, arrays)`` with the checkpoint's metadata
+            (dict) and arrays (dict of name -> numpy.ndarray); its result
+            is ignored.
+        where : callable
+            Takes no argument and returns ``(stage, eps_1)`` of the
+            restored state (str, float).
+
+        Returns
+        -------
+        None
+        """
         r, O = self.resumed, self.O
         load_scene_bytes(O, r.scene, self.files.checkpoint + ".scene.yade")
         set_state(r.meta, r.arrays)
@@ -248,7 +484,12 @@ class Attempt:
 
     def finish(self):
         """The run is over (done, or failed: a blow-up replays identically
-        from a checkpoint): its checkpoints and progress record go."""
+        from a checkpoint): its checkpoints and progress record go.
+
+        Returns
+        -------
+        None
+        """
         checkpoint.remove(self.files.checkpoint)
         if os.path.exists(self.files.progress):
             os.remove(self.files.progress)
@@ -259,13 +500,29 @@ class Attempt:
 
     def end_of_step(self):
         """If a checkpoint is due, make this step the last of the run (the
-        scene's controller calls this first thing every step)."""
+        scene's controller calls this first thing every step).
+
+        Returns
+        -------
+        None
+        """
         if self._pause_request:
             self._pause_request = False
             self.O.stopAtIter = self.O.iter + 1
 
     def fail(self, reason):
-        """The scene stops the run: ``reason`` (one line) is why."""
+        """The scene stops the run: ``reason`` (one line) is why.
+
+        Parameters
+        ----------
+        reason : str
+            One line, kept as :attr:`failed`; YADE is paused
+            (:meth:`loop` then returns "failed").
+
+        Returns
+        -------
+        None
+        """
         self.failed = reason
         self.O.pause()
 
@@ -294,7 +551,25 @@ class Attempt:
         with a checkpoint every checkpoint_seconds of wall time and one on
         SIGTERM. Returns "done", "failed", "terminated" (a checkpoint was
         written: run again to resume) or "stalled" (YADE stopped for no
-        reason the scene gave, e.g. an exception in a PyRunner)."""
+        reason the scene gave, e.g. an exception in a PyRunner).
+
+        Parameters
+        ----------
+        done : callable
+            Takes no argument; True once the run has reached its end.
+        get_state, where : callable
+            As :meth:`save_checkpoint` takes them.
+
+        Returns
+        -------
+        str
+            "done", "failed", "terminated" or "stalled".
+
+        Raises
+        ------
+        ValueError
+            As :meth:`save_checkpoint`.
+        """
         while True:
             due = self._run_until_stop()
             if self.failed:
@@ -380,7 +655,25 @@ def leave(code):
 
 class Progress:
     """When to print a progress line: at most every ``seconds`` of wall time,
-    with the steps per second since the last one."""
+    with the steps per second since the last one.
+
+    Parameters
+    ----------
+    seconds : float
+        Wall seconds a line is due after the last one (more than).
+
+    Attributes
+    ----------
+    seconds : float
+        As given.
+    last_time : float
+        When the last line was due, or the object made (seconds since the
+        epoch).
+    last_step : int
+        The step of the last line (0 at first, or :meth:`restart`'s).
+    steps_per_second : float
+        Steps per wall second at the last line (0.0 before the first).
+    """
 
     def __init__(self, seconds):
         self.seconds = seconds
@@ -388,7 +681,20 @@ class Progress:
 
     def tick(self, step):
         """The steps per second since the last line when a line is due now,
-        else None."""
+        else None.
+
+        Parameters
+        ----------
+        step : int
+            The step (YADE's iteration) now.
+
+        Returns
+        -------
+        float or None
+            Steps per wall second since the last line, when more than
+            ``seconds`` have passed since it (the line is then counted as
+            printed); else None.
+        """
         now = time.time()
         if now - self.last_time <= self.seconds:
             return None
@@ -397,5 +703,15 @@ class Progress:
         return self.steps_per_second
 
     def restart(self, step):
-        """Count steps from ``step`` (a resumed run)."""
+        """Count steps from ``step`` (a resumed run).
+
+        Parameters
+        ----------
+        step : int
+            The step (YADE's iteration) the run resumes at.
+
+        Returns
+        -------
+        None
+        """
         self.last_step = step

@@ -45,13 +45,36 @@ RUNTIME_PARAMETERS = frozenset({"resume", "checkpoint_seconds", "report_seconds"
 
 class CheckpointError(ValueError):
     """A checkpoint that cannot be used (truncated, corrupt, foreign or of
-    another run); the message is one line."""
+    another run); the message is one line.
+
+    A :class:`ValueError`, so that a caller catching ValueError (e.g.
+    :func:`choose`) catches it too.
+
+    Attributes
+    ----------
+    args : tuple of str
+        One element: the one-line message, the file's name first.
+    """
 
 
 def fingerprint(parameters):
     """SHA-256 (hex) of the parameters that define a run's physics (every
     parameter but :data:`RUNTIME_PARAMETERS`), to refuse a checkpoint of
-    another run."""
+    another run.
+
+    Parameters
+    ----------
+    parameters : dict
+        The run's parameters, name (str) -> value. Names in
+        :data:`RUNTIME_PARAMETERS` and names starting with ``_`` are left
+        out; the others are serialised as sorted-key JSON, a value JSON
+        cannot hold as its ``repr``.
+
+    Returns
+    -------
+    str
+        64 lowercase hexadecimal characters.
+    """
     keep = {k: v for k, v in parameters.items() if k not in RUNTIME_PARAMETERS and not k.startswith("_")}
     text = json.dumps(keep, sort_keys=True, default=repr)
     return hashlib.sha256(text.encode()).hexdigest()
@@ -71,9 +94,37 @@ def _fsync_dir(path):
 
 
 def encode(meta, arrays=None, blobs=None):
-    """The bytes of a checkpoint file. meta : JSON-serialisable dict (floats
-    are written with repr, so they come back bit for bit); arrays : {name:
-    numpy array} (no object arrays); blobs : {name: bytes}."""
+    """The bytes of a checkpoint file (the layout of the module docstring).
+
+    Parameters
+    ----------
+    meta : dict
+        JSON-serialisable metadata (floats are written with repr, so they
+        come back bit for bit); its ``"step"`` and ``"stage"`` (None when
+        missing) are copied into the header line.
+    arrays : dict, optional
+        name (str) -> array-like, each stored as ``np.asarray`` of it (any
+        shape and dtype but object). Names may not start with ``__``.
+    blobs : dict, optional
+        name (str) -> bytes-like (e.g. YADE's saved scene), stored as uint8
+        arrays ``__blob__NAME``.
+
+    Returns
+    -------
+    bytes
+        The whole file: the name-and-version line, the JSON header line
+        (payload_bytes, sha256, step, stage) and the uncompressed ``.npz``
+        payload.
+
+    Raises
+    ------
+    ValueError
+        An array name starting with ``__`` (reserved), or an array of dtype
+        object.
+    TypeError
+        ``meta`` holds a value JSON cannot serialise (raised by
+        :func:`json.dumps`).
+    """
     arrays = dict(arrays or {})
     for k in arrays:
         if k.startswith("__"):
@@ -96,7 +147,32 @@ def encode(meta, arrays=None, blobs=None):
 def decode(data, name="checkpoint"):
     """(meta, arrays, blobs) from the bytes of a checkpoint file; raises
     CheckpointError (one line) when they are not a complete checkpoint of
-    this format."""
+    this format.
+
+    Parameters
+    ----------
+    data : bytes
+        The whole file, as :func:`encode` wrote it.
+    name : str
+        What the error messages call it (the file's path).
+
+    Returns
+    -------
+    meta : dict
+        The JSON metadata, as given to :func:`encode`.
+    arrays : dict
+        name (str) -> numpy.ndarray, as stored.
+    blobs : dict
+        name (str) -> bytes.
+
+    Raises
+    ------
+    CheckpointError
+        One line starting with ``name``: no name-and-version line, another
+        format version, an unreadable header line, a payload shorter or
+        longer than the header says, a SHA-256 mismatch, or a payload that
+        is not a readable ``.npz`` archive with the metadata.
+    """
     first, sep, rest = data.partition(b"\n")
     if not sep or not first.startswith(MAGIC + b" "):
         raise CheckpointError(f"{name}: not a triaxial checkpoint (no '{MAGIC.decode()}' header)")
@@ -133,7 +209,28 @@ def header(path):
     sha256, step, stage), from its first two lines only: cheap for a large
     checkpoint, but the payload is not checked (:func:`read` does).
     CheckpointError (one line) when the file is missing or its first two
-    lines are not a header of this format."""
+    lines are not a header of this format.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file.
+
+    Returns
+    -------
+    dict
+        The header line as written by :func:`encode`: "payload_bytes"
+        (int, bytes), "sha256" (hex str), "step" (int or None, YADE's
+        iteration) and "stage" (str or None), as far as the file has them
+        (only that it is a JSON object is checked).
+
+    Raises
+    ------
+    CheckpointError
+        One line starting with ``path``: the file cannot be read, its first
+        line is not this format's name and version, or its second line (at
+        most 1 MiB read) is not a JSON object.
+    """
     try:
         with open(path, "rb") as fh:
             first, second = fh.readline(), fh.readline(1 << 20)
@@ -152,7 +249,27 @@ def header(path):
 
 def read(path):
     """(meta, arrays, blobs) of the checkpoint file ``path``; CheckpointError
-    (one line) when it is missing, truncated, corrupt or foreign."""
+    (one line) when it is missing, truncated, corrupt or foreign.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file.
+
+    Returns
+    -------
+    meta : dict
+        The JSON metadata.
+    arrays : dict
+        name (str) -> numpy.ndarray.
+    blobs : dict
+        name (str) -> bytes.
+
+    Raises
+    ------
+    CheckpointError
+        One line: the file cannot be read, or :func:`decode` refuses it.
+    """
     try:
         with open(path, "rb") as fh:
             data = fh.read()
@@ -164,7 +281,28 @@ def read(path):
 def save(path, meta, arrays=None, blobs=None):
     """Write a checkpoint atomically (see the module docstring); the previous
     one is kept as ``path + '.prev'`` until this one is complete. Returns the
-    file size in bytes."""
+    file size in bytes.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file (``STEM.ckpt``); ``path + '.tmp'`` is written
+        first, an existing ``path`` becomes ``path + '.prev'`` (replacing
+        an older ``.prev``).
+    meta, arrays, blobs
+        As :func:`encode` takes them.
+
+    Returns
+    -------
+    int
+        The file's size, bytes.
+
+    Raises
+    ------
+    ValueError
+        As :func:`encode` (a reserved array name, an object array); nothing
+        is written then.
+    """
     data = encode(meta, arrays, blobs)
     tmp = path + ".tmp"
     with open(tmp, "wb") as fh:
@@ -180,31 +318,99 @@ def save(path, meta, arrays=None, blobs=None):
 
 def candidates(path):
     """The checkpoint files of ``path`` that exist, newest first: ``path``
-    then ``path + '.prev'``."""
+    then ``path + '.prev'``.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file (``STEM.ckpt``).
+
+    Returns
+    -------
+    list of str
+        Zero, one or two paths; whether they are readable is not checked
+        (:func:`read`, :func:`choose`).
+    """
     return [p for p in (path, path + ".prev") if os.path.exists(p)]
 
 
 def remove(path):
-    """Delete the checkpoint ``path``, its ``.prev`` and a left-over ``.tmp``."""
+    """Delete the checkpoint ``path``, its ``.prev`` and a left-over ``.tmp``.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file (``STEM.ckpt``); those of the three that do not
+        exist are skipped.
+
+    Returns
+    -------
+    None
+    """
     for p in (path, path + ".prev", path + ".tmp"):
         if os.path.exists(p):
             os.remove(p)
 
 
 def pack_arrays(prefix, arrays):
-    """{prefix + '/' + name: array} (a group of arrays inside a checkpoint)."""
+    """{prefix + '/' + name: array} (a group of arrays inside a checkpoint).
+
+    Parameters
+    ----------
+    prefix : str
+        The group's name.
+    arrays : dict
+        name (str) -> array (any value; it is not copied).
+
+    Returns
+    -------
+    dict
+        ``prefix/name`` (str) -> the same array, for the ``arrays`` of
+        :func:`encode` or :func:`save`.
+    """
     return {f"{prefix}/{k}": v for k, v in arrays.items()}
 
 
 def unpack_arrays(prefix, arrays):
-    """The group ``prefix`` of :func:`pack_arrays`, names without the prefix."""
+    """The group ``prefix`` of :func:`pack_arrays`, names without the prefix.
+
+    Parameters
+    ----------
+    prefix : str
+        The group's name.
+    arrays : dict
+        name (str) -> array, e.g. the arrays of :func:`read`.
+
+    Returns
+    -------
+    dict
+        name (str, ``prefix/`` removed) -> array, for every name that
+        starts with ``prefix/``; {} when there is none.
+    """
     n = len(prefix) + 1
     return {k[n:]: v for k, v in arrays.items() if k.startswith(prefix + "/")}
 
 
 def ragged(rows, dtype):
     """(concatenated rows, offsets (len + 1,)) of a list of arrays (e.g. the
-    vertices of every shape)."""
+    vertices of every shape).
+
+    Parameters
+    ----------
+    rows : sequence of array-like
+        K arrays of shapes (n_k, ...), the same trailing shape each.
+    dtype : numpy dtype or type
+        The dtype each row is converted to.
+
+    Returns
+    -------
+    flat : numpy.ndarray
+        The rows concatenated along axis 0, shape (sum n_k, ...); shape
+        (0,) of ``dtype`` when ``rows`` is empty.
+    off : numpy.ndarray
+        int64, shape (K + 1,): row k is ``flat[off[k]:off[k + 1]]``;
+        ``off[0] == 0``.
+    """
     rows = [np.asarray(r, dtype) for r in rows]
     off = np.concatenate([[0], np.cumsum([len(r) for r in rows])]).astype(np.int64)
     flat = np.concatenate(rows) if rows else np.zeros((0,), dtype)
@@ -212,7 +418,20 @@ def ragged(rows, dtype):
 
 
 def unragged(flat, off):
-    """The list of arrays of :func:`ragged`."""
+    """The list of arrays of :func:`ragged`.
+
+    Parameters
+    ----------
+    flat : numpy.ndarray
+        The concatenated rows, shape (N, ...).
+    off : numpy.ndarray
+        Integer offsets, shape (K + 1,).
+
+    Returns
+    -------
+    list of numpy.ndarray
+        K arrays, ``flat[off[k]:off[k + 1]]`` (views of ``flat``).
+    """
     return [flat[off[k]:off[k + 1]] for k in range(len(off) - 1)]
 
 
@@ -225,7 +444,33 @@ def choose(path, expected_fingerprint, accept, say=print):
     other parameters (``expected_fingerprint``, see :func:`fingerprint`), or
     when ``accept(meta)`` raises ValueError (e.g. the dump lacks a snapshot
     the checkpoint counts). ``accept`` is the caller's own check and
-    preparation (reopening the dump); its result is returned."""
+    preparation (reopening the dump); its result is returned.
+
+    Parameters
+    ----------
+    path : str
+        The checkpoint file (``STEM.ckpt``).
+    expected_fingerprint : str
+        :func:`fingerprint` of this run's parameters; a checkpoint whose
+        ``meta["fingerprint"]`` differs is skipped.
+    accept : callable
+        ``accept(meta)``: the caller's check of a candidate's metadata (a
+        dict); raising ValueError (CheckpointError and DumpFormatError
+        among them), KeyError or TypeError skips the candidate.
+    say : callable
+        Takes each one-line message of a skipped candidate (``checkpoint
+        not used: ...; trying the previous one`` or ``...; starting
+        afresh``).
+
+    Returns
+    -------
+    tuple or None
+        ``(file, meta, arrays, blobs, value)`` of the first usable
+        candidate: its path (str), metadata (dict), arrays (dict of name
+        -> numpy.ndarray), blobs (dict of name -> bytes) and
+        ``accept(meta)``'s result; None when no candidate exists or none is
+        usable.
+    """
     found = candidates(path)
     for k, p in enumerate(found):
         try:

@@ -104,7 +104,21 @@ def yade_env(folder=None):
     libgomp reads the variable when it loads, so it must be set here. And
     YADE_PREFIX on the kernel plugin's build for the run folder ``folder``
     where there is one (:func:`yade_scripts.yadeplugin.environment`): YADE
-    loads its plugins when it starts, so that too must be set here."""
+    loads its plugins when it starts, so that too must be set here.
+
+    Parameters
+    ----------
+    folder : str, optional
+        The generated run folder whose own build of the kernel plugin YADE
+        is to load (None: this package's build).
+
+    Returns
+    -------
+    dict
+        A copy of ``os.environ`` (str -> str), with ``YADE_PREFIX`` when
+        there is a ready build, and ``OMP_WAIT_POLICY=PASSIVE`` unless the
+        environment sets it already.
+    """
     env = yadeplugin.environment(run_folder=folder)
     env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
     return env
@@ -190,7 +204,19 @@ class Job:
 
 
 def order(jobs):
-    """The jobs in the order they start: largest ``cost`` first (stable)."""
+    """The jobs in the order they start: largest ``cost`` first (stable).
+
+    Parameters
+    ----------
+    jobs : iterable of Job
+        The jobs.
+
+    Returns
+    -------
+    list of Job
+        A new list, by decreasing ``cost`` (core-seconds); jobs of equal
+        cost keep their order.
+    """
     return sorted(jobs, key=lambda j: -j.cost)
 
 
@@ -204,7 +230,32 @@ def widen_choice(free, waiting, running, now, time_left):
     a widenable job that has run WIDEN_AFTER_SECONDS and is not known to
     end within WIDEN_MIN_SECONDS; among those, the one with the most time
     left (unknown counts as most), then the fewest threads. Returns
-    (job, new thread count)."""
+    (job, new thread count).
+
+    Parameters
+    ----------
+    free : int
+        Idle cores.
+    waiting : int
+        Jobs (and work after runs) not started yet.
+    running : list of tuple
+        ``(job, threads, started)`` of each running job that may be
+        stopped: the :class:`Job`, its YADE threads (int) and when it
+        started (float, seconds since the epoch, as ``time.time()``).
+    now : float
+        The time now, seconds since the epoch.
+    time_left : dict
+        description (str) -> seconds left (float) by the job's progress
+        record, or None when unknown (:func:`time_left`); a job missing
+        from it counts as unknown.
+
+    Returns
+    -------
+    tuple or None
+        ``(job, threads)``: the :class:`Job` to stop and resume, and its
+        new thread count (its threads + ``free``); None when ``free < 1``,
+        a job waits, or no running job qualifies.
+    """
     if free < 1 or waiting > 0:
         return None
     best = None
@@ -221,7 +272,20 @@ def widen_choice(free, waiting, running, now, time_left):
 def time_left(dump):
     """Seconds left that the newest progress record of the run writing
     ``dump`` gives (``seconds_left`` of STEM.progress.json), or None (no
-    record yet, none in compaction, or a scene that writes none)."""
+    record yet, none in compaction, or a scene that writes none).
+
+    Parameters
+    ----------
+    dump : str
+        The run's dump (``STEM.h5``).
+
+    Returns
+    -------
+    float or None
+        Seconds of wall time left; None when the record cannot be read,
+        is not a JSON object, or its ``seconds_left`` is missing or not a
+        number.
+    """
     try:
         with open(RunFiles(dump).progress) as fh:
             left = json.load(fh).get("seconds_left")
@@ -234,7 +298,22 @@ def idle_core_seconds(attempts, cores):
     """Idle core-time of a schedule (s): cores x (last end - first start)
     minus the sum of threads x duration over ``attempts`` (dicts with
     "start", "end" in s and "threads"). 0 for no attempts. Threads beyond
-    the cores (an overloaded machine) make it negative."""
+    the cores (an overloaded machine) make it negative.
+
+    Parameters
+    ----------
+    attempts : list of dict
+        One per attempt (as :func:`run_pool`'s record holds them): "start"
+        and "end" (float, seconds from any common origin) and "threads"
+        (int, cores it held); other keys are ignored.
+    cores : int
+        The cores of the schedule.
+
+    Returns
+    -------
+    float
+        Idle core-seconds (0.0 for no attempts).
+    """
     if not attempts:
         return 0.0
     span = max(a["end"] for a in attempts) - min(a["start"] for a in attempts)
@@ -243,7 +322,25 @@ def idle_core_seconds(attempts, cores):
 
 def summary(attempts, cores):
     """{"cores", "makespan_s", "busy_core_s", "idle_core_s", "idle_share"}
-    of a schedule's attempts."""
+    of a schedule's attempts.
+
+    Parameters
+    ----------
+    attempts : list of dict
+        As :func:`idle_core_seconds` takes them ("start", "end" in s,
+        "threads").
+    cores : int
+        The cores of the schedule.
+
+    Returns
+    -------
+    dict
+        "cores" (int, as given), "makespan_s" (last end - first start, s),
+        "busy_core_s" (sum of threads x duration, core-seconds),
+        "idle_core_s" (:func:`idle_core_seconds`, core-seconds) and
+        "idle_share" (idle over cores x makespan, a fraction; 0.0 for a
+        zero makespan); every number 0.0 for no attempts.
+    """
     if not attempts:
         return {"cores": cores, "makespan_s": 0.0, "busy_core_s": 0.0, "idle_core_s": 0.0, "idle_share": 0.0}
     span = max(a["end"] for a in attempts) - min(a["start"] for a in attempts)
@@ -452,7 +549,30 @@ def hold_runs(jobs, what="launcher"):
     or none: returns {description: RunLock}; raises
     :class:`~yade_scripts.runlock.RunBusy` (one line naming the holder) when
     another process holds one, having released those it took and touched
-    nothing. A stale lock (its holder died) is taken over and said so."""
+    nothing. A stale lock (its holder died) is taken over, and the lock's
+    ``took_over`` says so (:func:`run_pool` reports it).
+
+    Parameters
+    ----------
+    jobs : iterable of Job
+        The runs; each lock is ``lock_path(job.dump)``.
+    what : str
+        What holds the locks, as their records name it (e.g. "launcher",
+        "run pool", "task").
+
+    Returns
+    -------
+    dict
+        description (str) -> the held :class:`~yade_scripts.runlock.RunLock`
+        (its ``took_over`` is the stale holder's record, or None); give
+        them back with :func:`release_runs`.
+
+    Raises
+    ------
+    yade_scripts.runlock.RunBusy
+        Another live process holds one of the locks (one line naming it);
+        the locks taken before it are released.
+    """
     locks = {}
     try:
         for job in jobs:

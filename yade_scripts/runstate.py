@@ -51,6 +51,11 @@ class RunFiles:
     ----------
     dump : str
         The dump, ``STEM.h5``.
+    stem, parts, checkpoint, log_csv, info, progress, attempts : str
+        Properties, the paths of its companions: ``STEM``,
+        ``STEM.h5.parts``, ``STEM.ckpt``, ``STEM.log.csv``,
+        ``STEM.info.json``, ``STEM.progress.json`` and
+        ``STEM.attempts.json``.
 
     Examples
     --------
@@ -265,6 +270,9 @@ def judge(code, dump, resumes=0, requested=False, max_resumes=MAX_RESUMES):
     Returns
     -------
     Verdict
+        Its ``action`` ("done", "resume" or "failed") and one-line
+        ``reason`` (the exit code, and the checkpoint's step where it
+        resumes).
 
     Examples
     --------
@@ -549,6 +557,8 @@ class RunState:
         The checkpoint's step (resumable, and running when it has one).
     holder : dict or None
         The lock record of the process that runs it (running).
+    finished : bool
+        Property: True for a complete run.
     """
     state: str
     detail: str
@@ -579,6 +589,8 @@ def state_of(dump):
     Returns
     -------
     RunState
+        Its ``state``, one-line ``detail``, ``step`` (resumable, or
+        running with a checkpoint) and ``holder`` (running).
 
     Examples
     --------

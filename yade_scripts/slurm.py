@@ -123,7 +123,27 @@ REFERENCE_SHEAR_RATE = {"polyhedra": 3.276 * 1.1100 / 3.953, "spheres": 1.0}
 
 def shear_step_factor(sample, n):
     """The shear's steps of N grains against the reference run's: E[1/dt]
-    of N grains (:data:`SHEAR_RATE_DRAWS`) over the reference's 1/dt."""
+    of N grains (:data:`SHEAR_RATE_DRAWS`) over the reference's 1/dt.
+
+    Parameters
+    ----------
+    sample : {"polyhedra", "spheres"}
+        The sample.
+    n : int
+        Grains.
+
+    Returns
+    -------
+    float
+        The factor on :data:`SHEAR_STEPS`: the table's value at ``n``
+        (linear in log N between its points, constant outside them) over
+        :data:`REFERENCE_SHEAR_RATE`.
+
+    Raises
+    ------
+    KeyError
+        ``sample`` is neither.
+    """
     table = SHEAR_RATE_DRAWS[sample]
     if n <= table[0][0] or len(table) == 1:
         g = table[0][1]
@@ -182,6 +202,11 @@ def estimate(params, kernel_path="plugin"):
     dict
         compaction_steps, shear_steps, steps, contacts, contact_steps,
         us_per_contact_step (µs on one quiet core), core_hours.
+
+    Raises
+    ------
+    ValueError
+        ``kernel_path`` is neither "plugin" nor "pyrunner".
 
     Examples
     --------
@@ -616,7 +641,23 @@ def queue_states(folder):
 def queue_detail(job, state, reason):
     """The words ``--collect`` says of a task in SLURM's queue
     (:func:`queue_states`): "running: ..." for a state on a node, else
-    "pending: ..." with the reason."""
+    "pending: ..." with the reason.
+
+    Parameters
+    ----------
+    job : str
+        The task's job id as squeue gives it (``ARRAYJOB_TASK``).
+    state : str
+        Its squeue state (e.g. "RUNNING", "PENDING").
+    reason : str
+        squeue's reason; "None", "(null)" or "" are left out.
+
+    Returns
+    -------
+    str
+        ``running: SLURM job JOB, STATE`` for a state in :data:`ON_A_NODE`,
+        else ``pending: SLURM job JOB, STATE[, REASON]``.
+    """
     if state in ON_A_NODE:
         return f"running: SLURM job {job}, {state}"
     why = f", {reason}" if reason and reason not in ("None", "(null)") else ""
@@ -624,7 +665,23 @@ def queue_detail(job, state, reason):
 
 
 def add_options(ap, prefix="--slurm-"):
-    """The options of a SLURM array on ``ap`` (argparse), named ``prefix`` + cpus, time, ..."""
+    """The options of a SLURM array on ``ap`` (argparse), named ``prefix`` + cpus, time, ...
+
+    Parameters
+    ----------
+    ap : argparse.ArgumentParser
+        The parser the options are added to.
+    prefix : str
+        Their names' start: ``--slurm-`` (``generate``) or ``--`` (this
+        module's command line). The options: cpus (int, default 2), time
+        (a SLURM time, default 24:00:00), partition (default None),
+        requeues (int, default None: :data:`yade_scripts.task.DEFAULT_REQUEUES`)
+        and signal (int, s, default :data:`DEFAULT_SIGNAL_SECONDS`).
+
+    Returns
+    -------
+    None
+    """
     ap.add_argument(prefix + "cpus", type=int, default=2, help="cores per array task (default 2)")
     ap.add_argument(prefix + "time", default="24:00:00", help="time limit of one job (default 24:00:00)")
     ap.add_argument(prefix + "partition", help="SLURM partition (default: the cluster's)")
@@ -635,7 +692,27 @@ def add_options(ap, prefix="--slurm-"):
 
 
 def options_of(args, prefix="slurm_"):
-    """The keyword arguments of :func:`write_slurm` from parsed :func:`add_options`."""
+    """The keyword arguments of :func:`write_slurm` from parsed :func:`add_options`.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed command line.
+    prefix : str
+        The options' destination names' start: ``slurm_`` for
+        ``add_options(ap, "--slurm-")``, "" for ``add_options(ap, "--")``.
+
+    Returns
+    -------
+    dict
+        "cpus", "time", "partition", "requeues" and "signal_seconds", as
+        :func:`write_slurm` (and :func:`check_options`) take them.
+
+    Raises
+    ------
+    KeyError
+        ``args`` lacks one of the options (another ``prefix``).
+    """
     g = vars(args)
     return {"cpus": g[prefix + "cpus"], "time": g[prefix + "time"], "partition": g[prefix + "partition"],
             "requeues": g[prefix + "requeues"], "signal_seconds": g[prefix + "signal"]}

@@ -71,7 +71,19 @@ DEFAULT_REQUEUES = 10
 def say(message, err=False):
     """Print one line of the task, ``task: <message>``, at once (flushed):
     on stdout, or on stderr with ``err``; SLURM appends both to the task's
-    ``slurm-<job>_<task>.out``."""
+    ``slurm-<job>_<task>.out``.
+
+    Parameters
+    ----------
+    message : str
+        One line, without the ``task: `` prefix.
+    err : bool
+        True: on stderr (a failure), else on stdout.
+
+    Returns
+    -------
+    None
+    """
     print(f"task: {message}", file=sys.stderr if err else sys.stdout, flush=True)
 
 
@@ -79,7 +91,18 @@ def slurm_job():
     """The id of this job as scontrol takes it (``ARRAYJOB_TASK`` for an
     array task: its plain SLURM_JOB_ID may be the array's own id, which
     names every task) and how many times it was requeued; (None, 0)
-    outside SLURM."""
+    outside SLURM.
+
+    Returns
+    -------
+    job : str or None
+        ``ARRAYJOB_TASK`` (``SLURM_ARRAY_JOB_ID`` and
+        ``SLURM_ARRAY_TASK_ID`` joined by ``_``) for an array task, else
+        ``SLURM_JOB_ID``; None when ``SLURM_JOB_ID`` is unset or empty.
+    restarts : int
+        ``$SLURM_RESTART_COUNT`` (0 when unset or empty): how many times
+        SLURM started the job again.
+    """
     job = os.environ.get("SLURM_JOB_ID")
     if not job:
         return None, 0
@@ -88,7 +111,19 @@ def slurm_job():
 
 
 def scontrol(*args):
-    """Run scontrol; None when it worked, else its one-line complaint."""
+    """Run scontrol; None when it worked, else its one-line complaint.
+
+    Parameters
+    ----------
+    *args : str
+        scontrol's arguments, e.g. ``"requeue", "123_4"``.
+
+    Returns
+    -------
+    str or None
+        None when it exited 0; else the first line of its stderr (or of
+        its stdout, or ``exit N``), or "scontrol is not on the PATH".
+    """
     exe = shutil.which("scontrol")
     if exe is None:
         return "scontrol is not on the PATH"
@@ -102,7 +137,25 @@ def finish(code, state, job_id):
     """Leave the task's final state as the job's comment, then say it as
     the task's last line, ``task: FINAL <state>`` (one per job); returns
     ``code``. A job that ``scancel`` cancelled is finished for SLURM
-    before its task ends, and takes no comment: said on the line before."""
+    before its task ends, and takes no comment: said on the line before.
+
+    Parameters
+    ----------
+    code : int
+        The task's exit code (:mod:`yade_scripts.runstate`'s EXIT_*); the
+        final line goes to stderr unless it is 0 or 75.
+    state : str
+        The final state and reason, one line (the comment keeps its first
+        250 characters).
+    job_id : str or None
+        The job as scontrol takes it (:func:`slurm_job`); None: outside
+        SLURM, no comment.
+
+    Returns
+    -------
+    int
+        ``code``.
+    """
     if job_id:
         why = scontrol("update", f"JobId={job_id}", f"Comment={state[:250]}")
         if why:
@@ -112,13 +165,51 @@ def finish(code, state, job_id):
 
 
 def line_folder(folder, line):
-    """The folder of a table line's run: ``FOLDER/<description>``."""
+    """The folder of a table line's run: ``FOLDER/<description>``.
+
+    Parameters
+    ----------
+    folder : str
+        The generated run folder.
+    line : yade_scripts.batch.TableLine
+        The table line.
+
+    Returns
+    -------
+    str
+        ``folder`` joined with the line's description (the folder may not
+        exist yet).
+    """
     return os.path.join(folder, line.description)
 
 
 def link_inputs(folder, own, line):
     """Make the line's folder with relative links to what its run reads:
-    the scene, ``pkg/`` and, for polyhedra, the line's shape library."""
+    the scene, ``pkg/`` and, for polyhedra, the line's shape library.
+
+    The sample and the library are the line's columns, else those of the
+    folder's ``params.json``. A link (or file) already there is kept.
+
+    Parameters
+    ----------
+    folder : str
+        The generated run folder (``params.json``, ``triaxial.py``,
+        ``pkg/``).
+    own : str
+        The line's folder (:func:`line_folder`), made when missing.
+    line : yade_scripts.batch.TableLine
+        The table line.
+
+    Returns
+    -------
+    None
+
+    Raises
+    ------
+    OSError
+        ``params.json`` cannot be read, or the folder or a link cannot be
+        made.
+    """
     import json
 
     with open(os.path.join(folder, "params.json")) as fh:
