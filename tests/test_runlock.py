@@ -148,6 +148,17 @@ def test_a_launcher_takes_every_run_or_none(tmp_path):
         lock.release()
 
 
+def test_a_launcher_that_cannot_make_a_lock_file_gives_back_those_it_took(tmp_path):
+    from yade_scripts.pool import ConfigError
+
+    jobs = [Job(str(tmp_path), 1, "seed1", str(tmp_path / "seed1.h5")),
+            Job(str(tmp_path), 2, "seed2", str(tmp_path / "gone" / "seed2.h5"))]     # its folder does not exist
+    with pytest.raises(ConfigError, match=r"gone/seed2\.lock: cannot take the run's lock \(No such file"):
+        hold_runs(jobs)
+    assert not runlock.holds(lock_path(jobs[0].dump)) and holder(lock_path(jobs[0].dump)) is None
+    assert not (tmp_path / "gone").exists()
+
+
 def test_state_of_a_run_another_process_holds_is_running(tmp_path):
     dump = str(tmp_path / "run.h5")
     assert state_of(dump).state == "not started"

@@ -572,13 +572,22 @@ def hold_runs(jobs, what="launcher"):
     yade_scripts.runlock.RunBusy
         Another live process holds one of the locks (one line naming it);
         the locks taken before it are released.
+    ConfigError
+        A lock file cannot be made or opened (e.g. the run's folder is
+        missing; one line naming the file); the locks taken before it are
+        released, as after any other exception.
     """
     locks = {}
     try:
         for job in jobs:
-            lock = RunLock(lock_path(job.dump), what).acquire()
+            path = lock_path(job.dump)
+            try:
+                lock = RunLock(path, what).acquire()
+            except OSError as exc:
+                raise ConfigError(f"{path}: cannot take the run's lock ({exc.strerror or exc}); "
+                                  f"nothing was touched") from None
             locks[job.description] = lock
-    except RunBusy:
+    except BaseException:
         release_runs(locks)
         raise
     return locks

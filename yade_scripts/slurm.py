@@ -240,7 +240,7 @@ def estimate(params, kernel_path="plugin"):
             "contact_steps": cs, "us_per_contact_step": us, "core_hours": cs * us / 3.6e9}
 
 
-#: seconds before the time limit that SLURM sends SIGTERM (``--signal``): YADE
+#: seconds before the time limit that SLURM sends SIGUSR1 to the batch shell (``--signal=B:USR1@S``): YADE
 #: stops at the end of its step and writes a checkpoint (0.1 MB in 0.02 s for
 #: 20 grains; SLURM's own resolution is up to a minute)
 DEFAULT_SIGNAL_SECONDS = 300
