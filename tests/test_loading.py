@@ -229,7 +229,8 @@ def test_progress_lines_and_the_run_history(tmp_path):
     said = []
     r = new_attempt(str(tmp_path / "run.h5"), {"seed": 1}, True, said)
     # what the checkpoint says the earlier attempts took, and the scene's state put back
-    meta = {"wall_seconds": 7.0, "engine_seconds": {"newton": 2.0}, "resumes": [{"step": 1}], "why": "SIGTERM",
+    meta = {"wall_seconds": 7.0, "engine_seconds": {"newton": 2.0, "gone": 3.0}, "resumes": [{"step": 1}],
+            "why": "SIGTERM",
             "x": 1, "step": 41}
     restored = []
     r.resumed = attempt.Resumed(str(tmp_path / "run.ckpt"), meta, {"a": np.zeros(2)}, b"scene", None)
@@ -237,7 +238,13 @@ def test_progress_lines_and_the_run_history(tmp_path):
     r.restore(lambda state, arrays: restored.append((state, sorted(arrays))), lambda: ("shear", 0.1))
     assert restored == [(meta, ["a"])] and "resumed from run.ckpt at step 41 (shear" in said[-1]
     h = r.history()
-    assert h["engine_seconds"] == {"newton": 2.5, "kernel": 1.0}
+    assert h["engine_seconds"] == {"newton": 2.5, "kernel": 1.0, "gone": 3.0}     # an engine of earlier attempts only
+    r.O.engines = [FakeEngine("", 0.25e9), FakeEngine("", 0.5e9)]                  # two unlabelled of one class: summed
+    assert r.engine_seconds() == {"newton": 2.0, "gone": 3.0, "FakeEngine": 0.75}
+    r.timing = False                                                                # an attempt without timing
+    assert r.engine_seconds() == {"newton": 2.0, "gone": 3.0}
+    r.O.engines = FakeO.engines
+    r.timing = True
     assert h["resumes"][0] == {"step": 1} and h["resumes"][1]["step"] == 41
     assert h["resumes"][1]["written_because"] == "SIGTERM" and h["wall_seconds"] >= 7.0
     r.writer.close(pack=False, complete=False)

@@ -377,11 +377,16 @@ class Attempt:
         -------
         dict
             engine (str: its label, else its class name) -> seconds
-            (float) of this attempt's engines, each plus the earlier
-            attempts' seconds under the same name.
+            (float): this attempt's engines (two under one name summed)
+            plus the earlier attempts' seconds under the same name; a name
+            of the earlier attempts only keeps its seconds, and an attempt
+            without timing adds none.
         """
-        now = {(e.label or e.__class__.__name__): e.execTime * 1e-9 for e in self.O.engines} if self.timing else {}
-        return {k: self.earlier_engine_seconds.get(k, 0.0) + v for k, v in now.items()}
+        out = dict(self.earlier_engine_seconds)
+        for e in (self.O.engines if self.timing else ()):
+            name = e.label or e.__class__.__name__
+            out[name] = out.get(name, 0.0) + e.execTime * 1e-9
+        return out
 
     def history(self):
         """{wall_seconds, engine_seconds, resumes} of the run so far.
