@@ -577,16 +577,14 @@ def hold_runs(jobs, what="launcher"):
         missing; one line naming the file); the locks taken before it are
         released, as after any other exception.
     """
-    locks = {}
+    locks, path = {}, None
     try:
         for job in jobs:
             path = lock_path(job.dump)
-            try:
-                lock = RunLock(path, what).acquire()
-            except OSError as exc:
-                raise ConfigError(f"{path}: cannot take the run's lock ({exc.strerror or exc}); "
-                                  f"nothing was touched") from None
-            locks[job.description] = lock
+            locks[job.description] = RunLock(path, what).acquire()
+    except OSError as exc:
+        release_runs(locks)
+        raise ConfigError(f"{path}: cannot take the run's lock ({exc.strerror or exc}); nothing was touched") from None
     except BaseException:
         release_runs(locks)
         raise
