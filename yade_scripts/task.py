@@ -76,7 +76,7 @@ def say(message, err=False):
     Parameters
     ----------
     message : str
-        One line, without the ``task: `` prefix.
+        One line, without the ``task:`` prefix.
     err : bool
         True: on stderr (a failure), else on stdout.
 
