@@ -87,7 +87,16 @@ def test_a_checkpoint_lacking_a_field_is_refused_not_a_traceback(tmp_path):
     checkpoint.save(path, {"fingerprint": "f", "step": 1})
     said = []
     assert checkpoint.choose(path, "f", lambda m: m["n_snapshots"], say=said.append) is None
-    assert said == [f"checkpoint not used: {path}: field 'n_snapshots' missing or malformed; starting afresh"]
+    assert said == [f"checkpoint not used: {path}: field 'n_snapshots' missing; starting afresh"]
+
+
+def test_a_checkpoint_with_a_field_of_the_wrong_type_is_refused_not_a_traceback(tmp_path):
+    path = str(tmp_path / "run.ckpt")
+    checkpoint.save(path, {"fingerprint": "f", "step": 1, "n_snapshots": None})
+    said = []
+    assert checkpoint.choose(path, "f", lambda m: m["n_snapshots"] + 1, say=said.append) is None
+    assert len(said) == 1 and said[0].startswith(f"checkpoint not used: {path}: a field of the wrong type (")
+    assert said[0].endswith("); starting afresh") and "\n" not in said[0]
 
 
 def test_fingerprint_ignores_runtime_parameters_only():

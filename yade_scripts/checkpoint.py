@@ -481,8 +481,10 @@ def choose(path, expected_fingerprint, accept, say=print):
         except (ValueError, KeyError, TypeError) as exc:    # CheckpointError, DumpFormatError, a field missing
             rest = "trying the previous one" if k + 1 < len(found) else "starting afresh"
             why = str(exc).splitlines()[0] if str(exc) else exc.__class__.__name__
-            if isinstance(exc, (KeyError, TypeError)):
-                why = f"{p}: field {why} missing or malformed"
+            if isinstance(exc, KeyError):
+                why = f"{p}: field {why} missing"
+            elif isinstance(exc, TypeError):
+                why = f"{p}: a field of the wrong type ({why})"
             say(f"checkpoint not used: {why}; {rest}")
             continue
         return p, meta, arrays, blobs, value

@@ -685,8 +685,9 @@ def add_options(ap, prefix="--slurm-"):
     ap.add_argument(prefix + "cpus", type=int, default=2, help="cores per array task (default 2)")
     ap.add_argument(prefix + "time", default="24:00:00", help="time limit of one job (default 24:00:00)")
     ap.add_argument(prefix + "partition", help="SLURM partition (default: the cluster's)")
+    from .task import DEFAULT_REQUEUES
     ap.add_argument(prefix + "requeues", type=int, default=None,
-                    help="requeues of a task at most, each after a time limit (default 10)")
+                    help=f"requeues of a task at most, each after a time limit (default {DEFAULT_REQUEUES})")
     ap.add_argument(prefix + "signal", type=int, default=DEFAULT_SIGNAL_SECONDS,
                     help=f"SIGUSR1 this many seconds before the time limit (default {DEFAULT_SIGNAL_SECONDS})")
 
