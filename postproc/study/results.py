@@ -29,7 +29,8 @@ import shutil
 
 import pandas as pd
 
-from ..errors import InputError
+from ..errors import InputError, read_json_object
+from .manifest import read_manifest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 #: where the default study's results are committed
@@ -94,11 +95,7 @@ def _study_facts(study):
     path = os.path.join(study, "manifest.json")
     if not os.path.exists(path):
         return {}
-    try:
-        with open(path) as fh:
-            manifest = json.load(fh)
-    except (OSError, ValueError) as exc:
-        raise InputError(f"{path}: not readable JSON ({exc.__class__.__name__})") from None
+    manifest = read_manifest(path)
     facts = {"seeds": {}, "runs": {}}
     for sample, runs in manifest.items():
         status = {}
@@ -107,8 +104,7 @@ def _study_facts(study):
             status[key] = status.get(key, 0) + 1
             pj = os.path.join(study, os.path.dirname(r.get("dump") or ""), "params.json")
             if "preset" not in facts and os.path.exists(pj):
-                with open(pj) as fh:
-                    facts["preset"] = json.load(fh).get("preset")
+                facts["preset"] = read_json_object(pj, "run parameters file").get("preset")
         facts["seeds"][sample] = status.get("ok", 0) + status.get("partial", 0)
         facts["runs"][sample] = status
     return facts
@@ -173,8 +169,7 @@ def load_results(path=RESULTS):
     """The committed results (a dict), or None when there is no file."""
     if not os.path.exists(path):
         return None
-    with open(path) as fh:
-        return json.load(fh)
+    return read_json_object(path, "results file")
 
 
 def _num(x, digits=2):
