@@ -189,7 +189,11 @@ def main(argv=None):
         if not os.path.isdir(args.study):
             print(f"postproc: error: {args.study}: no such study folder", file=sys.stderr)
             return 2
-        path = build_report(args.study, args.out, figures=not args.no_figures)
+        try:
+            path = build_report(args.study, args.out, figures=not args.no_figures)
+        except InputError as exc:
+            print(f"postproc: error: {exc}", file=sys.stderr)
+            return 2
         print(f"postproc: report written to {path} (and report.html)", file=sys.stderr)
         return 0
     if args.cmd == "compare-results":

@@ -30,7 +30,9 @@ agree modulo the cell).
 """
 from __future__ import annotations
 
+import csv
 import os
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -44,22 +46,196 @@ REQUIRED = ("id1", "id2", "x1", "y1", "z1", "x2", "y2", "z2",
 BRANCH = ("lx", "ly", "lz")
 
 
-def _read_frame(path):
+#: cell texts read as a missing value (pandas' default ``na_values``)
+NA_TEXT = frozenset({"", "#N/A", "#N/A N/A", "#NA", "-1.#IND", "-1.#QNAN", "-NaN", "-nan",
+                     "1.#IND", "1.#QNAN", "<NA>", "N/A", "NA", "NULL", "NaN", "None",
+                     "n/a", "nan", "null"})
+#: columns whose cells must be whole numbers
+WHOLE = ("id1", "id2", "step")
 
-    ext = os.path.splitext(path)[1].lower()
+
+def _records_by_line(path):
+    """The records of the CSV file ``path`` and the line each starts on;
+    a record the csv module refuses (a quote left open, a field over its
+    limit) is named by that line."""
+    records, starts, start = [], [], 1
     try:
-        if ext in (".parquet", ".pq"):
+        with open(path, newline="", encoding="utf-8") as fh:
+            reader = csv.reader(fh, strict=True)
+            while True:
+                start = reader.line_num + 1
+                row = next(reader, None)
+                if row is None:
+                    return records, starts
+                records.append(row)
+                starts.append(start)
+    except UnicodeDecodeError as exc:
+        raise InputError(f"{path}: not a text table (byte {exc.start} is not UTF-8)") from None
+    except csv.Error as exc:
+        raise InputError(f"{path}: line {start}: not a readable CSV table ({exc})") from None
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read the contact table: {exc.strerror or exc}") from None
+
+
+def _read_csv(path):
+    """The columns of a CSV table (name -> tuple of cell texts) and each
+    row's line number, (R,) int64, read strictly by the csv module: a quote
+    left open, a row of another width than the header and a field over the
+    csv module's limit are refused by line.
+
+    Two layouts pandas reads are kept: a trailing delimiter (an empty last
+    field) is read as nothing, and when every row has one field more than
+    the header and their first fields are unique (row names, as R's
+    ``write.table`` writes), the first field is the row's name and dropped.
+    """
+    records, starts = _records_by_line(path)
+    keep = [k for k, r in enumerate(records) if r and (len(r) > 1 or r[0].strip())]  # no blank lines
+    if not keep:
+        raise InputError(f"{path}: an empty table (no header)")
+    header = [c.strip() for c in records[keep[0]]]
+    if len(header) > 1 and header[-1] == "":
+        header.pop()
+    rows = [records[k] for k in keep[1:]]
+    lines = np.asarray(starts, np.int64)[keep[1:]]
+    n = len(header)
+    dup = sorted({c for c in header if header.count(c) > 1})
+    if dup:
+        raise InputError(f"{path}: columns named twice in the header: {', '.join(dup)}")
+    width = np.fromiter(map(len, rows), np.int64, len(rows))
+    if (width == n + 1).any():
+        trailing = [k for k in np.flatnonzero(width == n + 1) if not rows[k][-1].strip()]
+        if len(trailing) < len(rows) and (width == n + 1).all() and len({r[0] for r in rows}) == len(rows):
+            rows = [r[1:] for r in rows]         # row names
+        else:
+            for k in trailing:
+                rows[k] = rows[k][:-1]
+        width = np.fromiter(map(len, rows), np.int64, len(rows))
+    if (width != n).any():
+        k = int(np.flatnonzero(width != n)[0])
+        raise InputError(f"{path}: line {lines[k]} has {width[k]} fields where the header has {n}")
+    cols = list(zip(*rows)) if rows else [()] * n
+    return dict(zip(header, cols)), lines
+
+
+def _read_csv_fast(path):
+    """The columns of a plain CSV table (name -> float Series, by pandas'
+    C parser) and each row's line, or None when the table is not plain:
+    quotes, carriage returns alone, a header with an empty or repeated
+    name, a row of another width than the header, a cell pandas cannot
+    read as a number. The strict reader (:func:`_read_csv`) then reads it
+    and names what is wrong."""
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read()
+        if b'"' in data or b"\r" in data.replace(b"\r\n", b""):
+            return None
+        text = data.decode("utf-8")
+    except (OSError, UnicodeDecodeError):
+        return None
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    full = np.flatnonzero([bool(x.strip()) for x in lines])
+    if len(full) < 1:
+        return None
+    names = [c.strip() for c in lines[full[0]].split(",")]
+    n = len(names)
+    if "" in names or len(set(names)) < n:
+        return None
+    rows = full[1:]
+    if any(lines[k].count(",") != n - 1 for k in rows):
+        return None
+    want = [c for c in REQUIRED + BRANCH + ("step",) if c in names]
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            df = pd.read_csv(path, usecols=want, dtype={c: "float64" for c in want},
+                             skipinitialspace=True, encoding="utf-8")
+    except (ValueError, OSError, Warning):
+        return None
+    if len(df) != len(rows):
+        return None
+    return {c: df[c] for c in want}, rows + 1
+
+
+def _numbers(path, columns, lines):
+    """The columns the table reads (``REQUIRED``, ``BRANCH``, ``step``) as
+    numbers, a DataFrame with the column ``_line``: each row's line in a
+    CSV file, or its row from 1 in a Parquet file. ``columns`` maps a name to a pandas Series or a tuple of
+    cell texts; ``lines``, (R,) int, each row's line in a CSV file (None:
+    rows of a Parquet file). Every cell must be a number or a missing value
+    (an empty cell, NaN, NA...: pandas' ``NA_TEXT``); ids and steps whole
+    numbers. A bad cell is refused in one line naming its line (or row) and
+    column."""
+    out = {}
+    for col in [c for c in REQUIRED + BRANCH + ("step",) if c in columns]:
+        raw = columns[col]
+        if isinstance(raw, pd.Series) and pd.api.types.is_bool_dtype(raw.dtype):
+            raise InputError(f"{path}: column {col} holds true/false values, not numbers")
+        if isinstance(raw, pd.Series) and pd.api.types.is_numeric_dtype(raw.dtype):
+            vals, text = raw.to_numpy(dtype=float, na_value=np.nan), None
+        else:
+            text = raw.to_numpy(object) if isinstance(raw, pd.Series) else raw
             try:
-                return pd.read_parquet(path)
-            except ImportError:
-                raise InputError(f"{path}: reading Parquet needs pyarrow "
-                                 "(pip install 'ballast-triaxial[parquet]')") from None
-        return pd.read_csv(path)
-    except InputError:
-        raise
-    except (OSError, ValueError) as exc:
-        first = str(exc).splitlines()[0] if str(exc) else exc.__class__.__name__
-        raise InputError(f"{path}: cannot read the contact table: {first}") from None
+                vals = np.array(text, dtype=float)
+            except (TypeError, ValueError):
+                vals = pd.to_numeric(pd.Series(text, dtype=object).str.strip(),
+                                     errors="coerce").to_numpy(dtype=float, na_value=np.nan)
+            for i in np.flatnonzero(np.isnan(vals)):
+                v = text[i]
+                if not (v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v))
+                        or str(v).strip() in NA_TEXT):
+                    raise InputError(f"{path}: {_where(lines, i)}, column {col}: {str(v)[:40]!r} "
+                                     "is not a number")
+        if col in WHOLE:
+            gap = ~np.isfinite(vals)
+            with np.errstate(invalid="ignore"):
+                bad = gap | (vals != np.round(vals)) | (np.abs(vals) > 2.0 ** 53)
+            if bad.any():
+                i = int(np.flatnonzero(bad)[0])
+                shown = vals[i] if text is None else text[i]
+                what = "missing" if gap[i] else f"{str(shown)[:40]!r}, not a whole number"
+                raise InputError(f"{path}: {_where(lines, i)}, column {col}: {what}")
+            vals = vals.astype(np.int64)
+        out[col] = vals
+    n = len(next(iter(out.values()))) if out else 0
+    out["_line"] = np.asarray(lines, np.int64) if lines is not None else np.arange(1, n + 1)
+    return pd.DataFrame(out)
+
+
+def _where(lines, i):
+    """Row ``i``'s place: its line in a CSV file, its row in a Parquet one."""
+    return f"line {int(lines[i])}" if lines is not None else f"row {i + 1}"
+
+
+def _is_parquet(path):
+    return os.path.splitext(path)[1].lower() in (".parquet", ".pq")
+
+
+def _read_frame(path):
+    """The table at ``path`` (``.parquet``/``.pq`` or CSV) with its
+    numbers read and checked (:func:`_numbers`)."""
+    if _is_parquet(path):
+        try:
+            df = pd.read_parquet(path)
+        except ImportError:
+            raise InputError(f"{path}: reading Parquet needs pyarrow "
+                             "(pip install 'ballast-triaxial[parquet]')") from None
+        except (OSError, ValueError) as exc:
+            first = str(exc).splitlines()[0] if str(exc) else exc.__class__.__name__
+            raise InputError(f"{path}: cannot read the contact table: {first}") from None
+        names = [str(c).strip() for c in df.columns]
+        dup = sorted({c for c in names if names.count(c) > 1})
+        if dup:
+            raise InputError(f"{path}: columns named twice: {', '.join(dup)}")
+        columns = {c: df.iloc[:, j].reset_index(drop=True) for j, c in enumerate(names)}
+        lines = None
+    else:
+        columns, lines = _read_csv_fast(path) or _read_csv(path)
+    missing = [c for c in REQUIRED if c not in columns]
+    if missing:
+        raise InputError(f"{path}: missing columns {', '.join(missing)}")
+    return _numbers(path, columns, lines)
 
 
 def read_contact_table(path, volume=None, box=None, cell=None):
@@ -99,20 +275,12 @@ def read_contact_table(path, volume=None, box=None, cell=None):
     if volume is None:
         raise InputError(f"{path}: a flat contact table needs the volume (--volume, --box or --cell)")
     df = _read_frame(path)
-    missing = [c for c in REQUIRED if c not in df.columns]
-    if missing:
-        raise InputError(f"{path}: missing columns {', '.join(missing)}")
     given = [c for c in BRANCH if c in df.columns]
     if given and len(given) < 3:
         raise InputError(f"{path}: branch columns {', '.join(given)} given without "
                          f"{', '.join(c for c in BRANCH if c not in given)}")
     if len(df) == 0:
         raise InputError(f"{path}: the table has no rows (no contacts)")
-    for col in ("id1", "id2"):
-        vals = df[col].to_numpy()
-        if not np.issubdtype(vals.dtype, np.integer):
-            raise InputError(f"{path}: column {col} must hold integers "
-                             "(a missing or non-integer id?)")
     if "step" in df.columns:
         steps = np.unique(df["step"].to_numpy())
         groups = [(int(s), df[df["step"].to_numpy() == s]) for s in steps]
@@ -125,6 +293,12 @@ def read_contact_table(path, volume=None, box=None, cell=None):
 def _snapshot(path, k, step, df, volume, box, cell=None):
     name = f"{k:06d}"
     where = f"{path}: snapshot {name} (step {step})"
+
+    def at(r):
+        """Row ``r`` of this snapshot: its line in a CSV file, its row in a
+        Parquet one."""
+        return f"{'row' if _is_parquet(path) else 'line'} {int(df['_line'].iloc[r])}"
+
     id1 = df["id1"].to_numpy(np.int64)
     id2 = df["id2"].to_numpy(np.int64)
     x1 = df[["x1", "y1", "z1"]].to_numpy(float)
@@ -133,12 +307,12 @@ def _snapshot(path, k, step, df, volume, box, cell=None):
     f = df[["fx", "fy", "fz"]].to_numpy(float)
     if (id1 < 0).any():
         r = int(np.flatnonzero(id1 < 0)[0])
-        raise InputError(f"{where}: row {r} has a negative id1 (walls go in id2)")
+        raise InputError(f"{where}: {at(r)} has a negative id1 (walls go in id2)")
     wall = id2 < 0
     bad = ~np.isfinite(x2[~wall]).all(axis=1)
     if bad.any():
         r = int(np.flatnonzero(~wall)[np.flatnonzero(bad)[0]])
-        raise InputError(f"{where}: row {r}: x2,y2,z2 of particle {int(id2[r])} missing or NaN")
+        raise InputError(f"{where}: {at(r)}: x2,y2,z2 of particle {int(id2[r])} missing or NaN")
     ids = np.concatenate([id1, id2[~wall]])
     pos = np.concatenate([x1, x2[~wall]])
     uid, first, inv = np.unique(ids, return_index=True, return_inverse=True)
@@ -149,7 +323,7 @@ def _snapshot(path, k, step, df, volume, box, cell=None):
         bad = ~np.isfinite(branch[~wall]).all(axis=1)
         if bad.any():
             r = int(np.flatnonzero(~wall)[np.flatnonzero(bad)[0]])
-            raise InputError(f"{where}: row {r}: lx,ly,lz of a particle-particle contact "
+            raise InputError(f"{where}: {at(r)}: lx,ly,lz of a particle-particle contact "
                              "missing or NaN")
     elif cell is not None:
 

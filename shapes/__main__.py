@@ -34,11 +34,22 @@ def _err(msg):
 
 
 def _make_folder_of(out):
-    """Make the folder of ``--out`` when missing; the error message, or None."""
+    """Make the folder of ``--out`` when missing and check that a file can
+    be written there (before a build that may take minutes); the error
+    message, or None."""
     try:
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
     except OSError as exc:
         return f"cannot make the folder of --out {out}: {exc.strerror}"
+    if os.path.isdir(out):
+        return f"--out {out} is a folder, not a library file"
+    probe = str(out) + ".tmp"
+    try:
+        with open(probe, "wb"):
+            pass
+        os.remove(probe)
+    except OSError as exc:
+        return f"cannot write --out {out}: {exc.strerror}"
     return None
 
 
@@ -144,7 +155,10 @@ def _build(args):
     else:
         shapes, rejections = generate_library(args.n, args.seed, recipe)
         spec, created = recipe.as_dict(), "python -m shapes build"
-    write_library(args.out, shapes, args.seed, spec, _tolerances(), name=args.name, created_by=created)
+    try:
+        write_library(args.out, shapes, args.seed, spec, _tolerances(), name=args.name, created_by=created)
+    except LibraryError as exc:
+        return _err(str(exc))
     seconds = time.perf_counter() - t0
     lib = ShapeLibrary(args.out)
     st = write_report(lib, report, rejections, seconds)
@@ -167,7 +181,7 @@ def _build(args):
 def _import(args):
     import numpy as np
 
-    from .library import write_library
+    from .library import LibraryError, write_library
     from .meshimport import Budget, import_paths, library_datasets, mixed_units
     from .report import budget_text, write_report
 
@@ -194,8 +208,11 @@ def _import(args):
     problem = _make_folder_of(args.out)
     if problem:
         return _err(problem)
-    write_library(args.out, [g.polyhedron for g in grains], -1, spec, _tolerances(), name=args.name,
-                  created_by="python -m shapes import", extra=extra)
+    try:
+        write_library(args.out, [g.polyhedron for g in grains], -1, spec, _tolerances(), name=args.name,
+                      created_by="python -m shapes import", extra=extra)
+    except LibraryError as exc:
+        return _err(str(exc))
     from .library import ShapeLibrary
 
     report = args.report or args.out.rsplit(".", 1)[0] + "-report"

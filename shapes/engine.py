@@ -209,6 +209,11 @@ class ContactEngine:
         err = self.lib.pc_engine_step(self._live(), ckernel.dptr(pos), ckernel.dptr(quat), ckernel.dptr(wp),
                                       ckernel.dptr(self.force), ckernel.dptr(self.torque),
                                       ckernel.dptr(self.wall_force), ckernel.dptr(self.stat))
+        if err == -5:
+            n2 = np.einsum("ij,ij->i", quat, quat)
+            k = int(np.flatnonzero(~((n2 >= 1e-200) & (n2 <= 1e200)))[0])
+            raise EngineError(f"body {k}: orientation quaternion {quat[k].tolist()} is zero, not finite or out "
+                              "of range (a blown-up body?)")
         self.raise_for(err)
         return self.force, self.torque, self.wall_force[:self.nw]
 
@@ -218,6 +223,8 @@ class ContactEngine:
         plugin) reports."""
         if err == -2:
             raise EngineError("particle positions are not finite")
+        if err == -5:
+            raise EngineError("an orientation quaternion is zero, not finite or out of range (a blown-up body?)")
         if err == -4:
             raise EngineError(f"{int(self.stats['workspace_overflows'])} contacts overflowed the clipping workspace "
                               "(their forces would be lost): the shapes have more faces than it was sized for")

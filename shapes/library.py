@@ -87,6 +87,12 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
     -------
     None
 
+    Raises
+    ------
+    LibraryError
+        The file cannot be written (no such folder, no permission, disk
+        full): one line naming it; no ``.tmp`` file is left behind.
+
     Examples
     --------
     Two grains with a per-grain dataset, read back with
@@ -106,6 +112,18 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
     """
     tmp = str(path) + ".tmp"
     name = name or os.path.splitext(os.path.basename(str(path)))[0]
+    try:
+        _write_tmp(tmp, shapes, seed, recipe, tolerances, name, created_by, extra)
+        os.replace(tmp, path)
+    except OSError as exc:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        why = exc.strerror or str(exc).split("(")[0].strip() or exc.__class__.__name__
+        raise LibraryError(f"{path}: cannot write the library ({why})") from None
+
+
+def _write_tmp(tmp, shapes, seed, recipe, tolerances, name, created_by, extra):
+    """:func:`write_library`'s file, written to ``tmp``."""
     with h5py.File(tmp, "w") as f:
         f.attrs.update({"schema": SCHEMA, "schema_version": VERSION, "seed": int(seed),
                         "n_shapes": len(shapes), "recipe": json.dumps(recipe),
@@ -130,7 +148,6 @@ def write_library(path, shapes, seed, recipe, tolerances, name=None, created_by=
         f["sphericity"] = np.array([s.sphericity for s in shapes])
         for k in ("n_vertices", "n_faces", "n_edges"):
             f[k] = np.array([getattr(s, k) for s in shapes], np.int32)
-    os.replace(tmp, path)
 
 
 class ShapeLibrary:

@@ -314,6 +314,14 @@ def read_mesh(path):
         raise ImportRefused(f"unknown format '{ext or '(no extension)'}' (reads "
                             f"{', '.join(sorted(FORMATS))})")
     source = path
+    if FORMATS[ext] == "obj":
+        try:
+            with open(path, "rb") as fh:
+                fault = _obj_index_fault(fh.read())
+        except OSError as exc:
+            raise ImportRefused(f"unreadable OBJ file ({exc.strerror})") from None
+        if fault:
+            raise ImportRefused(f"OBJ file: {fault}")
     if FORMATS[ext] == "ply":
         try:
             with open(path, "rb") as fh:
@@ -339,6 +347,51 @@ def read_mesh(path):
     if t.ndim != 2 or t.shape[1] != 3:
         raise ImportRefused(f"faces are not triangles (shape {t.shape})")
     return v, t
+
+
+def _obj_index_fault(data):
+    """None when every face of the OBJ text ``data`` (bytes) names vertices
+    that exist, else what is wrong, by face and line: an index 0 (OBJ
+    counts vertices from 1), a positive index past the file's vertices, a
+    negative one before the first vertex defined so far, or an index that
+    is not a whole number. Lines continued with a backslash are one line.
+
+    >>> _obj_index_fault(b"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 3\\nf -1 -2 -3\\n") is None
+    True
+    >>> _obj_index_fault(b"v 0 0 0\\nv 1 0 0\\nv 0 1 0\\nf 1 2 \\\\\\n 0\\n")
+    'face 1 (line 4) names vertex 0; OBJ counts vertices from 1'
+    """
+    text = data.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
+    lines = text.split("\n")
+    n_total = sum(1 for x in lines if x.split(None, 1)[:1] == ["v"])
+    seen, face, k = 0, 0, 0
+    while k < len(lines):
+        start, line = k + 1, lines[k]
+        while line.rstrip().endswith("\\") and k + 1 < len(lines):   # continued on the next line
+            k += 1
+            line = line.rstrip()[:-1] + " " + lines[k]
+        k += 1
+        words = line.split("#", 1)[0].split()
+        if not words:
+            continue
+        if words[0] == "v":
+            seen += 1
+        elif words[0] == "f":
+            face += 1
+            for w in words[1:]:
+                head = w.split("/", 1)[0]
+                try:
+                    i = int(head)
+                except ValueError:
+                    return f"face {face} (line {start}) has the index {head!r}, not a whole number"
+                if i == 0:
+                    return f"face {face} (line {start}) names vertex 0; OBJ counts vertices from 1"
+                if i > n_total:
+                    return f"face {face} (line {start}) names vertex {i}; the file has {n_total}"
+                if i < 0 and -i > seen:
+                    return (f"face {face} (line {start}) names vertex {i}, before the first "
+                            f"({seen} defined so far)")
+    return None
 
 
 def _ply_newlines(data):

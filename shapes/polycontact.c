@@ -1836,11 +1836,19 @@ static void pose_all(engine_t *E, int par, int motion) {
  * wall_force (nw,3) on the walls; stat (PC_NSTAT): the step's counters,
  * named by pc_engine_stat_name. Returns 0, -1 (memory), -2 (non-finite
  * positions), -4 (a contact overflowed the clipping workspace: it would have
- * been lost; stat[PC_STAT_OVERFLOWS] counts them). */
+ * been lost; stat[PC_STAT_OVERFLOWS] counts them), -5 (an orientation
+ * quaternion whose squared norm is zero, NaN, or outside [1e-200, 1e200]:
+ * quat_to_mat would have taken it as the identity or lost it to round-off).
+ * A refused step leaves the engine's state as it was. */
 int pc_engine_step(engine_t *E, const double *pos, const double *quat, const double *wall_pos,
                    double *force, double *torque, double *wall_force, double *stat) {
     int nb = E->nb, nw = E->nw;
     for (int b = 0; b < 3 * nb; b++) if (!isfinite(pos[b])) return -2;
+    for (int b = 0; b < nb; b++) {
+        const double *q = quat + 4 * b;
+        double s = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (!(s >= 1e-200 && s <= 1e200)) return -5;
+    }
     /* poses */
     if (E->have_prev) { memcpy(E->xprev, E->x, sizeof(double) * 3 * nb); memcpy(E->Rprev, E->R, sizeof(double) * 9 * nb); }
     memcpy(E->x, pos, sizeof(double) * 3 * nb);

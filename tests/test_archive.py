@@ -55,3 +55,62 @@ def test_a_folder_that_is_no_study_is_one_line(tmp_path, capsys, make, message):
     assert archive_main([str(study), str(tmp_path / "arch")]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("archive: error: ") and message in err and "\n" not in err
+
+
+def _archive_of_one_folder(tmp_path):
+    """A run folder (spheres, no library) and an archive of it by hand: one
+    good run record and records of the wrong shape."""
+    import json
+
+    from postproc.provenance import code_hash
+    from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
+
+    table = tmp_path / "study" / "spheres-ensemble"
+    table.mkdir(parents=True)
+    (table / "params.json").write_text(json.dumps({"sample": "spheres", "preset": "tiny"}))
+    (table / "table.txt").write_text("description seed\n")
+    into = tmp_path / "arch" / "spheres-ensemble"
+    into.mkdir(parents=True)
+    (into / FOLDER_RECORD).write_text(json.dumps(_folder_record(str(table))))
+    good = {"analyses": {"": "analysis-spheres-seed1"}, "info": None, "files": {}, "counts": [],
+            "dump": {"name": "spheres-seed1.h5", "sha256": "0" * 64, "snapshots": 3},
+            "code": code_hash(), "saved": "2026-11-30T07:00:00"}
+    records = {"seed1": good, "seed2": [1, 2], "seed3": {**good, "dump": "spheres-seed3.h5"},
+               "seed4": {k: v for k, v in good.items() if k != "analyses"},
+               "seed5": {**good, "files": {"a.csv": 7}}, "seed6": "{broken"}
+    for k, rec in records.items():
+        text = rec if isinstance(rec, str) else json.dumps(rec)
+        (into / f"spheres-{k}{RUN_RECORD}").write_text(text)
+    return str(table), into
+
+
+def test_archive_records_of_the_wrong_shape_are_named_not_fatal(tmp_path):
+    """A run record that is not the archive's shape (a list, a dump that is
+    text, no analyses, a file's digest that is a number, not JSON) is that
+    seed's reason to run again; the other seeds are used."""
+    from yade_scripts.archive import archived
+
+    table, _ = _archive_of_one_folder(tmp_path)
+    got = archived(str(tmp_path / "arch"), table)
+    assert got["spheres-seed1.h5"][0] == "ok"
+    why = {k: v[1].split("archived but not used: ")[1] for k, v in got.items() if v[0] == "refused"}
+    assert why == {"spheres-seed2.h5": "its record cannot be read; it runs again",
+                   "spheres-seed3.h5": "its record is not of the archive's shape; it runs again",
+                   "spheres-seed4.h5": "its record names no analysis; it runs again",
+                   "spheres-seed5.h5": "its record is not of the archive's shape; it runs again",
+                   "spheres-seed6.h5": "its record cannot be read; it runs again"}
+
+
+def test_an_unreadable_folder_record_is_named_as_such(tmp_path, capsys):
+    """A folder record that cannot be read refuses its seeds with that
+    reason (not "other parameters"), and adding to it stops in one line."""
+    from yade_scripts.archive import FOLDER_RECORD, archived
+
+    table, into = _archive_of_one_folder(tmp_path)
+    (into / FOLDER_RECORD).write_text('{"params": ')
+    got = archived(str(tmp_path / "arch"), table)
+    assert {v[0] for v in got.values()} == {"refused"}
+    assert "its folder's record archive.json cannot be read" in got["spheres-seed1.h5"][1]
+    assert archive_main([str(tmp_path / "study"), str(tmp_path / "arch")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "archive.json: the archive's folder record cannot be read" in err and "\n" not in err

@@ -1,6 +1,7 @@
 """The speed/error front: a two-point sweep per sample on the tiny preset
 (YADE, yade-batch), and the front's pure parts on known inputs."""
 import math
+import os
 import shutil
 
 import numpy as np
@@ -276,3 +277,22 @@ def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library, monkeypatch
     cost = pd.read_csv(out / "front-cost.csv")
     assert (cost["us_per_contact_step"] > 0).all() and (cost["contacts_per_grain"] > 0).all()
     assert "### cost" in (out / "front.md").read_text()
+
+
+def test_a_library_the_front_cannot_write_is_one_line(tmp_path, capsys, monkeypatch):
+    """The smoke and quick plans write a low-detail library: a disk error
+    there (write_library's LibraryError) ends the front in one line, exit 2."""
+    import errno
+
+    import shapes.library as L
+    from yade_scripts import front
+
+    def full(tmp, *args):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(L, "_write_tmp", full)
+    monkeypatch.setattr(front, "generate", lambda folder, *a, **k: os.makedirs(folder, exist_ok=True))
+    assert front.main(["--plan", "smoke", "--out", str(tmp_path / "f"), "--samples", "polyhedra"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"front: error: {tmp_path / 'f' / 'polyhedra' / 'shapes-low.h5'}: cannot write the library "
+                   "(No space left on device)"]

@@ -259,7 +259,23 @@ def test_bad_input_is_refused_clearly(grains):
         eng.step(pos[:-1], quat)
     with pytest.raises(ValueError, match="shape index out of range"):
         ContactEngine(verts, tris, np.arange(len(verts)) + 1, sizes, K_V, KT_COEF, MU, 0, 0.05)
-    F, T, _ = eng.step(pos, quat)                      # a refused step leaves the engine usable
+    # an orientation the kernel would have taken as the identity (zero, NaN)
+    # or lost to round-off (squared norm under 1e-200 or over 1e200): refused,
+    # naming the body; the C function says so too, past the Python step
+    for q in ([0, 0, 0, 0], [np.nan, 0, 0, 1], [1e-101, 0, 0, 0], [1e101, 0, 0, 0], [np.inf, 0, 0, 0]):
+        badq = quat.copy()
+        badq[5] = q
+        with pytest.raises(EngineError, match=r"body 5: orientation quaternion .* is zero, not finite or out of range"):
+            eng.step(pos, badq)
+        from shapes import ckernel
+        err = eng.lib.pc_engine_step(eng._live(), ckernel.dptr(ckernel.f64(pos)), ckernel.dptr(ckernel.f64(badq)),
+                                     ckernel.dptr(eng._no_walls), ckernel.dptr(eng.force), ckernel.dptr(eng.torque),
+                                     ckernel.dptr(eng.wall_force), ckernel.dptr(eng.stat))
+        assert err == -5
+        with pytest.raises(EngineError, match="an orientation quaternion is zero"):
+            eng.raise_for(err)
+    tiny = quat * 2.0 ** -300                           # tiny but in range: the same rotations, to the bit
+    F, T, _ = eng.step(pos, tiny)                      # a refused step leaves the engine usable
     ref = engine_for(verts, tris, sizes, walls=False)
     F2, T2, _ = ref.step(pos, quat)
     np.testing.assert_array_equal(F, F2)

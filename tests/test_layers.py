@@ -18,7 +18,7 @@ LAYERS = [
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
-               "study.claim6", "study.lmgc90", "study.alinvestigation",
+               "study.claim6", "study.lmgc90", "study.manifest", "study.alinvestigation",
                "study.typeskappa", "study.commonplaneref", "study.facepair",
                "study.timestepfront", "study.randomtypes", "study.shapefront"}),
     ("interface", {"many", "cli"}),

@@ -13,7 +13,7 @@ from shapes.__main__ import main
 from shapes.descriptors import grain_descriptors
 from shapes.generate import generate_library
 from shapes.library import ShapeLibrary
-from shapes.meshimport import (Budget, ImportRefused, distance_to_convex, hausdorff_to_convex, import_mesh,
+from shapes.meshimport import (Budget, ImportRefused, distance_to_convex, hausdorff_to_convex, import_mesh, read_mesh,
                                import_paths, merge_vertices, reduce_hull)
 from shapes.polyhedron import check_polyhedron
 
@@ -530,3 +530,37 @@ def test_a_library_mixing_units_is_warned(tmp_path, capsys):
     three((30.0, 40.0, 45.0))
     assert main(["import", str(tmp_path), "--out", str(tmp_path / "same.h5")]) == 0
     assert "warning" not in capsys.readouterr().err
+
+
+TETRA_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+
+
+@pytest.mark.parametrize("faces, message", [
+    ("f 1 3 2\nf 1 2 4\nf 0 4 3\nf 2 3 4\n", r"face 3 \(line 7\) names vertex 0; OBJ counts vertices from 1"),
+    ("f 1 3 2\nf 1 2 4\nf 1 4 9\nf 2 3 4\n", r"face 3 \(line 7\) names vertex 9; the file has 4"),
+    ("f 1 3 2\nf 1 2 -5\nf 1 4 3\nf 2 3 4\n", r"face 2 \(line 6\) names vertex -5, before the first"),
+    ("f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 x/1\n", r"face 4 \(line 8\) has the index 'x'"),
+    ("f 1 3 \\\n 2\nf 1 2 4\nf 1 4 \\\n0\nf 2 3 4\n", r"face 3 \(line 8\) names vertex 0"),
+])
+def test_obj_faces_naming_no_vertex_are_refused_by_line(tmp_path, faces, message):
+    """OBJ counts vertices from 1 (negative: back from the last one defined):
+    trimesh reads an index 0 as a real vertex, and a wrong one as a numpy
+    IndexError; each is refused by face and line."""
+    path = tmp_path / "g.obj"
+    path.write_text(TETRA_OBJ + faces)
+    with pytest.raises(ImportRefused, match=message):
+        read_mesh(str(path))
+
+
+def test_obj_relative_and_textured_indices_read_as_trimesh_reads_them(tmp_path):
+    """Negative (relative) indices, v/vt/vn forms, comment lines and
+    continued lines give the triangles of the plain file."""
+    plain = tmp_path / "a.obj"
+    plain.write_text(TETRA_OBJ + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+    other = tmp_path / "b.obj"
+    other.write_text(TETRA_OBJ + "vt 0 0\n# a comment f 0 0 0\nf -4/1 -2/1 -3/1\nf 1//1 2//1 \\\n4//1\n"
+                     "f 1 4 3\nf 2 3 4\n")
+    va, ta = read_mesh(str(plain))
+    vb, tb = read_mesh(str(other))
+    np.testing.assert_array_equal(va, vb)
+    np.testing.assert_array_equal(ta, tb)

@@ -210,7 +210,7 @@ def test_bad_cells(tmp_path, capsys):
         read_contact_table(str(path), cell=L)
     part["ly"], part["lz"] = 0.0, np.nan
     part.to_csv(path, index=False)
-    with pytest.raises(InputError, match=r"row 0: lx,ly,lz .* missing or NaN"):
+    with pytest.raises(InputError, match=r"line 2: lx,ly,lz .* missing or NaN"):
         read_contact_table(str(path), cell=L)
     with DumpWriter(str(tmp_path / "b.h5"), "spheres", {}) as w:
         with pytest.raises(DumpFormatError, match="det > 0"):

@@ -163,7 +163,7 @@ def test_postproc_results_writes_the_file_the_table_and_the_figure(tmp_path, cap
         st / "report" / "comparison.csv", index=False), "comparison.csv: no column 'published'"),
     (lambda st: pd.read_csv(st / "report" / "claims.csv").iloc[:5].to_csv(
         st / "report" / "claims.csv", index=False), "the claims are not 1 to 6"),
-    (lambda st: (st / "manifest.json").write_text("{"), "manifest.json: not readable JSON"),
+    (lambda st: (st / "manifest.json").write_text("{"), "manifest.json: not valid JSON"),
 ])
 def test_a_bad_report_is_one_line_and_writes_nothing(tmp_path, capsys, damage, message):
     study = make_study(tmp_path / "study")
@@ -252,3 +252,27 @@ def test_compare_results_says_same_or_lists_what_differs(tmp_path, capsys):
     assert main(["compare-results", str(tmp_path / "nothing"), "--reference", str(ref)]) == 2
     err = capsys.readouterr().err
     assert err.count("postproc: error:") == 2 and "Traceback" not in err
+
+
+def test_runs_are_counted_by_their_state_not_all_as_failed(tmp_path):
+    """A study collected while it runs lists running, resumable and not
+    started runs: they are counted as such. A manifest with a "state" per
+    run is read by it; one written before that field, by its status text."""
+    folder = make_study(tmp_path / "study")
+    manifest = json.loads((folder / "manifest.json").read_text())
+    texts = {"running: pid 12 on host a (step 9)": "running", "resumable at step 120 (b.ckpt)": "resumable",
+             "not started": "not started", "pending: SLURM job 7_3, PENDING, Priority": "pending",
+             "unfinished, no checkpoint (killed)": "unfinished", "failed: killed (SIGTERM)": "failed",
+             "refused, not analysed: snapshot 3 does not add up": "refused",
+             "invalid line: no seed": "invalid", "analysis failed (NaN)": "failed"}
+    extra = [{"label": f"seed {10 + k}", "dump": None, "status": t} for k, t in enumerate(texts)]
+    manifest["polyhedra"] += extra
+    (folder / "manifest.json").write_text(json.dumps(manifest))
+    want = {"ok": 3, "running": 1, "resumable": 1, "not started": 1, "pending": 1, "unfinished": 1,
+            "failed": 2, "refused": 1, "invalid": 1}
+    assert R.collect(str(folder))["study"]["runs"]["polyhedra"] == want
+    # the state field wins over the text
+    manifest["polyhedra"] = [{**e, "state": "running"} for e in manifest["polyhedra"][:3]]
+    (folder / "manifest.json").write_text(json.dumps(manifest))
+    assert R.collect(str(folder))["study"]["runs"]["polyhedra"] == {"running": 3}
+    assert R.collect(str(folder))["study"]["seeds"]["polyhedra"] == 0

@@ -35,10 +35,24 @@ def test_presets_resolve_and_reject_bad_config():
         resolve("tiny", "spheres", {"kapa": 3})
     with pytest.raises(ConfigError, match="friction = -1.0 is outside"):
         resolve("tiny", "spheres", {"friction": "-1"})
-    with pytest.raises(ConfigError, match="n_particles = 'many' is not a int"):
+    with pytest.raises(ConfigError, match="n_particles = 'many' is not an integer"):
         resolve("tiny", "spheres", {"n_particles": "many"})
     with pytest.raises(ConfigError, match="n_particles = 2.5 is not an integer"):
         resolve("tiny", "spheres", {"n_particles": 2.5})
+    # a fraction of any numeric type is refused (float32 and Decimal were truncated to 40),
+    # a whole one of any type taken; a true/false value is no count
+    import decimal
+    import fractions
+
+    import numpy as np
+    for half in (np.float32(40.5), decimal.Decimal("40.5"), fractions.Fraction(81, 2), "40.5"):
+        with pytest.raises(ConfigError, match="is not an integer"):
+            resolve("tiny", "spheres", {"n_particles": half})
+    for whole in (np.float32(40), decimal.Decimal("40"), fractions.Fraction(80, 2), "4e1", 40.0, np.int16(40)):
+        assert resolve("tiny", "spheres", {"n_particles": whole})["n_particles"] == 40
+    for bad in (True, np.bool_(True), float("nan"), float("inf"), None):
+        with pytest.raises(ConfigError, match="n_particles = .* is not an integer"):
+            resolve("tiny", "spheres", {"n_particles": bad})
     with pytest.raises(ConfigError, match="unknown preset"):
         resolve("huge", "spheres")
     with pytest.raises(ConfigError, match="dump_strain"):

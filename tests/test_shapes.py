@@ -237,3 +237,48 @@ def test_build_makes_the_folder_of_its_library(tmp_path, capsys):
     assert main(["build", "--n", "3", "--out", str(tmp_path / "file" / "lib.h5")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("shapes: error: cannot make the folder of --out")
+
+
+def test_a_library_that_cannot_be_written_is_one_line_and_leaves_no_tmp(tmp_path, capsys, monkeypatch):
+    """An --out that cannot be written is refused before the build; a disk
+    that fills during the write is a LibraryError in one line (exit 2),
+    with no half-written .tmp file left."""
+    import errno
+
+    import shapes.library as L
+    from shapes.__main__ import main
+
+    (tmp_path / "dir.h5").mkdir()
+    assert main(["build", "--n", "3", "--out", str(tmp_path / "dir.h5")]) == 2
+    assert capsys.readouterr().err.strip() == f"shapes: error: --out {tmp_path / 'dir.h5'} is a folder, not a library file"
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    monkeypatch.setattr("builtins.open", _refusing_open(open, str(ro)))
+    assert main(["build", "--n", "3", "--out", str(ro / "lib.h5")]) == 2
+    assert capsys.readouterr().err.strip() == f"shapes: error: cannot write --out {ro / 'lib.h5'}: Permission denied"
+    monkeypatch.undo()
+
+    def full(tmp, *args):
+        open(tmp, "wb").write(b"half")
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(L, "_write_tmp", full)
+    out = tmp_path / "lib.h5"
+    with pytest.raises(LibraryError, match=r"lib.h5: cannot write the library \(No space left on device\)"):
+        write_library(str(out), [], 0, {}, {})
+    assert main(["build", "--n", "3", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"shapes: error: {out}: cannot write the library (No space left on device)"]
+    assert not out.exists() and not (tmp_path / "lib.h5.tmp").exists()
+
+
+def _refusing_open(real, folder):
+    """``open`` that refuses to create files in ``folder`` (root ignores
+    file modes, so permission is simulated)."""
+    import errno
+
+    def fake(path, mode="r", *args, **kw):
+        if str(path).startswith(folder) and any(c in mode for c in "wax"):
+            raise PermissionError(errno.EACCES, "Permission denied", str(path))
+        return real(path, mode, *args, **kw)
+    return fake

@@ -276,6 +276,9 @@ def _save(study, dest, echo):
         into = os.path.join(dest, name)
         mine = _folder_record(table)
         there = _read_json(os.path.join(into, FOLDER_RECORD))
+        if there == {}:
+            raise ConfigError(f"{into}/{FOLDER_RECORD}: the archive's folder record cannot be read "
+                              "(not a JSON object): mend it from git or remove the folder")
         if there is not None and there != mine:
             raise ConfigError(f"{into}: archived runs of other parameters or another shape library than {table}")
         os.makedirs(into, exist_ok=True)
@@ -294,6 +297,8 @@ def _save(study, dest, echo):
             counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
             record_path = os.path.join(into, stem + RUN_RECORD)
             old = _read_json(record_path)
+            if old and _run_record_fault(old):
+                old = {}                         # unreadable: archived again below
             current = bool(old) and old.get("code") == code_hash()
             if current and _same_file(old, into, dump) and set(counts) <= set(old.get("counts", [])):
                 skipped.append(f"{where}: already archived")
@@ -406,17 +411,20 @@ def archived(dest, table, counts=()):
     there = _read_json(os.path.join(into, FOLDER_RECORD))
     if there is None:
         return {}
+    unread = None if there else f"its folder's record {FOLDER_RECORD} cannot be read"
     records = sorted(f for f in os.listdir(into) if f.endswith(RUN_RECORD))
     with open(os.path.join(table, "params.json")) as fh:
         sample = json.load(fh).get("sample")
     same = there == _folder_record(table)
     out = {}
     for f in records:
-        rec = _read_json(os.path.join(into, f))
-        name = (rec or {}).get("dump", {}).get("name") or f[: -len(RUN_RECORD)] + ".h5"
+        rec = _read_json(os.path.join(into, f)) or {}
+        fault = _run_record_fault(rec)
+        named = None if fault else rec.get("dump", {}).get("name")
+        name = named if isinstance(named, str) and named else f[: -len(RUN_RECORD)] + ".h5"
         why = None
-        if not rec or "analyses" not in rec:
-            why = "its record cannot be read"
+        if unread or fault:
+            why = unread or fault
         elif not same:
             why = "archived from a run folder of other parameters or another shape library"
         elif rec.get("code") != code_hash():
@@ -440,13 +448,33 @@ def archived(dest, table, counts=()):
 
 
 def _read_json(path):
+    """The JSON object (a dict) in the record ``path``: None when there is
+    no such file, {} when it cannot be read or holds no object."""
     try:
-        with open(path) as fh:
-            return json.load(fh)
+        with open(path, encoding="utf-8") as fh:
+            value = json.load(fh)
     except FileNotFoundError:
         return None
-    except (OSError, ValueError):
+    except (OSError, ValueError, RecursionError):
         return {}
+    return value if isinstance(value, dict) else {}
+
+
+def _run_record_fault(rec):
+    """None when the run record ``rec`` has the shape :func:`_save` writes
+    (the fields :func:`archived` reads), else what is wrong."""
+    if not rec:
+        return "its record cannot be read"
+    analyses = rec.get("analyses")
+    if not isinstance(analyses, dict) or not isinstance(analyses.get(""), str) \
+            or not all(isinstance(v, str) for v in analyses.values()):
+        return "its record names no analysis"
+    files = rec.get("files", {})
+    if not isinstance(files, dict) or not all(isinstance(x, str) for kv in files.items() for x in kv) \
+            or not isinstance(rec.get("counts", []), list) \
+            or not isinstance(rec.get("dump", {}), dict) or not isinstance(rec.get("info"), (str, type(None))):
+        return "its record is not of the archive's shape"
+    return None
 
 
 def _write_json(path, data):

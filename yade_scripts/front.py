@@ -343,9 +343,11 @@ def main(argv=None):
     ap.add_argument("--library")
     ap.add_argument("--samples", nargs="+", default=list(FRONT_SAMPLES), choices=SAMPLES)
     args = ap.parse_args(argv)
+    from shapes.library import LibraryError
+
     try:
         status = run_front(args.out, args.plan, args.jobs, args.library, args.samples)
-    except ConfigError as exc:
+    except (ConfigError, LibraryError) as exc:      # LibraryError: the low-detail library not written
         print(f"front: error: {exc}", file=sys.stderr)
         return 2
     from postproc.study.front import write_front

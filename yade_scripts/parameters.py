@@ -153,6 +153,23 @@ D_MAX = 0.05
 SCHEMA = {p.name: (p.type, p.allowed) for p in PARAMETERS}
 
 
+def _whole(key, value):
+    """``value`` as an int when it is a whole number of any numeric type
+    (an int, a float, numpy's, a Decimal, or text such as ``"1e3"``); a
+    bool, a fraction, NaN or infinity is refused in one line."""
+    if type(value).__name__ in ("bool", "bool_"):       # Python's and numpy's
+        raise ConfigError(f"{key} = {value!r} is not an integer (a true/false value)")
+    try:
+        number = float(value) if isinstance(value, str) else value
+        v = int(number)
+        whole = v == number
+    except (TypeError, ValueError, OverflowError, ArithmeticError):
+        raise ConfigError(f"{key} = {value!r} is not an integer") from None
+    if not whole:
+        raise ConfigError(f"{key} = {value!r} is not an integer")
+    return v
+
+
 def coerce(key, value):
     """One parameter's value, typed and checked against :data:`SCHEMA`.
 
@@ -204,14 +221,13 @@ def coerce(key, value):
         if text in ("false", "0", "no"):
             return False
         raise ConfigError(f"{key} = {value!r} is not true or false")
-    try:
-        if typ is int and isinstance(value, str):
-            value = int(float(value)) if float(value).is_integer() else value
-        v = typ(value)
-    except (TypeError, ValueError):
-        raise ConfigError(f"{key} = {value!r} is not a {typ.__name__}") from None
-    if typ is int and isinstance(value, float) and not value.is_integer():
-        raise ConfigError(f"{key} = {value!r} is not an integer")
+    if typ is int:
+        v = _whole(key, value)
+    else:
+        try:
+            v = typ(value)
+        except (TypeError, ValueError):
+            raise ConfigError(f"{key} = {value!r} is not a {typ.__name__}") from None
     if isinstance(allowed, tuple) and typ is str:
         if v not in allowed:
             raise ConfigError(f"{key} must be one of {allowed}, got {v!r}")

@@ -581,7 +581,8 @@ def _analyse_and_report(out, runs, attempts, unfinished, counts, figures, archiv
                 extra["counts"] = {c: os.path.relpath(f, out) for c, f in done.items()}
             manifest[s].append({"label": label, "dump": os.path.relpath(dump, out),
                                 "analysis": os.path.relpath(analysis, out),
-                                "info": os.path.relpath(info, out), "status": why, **extra})
+                                "info": os.path.relpath(info, out), "status": why,
+                                "state": why if why in ("ok", "partial") else "failed", **extra})
     for s, entries in (unfinished or {}).items():
         manifest.setdefault(s, []).extend(entries)
     with open(os.path.join(out, "manifest.json"), "w") as fh:
@@ -597,11 +598,11 @@ def _archived_entry(out, archive, dump, counts, label):
     how, what = _archived(archive, os.path.dirname(dump), counts).get(os.path.basename(dump), (None, None))
     entry = {"label": label, "dump": os.path.relpath(dump, out)}
     if how != "ok":
-        return {**entry, "status": f"not in the archive any more ({what or 'no record'})"}
+        return {**entry, "status": f"not in the archive any more ({what or 'no record'})", "state": "failed"}
     rec = what["record"]
     print(f"[study] {label} of {os.path.basename(os.path.dirname(dump))}: from the archive {archive}", flush=True)
     return {**entry, "analysis": os.path.relpath(what["analysis"], out),
-            "info": what["info"] and os.path.relpath(what["info"], out), "status": "ok",
+            "info": what["info"] and os.path.relpath(what["info"], out), "status": "ok", "state": "ok",
             "counts": {c: os.path.relpath(f, out) for c, f in what["counts"].items()},
             "archived": {"archive": os.path.relpath(archive, out), "dump_sha256": rec["dump"]["sha256"],
                          "saved": rec.get("saved")},
@@ -743,7 +744,7 @@ def _collect(folder, tables, counts, figures, archive):
             where = {"table": os.path.relpath(os.path.join(t, "table.txt"), folder), "line": line.number,
                      "task": line.task}
             if line.error:
-                st_detail, dump = f"invalid line: {line.error}", None
+                st_detail, dump, state = f"invalid line: {line.error}", None, "invalid"
             else:
                 dump = line_dump(t, line)
                 if dump in held:
@@ -755,17 +756,18 @@ def _collect(folder, tables, counts, figures, archive):
                     runs.setdefault(sample, []).append((label, dump, 0))
                     continue
                 if bad is not None:
-                    st_detail = f"refused, not analysed: {bad}"
+                    st_detail, state = f"refused, not analysed: {bad}", "refused"
                 elif line.task in queue:
                     st_detail = queue_detail(*queue[line.task])
+                    state = "running" if st_detail.startswith("running") else "pending"
                 elif st.state == "running":
-                    st_detail = st.detail
+                    st_detail, state = st.detail, st.state
                 else:
-                    st_detail = st.detail
+                    st_detail, state = st.detail, st.state
                     todo.append(line)
             pending.append(f"{os.path.relpath(os.path.join(t, line.description), folder)} ({st_detail})")
             others.setdefault(sample, []).append({"label": label, "dump": dump and os.path.relpath(dump, folder),
-                                                  "status": st_detail, **where})
+                                                  "status": st_detail, "state": state, **where})
         name = os.path.basename(os.path.abspath(t))
         slurm_sh = os.path.join(os.path.abspath(t), "slurm.sh")
 

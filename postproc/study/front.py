@@ -30,7 +30,7 @@ import pandas as pd
 
 from .report import REFERENCE, comparison_table
 from ..angular import angular_functions, fit_harmonics
-from ..errors import InputError
+from ..errors import InputError, read_json_object
 from ..fabric import anisotropies
 from ..plots import plot_analysis_front, plot_front, plot_front_trends
 from ..schema import DumpReader
@@ -106,8 +106,7 @@ def collect_runs(folder):
         with DumpReader(dump) as r:
             par = r.parameters
             sample = r.sample_kind
-        with open(info_path) as fh:
-            info = json.load(fh)
+        info = read_json_object(info_path, "run info file")
         df = pd.read_csv(summary, dtype={"snapshot": str})
         idx = steady_indices(df["eps_q"], df["stage"])
         shear0 = info.get("shear_start_step")

@@ -31,6 +31,7 @@ import pandas as pd
 
 from .claims import BAND, BAND_STABLE, band_test, claim6, evaluate, plateau
 from .dilatancy import peak_summary
+from .manifest import read_manifest
 from .. import plots
 from ..analysis import analyze_snapshot, group_labels_of
 from ..angular import angular_functions
@@ -38,6 +39,7 @@ from ..classify import classifier_for, snapshot_classes
 from ..contactset import resolve
 from ..contacttypes import GROUP_OF
 from ..coordination import force_bearing
+from ..errors import InputError, read_json_object
 from ..schema import DumpReader
 from ..slab import slab
 from ..statistics import plateau_estimate
@@ -53,8 +55,7 @@ def discover(study):
     ("ok" or the reason it failed), info (run.info.json path or None)."""
     path = os.path.join(study, "manifest.json")
     if os.path.exists(path):
-        with open(path) as fh:
-            runs = json.load(fh)
+        runs = read_manifest(path)
         for sample in runs:
             for r in runs[sample]:
                 for k in ("dump", "analysis", "info"):
@@ -189,15 +190,27 @@ def comparison_table(summaries, reference):
     return rows
 
 
-def _run_infos(runs):
-    """[(sample, run label, its run.info.json as a dict)] of the runs that wrote one."""
+def _read_listed(path, what, problems):
+    """The JSON object in ``path``, or None with the reason appended to
+    ``problems`` when it cannot be read (the report goes on without it)."""
+    try:
+        return read_json_object(path, what)
+    except InputError as exc:
+        problems.append(str(exc))
+        return None
+
+
+def _run_infos(runs, problems):
+    """[(sample, run label, its run.info.json as a dict)] of the runs that
+    wrote one; an unreadable one is named in ``problems``."""
     out = []
     for s, rs in runs.items():
         for r in rs:
             info = r.get("info")
             if info and os.path.exists(info):
-                with open(info) as fh:
-                    out.append((s, r["label"], json.load(fh)))
+                d = _read_listed(info, "run info file", problems)
+                if d is not None:
+                    out.append((s, r["label"], d))
     return out
 
 
@@ -231,18 +244,29 @@ def host_lines(infos):
             for (cpu, flags, libc, npv), names in hosts.items()]
 
 
-def _schedule_lines(study):
+def _schedule_lines(study, problems):
     """Lines on the schedule of the study's runs (``schedule.json``,
-    :mod:`yade_scripts.pool`): makespan, busy and idle core-time."""
+    :mod:`yade_scripts.pool`): makespan, busy and idle core-time; an
+    unreadable schedule is named in ``problems``."""
     path = os.path.join(study, "schedule.json")
     if not os.path.exists(path):
         return []
-    with open(path) as fh:
-        s = json.load(fh)
-    m = s.get("summary", {})
+    s = _read_listed(path, "schedule", problems)
+    m = (s or {}).get("summary", {})
+    if not isinstance(m, dict):
+        problems.append(f"{path}: the schedule's summary is not an object")
+        return []
     if not m.get("makespan_s"):
         return []
-    att = s.get("attempts", [])
+    try:
+        return _schedule_line(m, s.get("attempts", []))
+    except (AttributeError, KeyError, TypeError, ValueError) as exc:
+        problems.append(f"{path}: not a schedule of the pool's shape ({exc.__class__.__name__}: {exc})")
+        return []
+
+
+def _schedule_line(m, att):
+    """The schedule's lines from its summary ``m`` and its attempts ``att``."""
     runs = [a for a in att if a.get("kind") != "after"]
     after = [a for a in att if a.get("kind") == "after"]
     widened = sum(1 for a in runs if a.get("widening"))
@@ -520,9 +544,12 @@ def _library_section(runs, out, figures=True):
         folder = os.path.dirname(r.get("dump") or "")
         pj = os.path.join(folder, "params.json")
         if os.path.exists(pj):
-            with open(pj) as fh:
-                return study_section(os.path.join(folder, json.load(fh).get("library", "shapes.h5")), out,
-                                     **({} if figures else {"figure": None}))
+            try:
+                params = read_json_object(pj, "run parameters file")
+            except InputError as exc:
+                return ["", f"S1's grains are not described: {exc}"]
+            return study_section(os.path.join(folder, params.get("library", "shapes.h5")), out,
+                                 **({} if figures else {"figure": None}))
     return []
 
 
@@ -540,16 +567,15 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
         for r in runs.get(s, []):
             params = ""
             pj = os.path.join(os.path.dirname(r.get("dump") or ""), "params.json")
-            if os.path.exists(pj):
-                with open(pj) as fh:
-                    p = json.load(fh)
+            p = _read_listed(pj, "run parameters file", problems) if os.path.exists(pj) else None
+            if p is not None:
                 params = (f"{p.get('preset')}: N = {p.get('n_particles')}, κ = {p.get('kappa')}, "
                           f"I = {p.get('inertial_number')}, ε1 final = {p.get('final_strain')}")
             status = r["status"].upper() if r["status"] == "partial" else r["status"]
             if r.get("note"):
                 status += f" ({r['note']})"
             lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
-    infos = _run_infos(runs)
+    infos = _run_infos(runs, problems)
     cost = _cost_rows(infos)
     if cost:
         lines += ["", "| sample | run | steps | of which compaction | wall time (s) | µs per contact-step | "
@@ -559,7 +585,7 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
     hosts = host_lines(infos)
     if hosts:
         lines += [""] + hosts
-    lines += _schedule_lines(study)
+    lines += _schedule_lines(study, problems)
     if problems:
         lines += ["", "**Problems** (the rest of the report is built without them):", ""]
         lines += [f"* {p}" for p in problems]

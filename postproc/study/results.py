@@ -29,7 +29,8 @@ import shutil
 
 import pandas as pd
 
-from ..errors import InputError
+from ..errors import InputError, read_json_object
+from .manifest import read_manifest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 #: where the default study's results are committed
@@ -87,28 +88,53 @@ def _records(path, columns):
     return [{c: _clean(v) for c, v in row.items()} for row in df[list(columns)].to_dict("records")]
 
 
+#: the states of a study's runs (a manifest entry's "state"), and the
+#: first words of the status text by which a manifest written before runs
+#: had a state shows each
+RUN_STATES = {"ok": ("ok",), "partial": ("partial",), "running": ("running",), "pending": ("pending",),
+              "resumable": ("resumable",), "unfinished": ("unfinished",), "not started": ("not started",),
+              "refused": ("refused",), "invalid": ("invalid",), "failed": ()}
+
+
+def run_state(entry):
+    """The state of a manifest entry ``entry`` (a dict): its "state", or
+    for a manifest written without it the state its status text begins
+    with (:data:`RUN_STATES`); "failed" for any other text.
+
+    >>> run_state({"status": "resumable at step 120 (checkpoint)"})
+    'resumable'
+    >>> run_state({"status": "run failed (3); see x", "state": "failed"})
+    'failed'
+    >>> run_state({"status": "analysis failed (NaN)"})
+    'failed'
+    """
+    state = entry.get("state")
+    if isinstance(state, str) and state in RUN_STATES:
+        return state
+    text = str(entry.get("status", ""))
+    if text in ("ok", "partial"):
+        return text
+    return next((s for s, heads in RUN_STATES.items() if s not in ("ok", "partial")
+                 and any(text.startswith(h) for h in heads)), "failed")
+
+
 def _study_facts(study):
-    """{"preset", "seeds": {sample: n}, "runs": {sample: {status: n}}} from
-    the study's manifest.json and the runs' params.json; {} without a
-    manifest."""
+    """{"preset", "seeds": {sample: n}, "runs": {sample: {state: n}}} from
+    the study's manifest.json (each run counted by :func:`run_state`) and
+    the runs' params.json; {} without a manifest."""
     path = os.path.join(study, "manifest.json")
     if not os.path.exists(path):
         return {}
-    try:
-        with open(path) as fh:
-            manifest = json.load(fh)
-    except (OSError, ValueError) as exc:
-        raise InputError(f"{path}: not readable JSON ({exc.__class__.__name__})") from None
+    manifest = read_manifest(path)
     facts = {"seeds": {}, "runs": {}}
     for sample, runs in manifest.items():
         status = {}
         for r in runs:
-            key = "ok" if r.get("status") == "ok" else ("partial" if r.get("status") == "partial" else "failed")
+            key = run_state(r)
             status[key] = status.get(key, 0) + 1
             pj = os.path.join(study, os.path.dirname(r.get("dump") or ""), "params.json")
             if "preset" not in facts and os.path.exists(pj):
-                with open(pj) as fh:
-                    facts["preset"] = json.load(fh).get("preset")
+                facts["preset"] = read_json_object(pj, "run parameters file").get("preset")
         facts["seeds"][sample] = status.get("ok", 0) + status.get("partial", 0)
         facts["runs"][sample] = status
     return facts
@@ -173,8 +199,7 @@ def load_results(path=RESULTS):
     """The committed results (a dict), or None when there is no file."""
     if not os.path.exists(path):
         return None
-    with open(path) as fh:
-        return json.load(fh)
+    return read_json_object(path, "results file")
 
 
 def _num(x, digits=2):

@@ -40,7 +40,7 @@ from scipy.stats import f as f_dist
 
 from .claims import claim6, evaluate
 from .report import REFERENCE, run_summaries, usable_runs, count_summaries, discover
-from ..errors import InputError
+from ..errors import InputError, read_json_object
 from ..statistics import Estimate, difference, plateau_estimate, steady_indices
 
 SAMPLES = ("polyhedra", "spheres")
@@ -76,8 +76,10 @@ def _n_particles(run):
     """N of a run: its run folder's params.json, else its dump's parameters."""
     pj = os.path.join(os.path.dirname(run.get("dump") or ""), "params.json")
     if os.path.exists(pj):
-        with open(pj) as fh:
-            return int(json.load(fh)["n_particles"])
+        n = read_json_object(pj, "run parameters file").get("n_particles")
+        if not isinstance(n, (int, float)) or isinstance(n, bool) or not float(n).is_integer() or n < 1:
+            raise InputError(f"{pj}: n_particles {n!r} is not a whole number of grains")
+        return int(n)
     from ..schema import DumpReader
 
     with DumpReader(run["dump"]) as r:

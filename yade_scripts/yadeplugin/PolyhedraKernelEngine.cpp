@@ -20,8 +20,9 @@
 // include/ (YADE's, GPL-2.0-or-later; see include/ORIGIN.md).
 //
 // Error codes (the attribute `error`, 0 after a good step): the kernel's own
-// (-2 positions not finite, -4 a workspace overflow, other negative values:
-// out of memory), and -10 not bound, -11 a body id that is not a body of the
+// (-2 positions not finite, -4 a workspace overflow, -5 an orientation
+// quaternion zero, not finite or out of range, other negative values: out of
+// memory), and -10 not bound, -11 a body id that is not a body of the
 // scene, -12 wall positions not finite or a low wall not below its high wall.
 
 #include <core/Body.hpp>
@@ -200,7 +201,7 @@ public:
 		"Polyhedra contacts of the compiled kernel (shapes/polycontact.c) inside YADE's step: reads the poses of :yref:`ids` and the positions of :yref:`walls`, steps the kernel that :yref:`bind` names, adds the contact forces and torques. Place it between ForceResetter and NewtonIntegrator; yade_scripts.kernel_contacts.KernelContacts builds and binds it. It is not saved with the scene (O.save raises unregistered class): checkpoints hold its PyRunner form.",
 		((vector<int>, ids, , , "Body ids of the polyhedra, in the kernel's row order."))
 		((vector<int>, walls, , , "Body ids of the six walls (x-, x+, y-, y+, z-, z+), or none."))
-		((int, error, 0, (Attr::readonly | Attr::noSave), "0 after a good step; else why the last step stopped before adding forces: the kernel's code (-2 positions not finite, -4 workspace overflow, other: out of memory), -10 not bound, -11 a body id that is not a body of the scene, -12 bad wall positions."))
+		((int, error, 0, (Attr::readonly | Attr::noSave), "0 after a good step; else why the last step stopped before adding forces: the kernel's code (-2 positions not finite, -4 workspace overflow, -5 an orientation quaternion zero, not finite or out of range, other: out of memory), -10 not bound, -11 a body id that is not a body of the scene, -12 bad wall positions."))
 		((bool, verifyNext, false, Attr::noSave, "Also read every body's mass at the next step (into the bound mass array), for the start-up check; cleared after that step."))
 		((string, library, "", (Attr::readonly | Attr::noSave), "The kernel library bound to (empty: not bound)."))
 		((string, sourceHash, PKE_SOURCE_HASH, (Attr::readonly | Attr::noSave), "Hash of the sources this plugin was built from (yade_scripts/yadeplugin).")),
