@@ -179,7 +179,8 @@ def _numbers(path, columns, lines):
             try:
                 vals = np.array(text, dtype=float)
             except (TypeError, ValueError):
-                vals = pd.to_numeric(pd.Series(text, dtype=object).str.strip(),
+                cells = pd.Series(text, dtype=object).map(lambda v: v.strip() if isinstance(v, str) else v)
+                vals = pd.to_numeric(cells,
                                      errors="coerce").to_numpy(dtype=float, na_value=np.nan)
             for i in np.flatnonzero(np.isnan(vals)):
                 v = text[i]
