@@ -52,6 +52,8 @@ NA_TEXT = frozenset({"", "#N/A", "#N/A N/A", "#NA", "-1.#IND", "-1.#QNAN", "-NaN
                      "n/a", "nan", "null"})
 #: columns whose cells must be whole numbers
 WHOLE = ("id1", "id2", "step")
+#: the columns a table is read by
+READ = REQUIRED + BRANCH + ("step",)
 
 
 def _records_by_line(path):
@@ -60,7 +62,7 @@ def _records_by_line(path):
     limit) is named by that line."""
     records, starts, start = [], [], 1
     try:
-        with open(path, newline="", encoding="utf-8") as fh:
+        with open(path, newline="", encoding="utf-8-sig") as fh:
             reader = csv.reader(fh, strict=True)
             while True:
                 start = reader.line_num + 1
@@ -93,14 +95,17 @@ def _read_csv(path):
     if not keep:
         raise InputError(f"{path}: an empty table (no header)")
     header = [c.strip() for c in records[keep[0]]]
-    if len(header) > 1 and header[-1] == "":
-        header.pop()
     rows = [records[k] for k in keep[1:]]
     lines = np.asarray(starts, np.int64)[keep[1:]]
     n = len(header)
-    dup = sorted({c for c in header if header.count(c) > 1})
+    named = n
+    while named > 1 and header[named - 1] == "":
+        named -= 1                               # empty names at the end (a spreadsheet's blank columns)
+    dup = sorted({c for c in header if c in READ and header.count(c) > 1})
     if dup:
         raise InputError(f"{path}: columns named twice in the header: {', '.join(dup)}")
+    if named < n:                                # rows may stop before the header's empty names
+        rows = [r + [""] * (n - len(r)) if named <= len(r) < n else r for r in rows]
     width = np.fromiter(map(len, rows), np.int64, len(rows))
     if (width == n + 1).any():
         trailing = [k for k in np.flatnonzero(width == n + 1) if not rows[k][-1].strip()]
@@ -129,7 +134,7 @@ def _read_csv_fast(path):
             data = fh.read()
         if b'"' in data or b"\r" in data.replace(b"\r\n", b""):
             return None
-        text = data.decode("utf-8")
+        text = data.decode("utf-8-sig")
     except (OSError, UnicodeDecodeError):
         return None
     lines = text.split("\n")
@@ -149,12 +154,14 @@ def _read_csv_fast(path):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error")
-            df = pd.read_csv(path, usecols=want, dtype={c: "float64" for c in want},
-                             skipinitialspace=True, encoding="utf-8")
+            df = pd.read_csv(path, usecols=want, dtype={c: "int64" if c in WHOLE else "float64" for c in want},
+                             skipinitialspace=True, encoding="utf-8-sig")
     except (ValueError, OSError, Warning):
         return None
     if len(df) != len(rows):
         return None
+    if any(len(df) and np.abs(df[c].to_numpy()).max() >= 2 ** 53 for c in want if c in WHOLE):
+        return None          # pandas may have read such ids through float64: read them exactly
     return {c: df[c] for c in want}, rows + 1
 
 
@@ -168,10 +175,13 @@ def _numbers(path, columns, lines):
     numbers. A bad cell is refused in one line naming its line (or row) and
     column."""
     out = {}
-    for col in [c for c in REQUIRED + BRANCH + ("step",) if c in columns]:
+    for col in [c for c in READ if c in columns]:
         raw = columns[col]
         if isinstance(raw, pd.Series) and pd.api.types.is_bool_dtype(raw.dtype):
             raise InputError(f"{path}: column {col} holds true/false values, not numbers")
+        if col in WHOLE:
+            out[col] = _whole_column(path, col, raw, lines)
+            continue
         if isinstance(raw, pd.Series) and pd.api.types.is_numeric_dtype(raw.dtype):
             vals, text = raw.to_numpy(dtype=float, na_value=np.nan), None
         else:
@@ -185,23 +195,67 @@ def _numbers(path, columns, lines):
             for i in np.flatnonzero(np.isnan(vals)):
                 v = text[i]
                 if not (v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v))
-                        or str(v).strip() in NA_TEXT):
+                        or str(v).strip() in NA_TEXT or str(v).strip().lower().lstrip("+-") == "nan"):
                     raise InputError(f"{path}: {_where(lines, i)}, column {col}: {str(v)[:40]!r} "
                                      "is not a number")
-        if col in WHOLE:
-            gap = ~np.isfinite(vals)
-            with np.errstate(invalid="ignore"):
-                bad = gap | (vals != np.round(vals)) | (np.abs(vals) > 2.0 ** 53)
-            if bad.any():
-                i = int(np.flatnonzero(bad)[0])
-                shown = vals[i] if text is None else text[i]
-                what = "missing" if gap[i] else f"{str(shown)[:40]!r}, not a whole number"
-                raise InputError(f"{path}: {_where(lines, i)}, column {col}: {what}")
-            vals = vals.astype(np.int64)
         out[col] = vals
     n = len(next(iter(out.values()))) if out else 0
     out["_line"] = np.asarray(lines, np.int64) if lines is not None else np.arange(1, n + 1)
     return pd.DataFrame(out)
+
+
+def _whole_column(path, col, raw, lines):
+    """(R,) int64: an id or step column read exactly (an integer column as
+    it is, text by ``int`` before ``float``: 64-bit ids are not rounded
+    through float64); a cell that is missing, not a number, not whole, not
+    finite or out of range is refused in one line naming its line (or row)
+    and column."""
+    if isinstance(raw, pd.Series) and pd.api.types.is_integer_dtype(raw.dtype):
+        if raw.isna().any():
+            raise InputError(f"{path}: {_where(lines, int(np.flatnonzero(raw.isna().to_numpy())[0]))}, "
+                             f"column {col}: missing")
+        if raw.dtype.kind == "u" and len(raw) and int(raw.max()) >= 2 ** 63:
+            i = int(np.flatnonzero(raw.to_numpy() >= 2 ** 63)[0])
+            raise InputError(f"{path}: {_where(lines, i)}, column {col}: {raw.iloc[i]} is out of range "
+                             "for a 64-bit id")
+        return raw.to_numpy(np.int64)
+    text = raw.to_numpy(object) if isinstance(raw, pd.Series) else raw
+    out = np.empty(len(text), np.int64)
+    for i, v in enumerate(text):
+        got = _whole_cell(v)
+        if isinstance(got, str):
+            raise InputError(f"{path}: {_where(lines, i)}, column {col}: {got}")
+        out[i] = got
+    return out
+
+
+def _whole_cell(v):
+    """The int a cell holds, or why it holds none (a str)."""
+    if v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v)):
+        return "missing"
+    if isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)):
+        i = int(v)
+    else:
+        t = str(v).strip()
+        if t in NA_TEXT or t.lower().lstrip("+-") == "nan":
+            return "missing"
+        try:
+            i = int(t)
+        except ValueError:
+            try:
+                f = float(t)
+            except ValueError:
+                return f"{t[:40]!r} is not a number"
+            if not np.isfinite(f):
+                return f"{t[:40]!r} is not finite"
+            if f != np.round(f):
+                return f"{t[:40]!r}, not a whole number"
+            if abs(f) >= 2.0 ** 53:
+                return f"{t[:40]!r} is out of range for a whole number written as a float (2^53)"
+            i = int(f)
+    if not -2 ** 63 <= i < 2 ** 63:
+        return f"{v!r} is out of range for a 64-bit id"
+    return i
 
 
 def _where(lines, i):

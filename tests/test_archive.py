@@ -77,7 +77,11 @@ def _archive_of_one_folder(tmp_path):
             "code": code_hash(), "saved": "2026-11-30T07:00:00"}
     records = {"seed1": good, "seed2": [1, 2], "seed3": {**good, "dump": "spheres-seed3.h5"},
                "seed4": {k: v for k, v in good.items() if k != "analyses"},
-               "seed5": {**good, "files": {"a.csv": 7}}, "seed6": "{broken"}
+               "seed5": {**good, "files": {"a.csv": 7}}, "seed6": "{broken",
+               "seed7": {k: v for k, v in good.items() if k != "dump"},
+               "seed8": {**good, "dump": {"name": "spheres-seed8.h5", "snapshots": 3}},
+               "seed9": {**good, "dump": {**good["dump"], "sha256": 7}},
+               "seed10": {**good, "counts": [1]}}
     for k, rec in records.items():
         text = rec if isinstance(rec, str) else json.dumps(rec)
         (into / f"spheres-{k}{RUN_RECORD}").write_text(text)
@@ -95,10 +99,14 @@ def test_archive_records_of_the_wrong_shape_are_named_not_fatal(tmp_path):
     assert got["spheres-seed1.h5"][0] == "ok"
     why = {k: v[1].split("archived but not used: ")[1] for k, v in got.items() if v[0] == "refused"}
     assert why == {"spheres-seed2.h5": "its record cannot be read; it runs again",
-                   "spheres-seed3.h5": "its record is not of the archive's shape; it runs again",
+                   "spheres-seed3.h5": "its record does not describe its dump (name, sha256, snapshots); it runs again",
                    "spheres-seed4.h5": "its record names no analysis; it runs again",
                    "spheres-seed5.h5": "its record is not of the archive's shape; it runs again",
-                   "spheres-seed6.h5": "its record cannot be read; it runs again"}
+                   "spheres-seed6.h5": "its record cannot be read; it runs again",
+                   "spheres-seed7.h5": "its record does not describe its dump (name, sha256, snapshots); it runs again",
+                   "spheres-seed8.h5": "its record does not describe its dump (name, sha256, snapshots); it runs again",
+                   "spheres-seed9.h5": "its record does not describe its dump (name, sha256, snapshots); it runs again",
+                   "spheres-seed10.h5": "its record is not of the archive's shape; it runs again"}
 
 
 def test_an_unreadable_folder_record_is_named_as_such(tmp_path, capsys):

@@ -50,6 +50,7 @@ def test_presets_resolve_and_reject_bad_config():
             resolve("tiny", "spheres", {"n_particles": half})
     for whole in (np.float32(40), decimal.Decimal("40"), fractions.Fraction(80, 2), "4e1", 40.0, np.int16(40)):
         assert resolve("tiny", "spheres", {"n_particles": whole})["n_particles"] == 40
+    assert resolve("tiny", "spheres", {"seed": "1234567890123456789"})["seed"] == 1234567890123456789
     for bad in (True, np.bool_(True), float("nan"), float("inf"), None):
         with pytest.raises(ConfigError, match="n_particles = .* is not an integer"):
             resolve("tiny", "spheres", {"n_particles": bad})

@@ -87,3 +87,7 @@ def test_the_report_is_written_beside_bad_run_files(tmp_path):
     assert "params.json: not a run parameters file (a JSON list, not an object)" in problems
     assert "schedule.json: not a schedule of the pool's shape (KeyError: 'cores')" in problems
     assert "S1's grains are not described" in md
+    # valid JSON of the wrong shape: named too, the report still written
+    (tmp_path / "polyhedra-ensemble" / "polyhedra-seed1.info.json").write_text('{"host": "node17", "steps": "x"}')
+    md = open(build_report(str(tmp_path), figures=False)).read()
+    assert "the runs' info files are not of the study's shape" in md.split("**Problems**")[1]

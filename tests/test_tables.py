@@ -175,3 +175,83 @@ def test_rows_are_named_by_their_line_on_both_reading_paths(tmp_path, plain, quo
     path.write_text("\n".join(lines) + "\n")
     with pytest.raises(InputError, match=r"line 8 has a negative id1"):
         read_contact_table(str(path), volume=1.0)
+
+
+def test_spreadsheet_exports_read_as_pandas_read_them(tmp_path, plain):
+    """A UTF-8 byte-order mark (Excel's "CSV UTF-8"), blank columns at the
+    end of every row, unused columns named twice, and NaN written in capitals
+    (C's %G) are read; each file gives the plain table's snapshots."""
+    df, ref = plain
+    lines = _lines(df)
+    variants = {
+        "bom": ("\ufeff" + lines[0], lines[1:]),
+        "blank columns": (lines[0] + ",,,", [x + ",,," for x in lines[1:]]),
+        "blank header only": (lines[0] + ",,,", lines[1:]),
+        "unused twice": (lines[0] + ",note,note", [x + ",a,b" for x in lines[1:]]),
+    }
+    for name, (head, rows) in variants.items():
+        path = tmp_path / f"{name}.csv"
+        path.write_bytes(("\n".join([head] + rows) + "\n").encode("utf-8"))
+        _same(read_contact_table(str(path), volume=1.0), ref)
+    walls = df.copy()
+    walls.loc[0, "id2"] = -1
+    path = tmp_path / "nan.csv"
+    text = "\n".join(_lines(walls)) + "\n"
+    cells = text.split("\n")[1].split(",")
+    cells[5:8] = ["NAN", "-NAN", "NaN"]                    # the wall's x2, y2, z2
+    path.write_text(text.replace(text.split("\n")[1], ",".join(cells)))
+    snap, = read_contact_table(str(path), volume=1.0)
+    assert snap.id2[0] == -1 and len(snap.id1) == len(df)
+
+
+def test_ids_are_read_exactly_past_float64(tmp_path, plain):
+    """64-bit ids are read as integers, not through float64 (2^53 + 1 and
+    2^53 stay two bodies), from CSV on both paths and from Parquet; an id
+    that does not fit, or a float past 2^53, is refused by its line."""
+    df, _ = plain
+    big = df.copy()
+    big["id1"] = big["id1"].astype(np.int64) + 2 ** 53
+    big["id2"] = big["id2"].astype(np.int64) + 2 ** 53
+    for quoted in (False, True):
+        path = tmp_path / f"big{quoted}.csv"
+        lines = _lines(big)
+        if quoted:
+            lines[0] = lines[0].replace("fz", '"fz"')
+        path.write_text("\n".join(lines) + "\n")
+        snap, = read_contact_table(str(path), volume=1.0)
+        np.testing.assert_array_equal(snap.id1, big["id1"].to_numpy())
+        np.testing.assert_array_equal(snap.id2, big["id2"].to_numpy())
+    pytest.importorskip("pyarrow")
+    path = tmp_path / "big.parquet"
+    big.to_parquet(path)
+    snap, = read_contact_table(str(path), volume=1.0)
+    np.testing.assert_array_equal(snap.id1, big["id1"].to_numpy())
+    lines = _lines(df)
+    cells = lines[3].split(",")
+    for bad, why in ((str(2 ** 63), "out of range for a 64-bit id"), ("9.1e15", "out of range for a whole number"),
+                     ("inf", "'inf' is not finite")):
+        cells[0] = bad
+        path = tmp_path / "bad.csv"
+        path.write_text("\n".join(lines[:3] + [",".join(cells)] + lines[4:]) + "\n")
+        with pytest.raises(InputError, match=rf"line 4, column id1: .*{why}"):
+            read_contact_table(str(path), volume=1.0)
+
+
+def test_a_plain_table_takes_the_fast_path_and_a_quoted_one_the_strict(tmp_path, plain, monkeypatch):
+    """The plain file is read by pandas' C parser without the csv module;
+    the same content with a quote goes through the strict reader."""
+    import postproc.tables as T
+
+    df, ref = plain
+    path = tmp_path / "p.csv"
+    path.write_text("\n".join(_lines(df)) + "\n")
+    calls = []
+    strict = T._read_csv
+    monkeypatch.setattr(T, "_read_csv", lambda p: calls.append(p) or strict(p))
+    _same(read_contact_table(str(path), volume=1.0), ref)
+    assert calls == []
+    lines = _lines(df)
+    lines[0] = lines[0].replace("fz", '"fz"')
+    path.write_text("\n".join(lines) + "\n")
+    _same(read_contact_table(str(path), volume=1.0), ref)
+    assert calls == [str(path)]

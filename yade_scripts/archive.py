@@ -469,11 +469,14 @@ def _run_record_fault(rec):
     if not isinstance(analyses, dict) or not isinstance(analyses.get(""), str) \
             or not all(isinstance(v, str) for v in analyses.values()):
         return "its record names no analysis"
-    files = rec.get("files", {})
+    files, counts, dump = rec.get("files", {}), rec.get("counts", []), rec.get("dump")
     if not isinstance(files, dict) or not all(isinstance(x, str) for kv in files.items() for x in kv) \
-            or not isinstance(rec.get("counts", []), list) \
-            or not isinstance(rec.get("dump", {}), dict) or not isinstance(rec.get("info"), (str, type(None))):
+            or not isinstance(counts, list) or not all(isinstance(c, str) for c in counts) \
+            or not isinstance(rec.get("info"), (str, type(None))):
         return "its record is not of the archive's shape"
+    if not isinstance(dump, dict) or not isinstance(dump.get("name"), str) \
+            or not isinstance(dump.get("sha256"), str) or type(dump.get("snapshots")) is not int:
+        return "its record does not describe its dump (name, sha256, snapshots)"
     return None
 
 

@@ -160,6 +160,11 @@ def _whole(key, value):
     if type(value).__name__ in ("bool", "bool_"):       # Python's and numpy's
         raise ConfigError(f"{key} = {value!r} is not an integer (a true/false value)")
     try:
+        if isinstance(value, str):
+            try:
+                return int(value.strip())        # exact, whatever its size (a 64-bit seed)
+            except ValueError:
+                pass
         number = float(value) if isinstance(value, str) else value
         v = int(number)
         whole = v == number

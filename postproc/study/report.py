@@ -576,13 +576,23 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
                 status += f" ({r['note']})"
             lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
     infos = _run_infos(runs, problems)
-    cost = _cost_rows(infos)
+    try:
+        cost = _cost_rows(infos)
+    except (AttributeError, KeyError, TypeError, ValueError) as exc:
+        problems.append(f"the runs' info files are not of the study's shape, no cost table "
+                        f"({exc.__class__.__name__}: {exc})")
+        cost = []
     if cost:
         lines += ["", "| sample | run | steps | of which compaction | wall time (s) | µs per contact-step | "
                   "solid fraction after compression |", "|---|---|---|---|---|---|---|"]
         lines += [f"| {a} | {b} | {c} | {cc} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
                   for a, b, c, cc, d, e, f in cost]
-    hosts = host_lines(infos)
+    try:
+        hosts = host_lines(infos)
+    except (AttributeError, KeyError, TypeError, ValueError) as exc:
+        problems.append(f"the runs' info files are not of the study's shape, no host lines "
+                        f"({exc.__class__.__name__}: {exc})")
+        hosts = []
     if hosts:
         lines += [""] + hosts
     lines += _schedule_lines(study, problems)
