@@ -193,6 +193,9 @@ def _import(args):
         return _err(str(exc))
     if not (args.merge_tolerance >= 0):
         return _err(f"--merge-tolerance must be at least 0 (the mesh's units), got {args.merge_tolerance}")
+    problem = _make_folder_of(args.out)          # before the import, which may take minutes
+    if problem:
+        return _err(problem)
     t0 = time.perf_counter()
     grains, refused, ignored = import_paths(
         args.paths, budget, split=args.components, merge_tolerance=args.merge_tolerance,
@@ -205,9 +208,6 @@ def _import(args):
     extra = library_datasets(grains)
     spec = {"source": "meshes", "inputs": list(args.paths), "budget": budget.as_dict(),
             "components": bool(args.components), "merge_tolerance": args.merge_tolerance}
-    problem = _make_folder_of(args.out)
-    if problem:
-        return _err(problem)
     try:
         write_library(args.out, [g.polyhedron for g in grains], -1, spec, _tolerances(), name=args.name,
                       created_by="python -m shapes import", extra=extra)
