@@ -91,3 +91,20 @@ def test_the_report_is_written_beside_bad_run_files(tmp_path):
     (tmp_path / "polyhedra-ensemble" / "polyhedra-seed1.info.json").write_text('{"host": "node17", "steps": "x"}')
     md = open(build_report(str(tmp_path), figures=False)).read()
     assert "the runs' info files are not of the study's shape" in md.split("**Problems**")[1]
+
+
+def test_a_run_count_of_grains_that_is_no_count_is_named(tmp_path):
+    """The size front reads N from each run's params.json: a fraction, NaN,
+    Infinity, text, a bool or an integer too large for a float is named in
+    one line, never an OverflowError; a whole float is taken."""
+    from postproc.study.sizefront import _n_particles
+
+    run = {"dump": str(tmp_path / "run.h5")}
+    pj = tmp_path / "params.json"
+    for good, n in (("5000", 5000), ("5000.0", 5000)):
+        pj.write_text('{"n_particles": %s}' % good)
+        assert _n_particles(run) == n
+    for bad in ("2.5", "NaN", "Infinity", '"5000"', "true", "1" + "0" * 400, "0"):
+        pj.write_text('{"n_particles": %s}' % bad)
+        with pytest.raises(InputError, match=r"params.json: n_particles .* is not a number of grains"):
+            _n_particles(run)

@@ -77,8 +77,9 @@ def _n_particles(run):
     pj = os.path.join(os.path.dirname(run.get("dump") or ""), "params.json")
     if os.path.exists(pj):
         n = read_json_object(pj, "run parameters file").get("n_particles")
-        if not isinstance(n, (int, float)) or isinstance(n, bool) or not float(n).is_integer() or n < 1:
-            raise InputError(f"{pj}: n_particles {n!r} is not a whole number of grains")
+        whole = isinstance(n, int) or (isinstance(n, float) and n.is_integer())
+        if isinstance(n, bool) or not whole or n < 1 or n > 10 ** 12:
+            raise InputError(f"{pj}: n_particles {n!r} is not a number of grains (a whole number from 1 to 1e12)")
         return int(n)
     from ..schema import DumpReader
 
