@@ -702,6 +702,23 @@ class DumpCheck:
     complete: bool       # the dump's ``complete`` attribute
 
 
+def _unreadable(path, exc):
+    """Why h5py could not open ``path`` (its OSError ``exc``), in words: an
+    empty file, a file that is not HDF5 at all (no HDF5 signature at its
+    start), one that cannot be read, or an HDF5 file cut short or damaged."""
+    try:
+        size = os.path.getsize(path)
+        with open(path, "rb") as fh:
+            head = fh.read(8)
+    except OSError as err:
+        return f"cannot be read ({err.strerror or err.__class__.__name__})"
+    if size == 0:
+        return "an empty file (0 bytes), not a dump"
+    if head != b"\x89HDF\r\n\x1a\n":
+        return f"not an HDF5 file ({size} bytes, no HDF5 signature at its start), so not a dump"
+    return f"not a readable HDF5 file (truncated or corrupt?): {exc.__class__.__name__}"
+
+
 class DumpReader:
     """Read a run written by :class:`DumpWriter` (packed or not).
 
@@ -727,9 +744,7 @@ class DumpReader:
         try:
             self._f = h5py.File(self.path, "r")
         except OSError as exc:
-            raise DumpFormatError(
-                f"{self.path}: not a readable HDF5 file (truncated or corrupt?): "
-                f"{exc.__class__.__name__}") from None
+            raise DumpFormatError(f"{self.path}: {_unreadable(self.path, exc)}") from None
         a = self._f.attrs
         if a.get("schema") != SCHEMA_NAME:
             self._f.close()

@@ -473,3 +473,17 @@ def test_complete_is_written_last_after_n_snapshots(tmp_path, monkeypatch):
     assert max(events.index(e) for e in events if e[0] != "attr") < events.index(("attr", "n_snapshots"))
     with h5py.File(tmp_path / "run.h5", "r") as f:
         assert f.attrs["complete"] == 1 and f.attrs["n_snapshots"] == 3 and len(f["index/step"]) == 3
+
+
+def test_an_empty_file_and_a_file_that_is_not_hdf5_are_named_as_such(tmp_path):
+    """h5py's one OSError for all three is told apart: an empty file, a
+    file without HDF5's signature (text, another format), and a cut HDF5
+    file (above)."""
+    empty = tmp_path / "empty.h5"
+    empty.write_bytes(b"")
+    with pytest.raises(DumpFormatError, match=r"empty.h5: an empty file \(0 bytes\), not a dump"):
+        DumpReader(str(empty))
+    text = tmp_path / "text.h5"
+    text.write_text("step,id1,id2\n")
+    with pytest.raises(DumpFormatError, match=r"text.h5: not an HDF5 file \(13 bytes, no HDF5 signature"):
+        DumpReader(str(text))
