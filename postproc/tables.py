@@ -150,7 +150,7 @@ def _read_csv_fast(path):
     rows = full[1:]
     if any(lines[k].count(",") != n - 1 for k in rows):
         return None
-    want = [c for c in REQUIRED + BRANCH + ("step",) if c in names]
+    want = [c for c in READ if c in names]
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error")
@@ -165,15 +165,26 @@ def _read_csv_fast(path):
     return {c: df[c] for c in want}, rows + 1
 
 
+def _is_missing(v):
+    """True for a cell that holds no value: None, NA, a float NaN, or a
+    missing-value text (:data:`NA_TEXT`, or NaN in any case: ``NAN``)."""
+    if v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v)):
+        return True
+    t = str(v).strip()
+    return t in NA_TEXT or t.lower().lstrip("+-") == "nan"
+
+
 def _numbers(path, columns, lines):
-    """The columns the table reads (``REQUIRED``, ``BRANCH``, ``step``) as
-    numbers, a DataFrame with the column ``_line``: each row's line in a
-    CSV file, or its row from 1 in a Parquet file. ``columns`` maps a name to a pandas Series or a tuple of
-    cell texts; ``lines``, (R,) int, each row's line in a CSV file (None:
-    rows of a Parquet file). Every cell must be a number or a missing value
-    (an empty cell, NaN, NA...: pandas' ``NA_TEXT``); ids and steps whole
-    numbers. A bad cell is refused in one line naming its line (or row) and
-    column."""
+    """The columns the table reads (:data:`READ`) as numbers: a DataFrame
+    with the column ``_line``, each row's line in a CSV file or its row
+    from 1 in a Parquet file.
+
+    ``columns`` maps a name to a pandas Series or a tuple of cell texts;
+    ``lines``, (R,) int, each row's line in a CSV file (None: rows of a
+    Parquet file). Every cell must be a number or a missing value
+    (:func:`_is_missing`); ids and steps whole numbers
+    (:func:`_whole_column`). A bad cell is refused in one line naming its
+    line (or row) and column."""
     out = {}
     for col in [c for c in READ if c in columns]:
         raw = columns[col]
@@ -193,10 +204,8 @@ def _numbers(path, columns, lines):
                 vals = pd.to_numeric(cells,
                                      errors="coerce").to_numpy(dtype=float, na_value=np.nan)
             for i in np.flatnonzero(np.isnan(vals)):
-                v = text[i]
-                if not (v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v))
-                        or str(v).strip() in NA_TEXT or str(v).strip().lower().lstrip("+-") == "nan"):
-                    raise InputError(f"{path}: {_where(lines, i)}, column {col}: {str(v)[:40]!r} "
+                if not _is_missing(text[i]):
+                    raise InputError(f"{path}: {_where(lines, i)}, column {col}: {str(text[i])[:40]!r} "
                                      "is not a number")
         out[col] = vals
     n = len(next(iter(out.values()))) if out else 0
@@ -231,14 +240,12 @@ def _whole_column(path, col, raw, lines):
 
 def _whole_cell(v):
     """The int a cell holds, or why it holds none (a str)."""
-    if v is None or v is pd.NA or (isinstance(v, float) and np.isnan(v)):
+    if _is_missing(v):
         return "missing"
     if isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)):
         i = int(v)
     else:
         t = str(v).strip()
-        if t in NA_TEXT or t.lower().lstrip("+-") == "nan":
-            return "missing"
         try:
             i = int(t)
         except ValueError:
