@@ -200,6 +200,18 @@ def _read_listed(path, what, problems):
         return None
 
 
+def _lines_or_problem(make, problems, what):
+    """``make()``, the lines of a report section built from files of the
+    study's own (run info, schedule); [] with ``what`` and the error
+    appended to ``problems`` when the files are not of the shape the section
+    reads (the report goes on without it)."""
+    try:
+        return make()
+    except (AttributeError, KeyError, TypeError, ValueError) as exc:
+        problems.append(f"{what} ({exc.__class__.__name__}: {exc})")
+        return []
+
+
 def _run_infos(runs, problems):
     """[(sample, run label, its run.info.json as a dict)] of the runs that
     wrote one; an unreadable one is named in ``problems``."""
@@ -258,11 +270,8 @@ def _schedule_lines(study, problems):
         return []
     if not m.get("makespan_s"):
         return []
-    try:
-        return _schedule_line(m, s.get("attempts", []))
-    except (AttributeError, KeyError, TypeError, ValueError) as exc:
-        problems.append(f"{path}: not a schedule of the pool's shape ({exc.__class__.__name__}: {exc})")
-        return []
+    return _lines_or_problem(lambda: _schedule_line(m, s.get("attempts", [])), problems,
+                             f"{path}: not a schedule of the pool's shape")
 
 
 def _schedule_line(m, att):
@@ -576,23 +585,15 @@ def _markdown(study, runs, summaries, ref, rows, claims, figures, problems, by_c
                 status += f" ({r['note']})"
             lines.append(f"| {LABEL[s]} | {r['label']} | {status} | {params} |")
     infos = _run_infos(runs, problems)
-    try:
-        cost = _cost_rows(infos)
-    except (AttributeError, KeyError, TypeError, ValueError) as exc:
-        problems.append(f"the runs' info files are not of the study's shape, no cost table "
-                        f"({exc.__class__.__name__}: {exc})")
-        cost = []
+    cost = _lines_or_problem(lambda: _cost_rows(infos), problems,
+                             "the runs' info files are not of the study's shape, no cost table")
     if cost:
         lines += ["", "| sample | run | steps | of which compaction | wall time (s) | µs per contact-step | "
                   "solid fraction after compression |", "|---|---|---|---|---|---|---|"]
         lines += [f"| {a} | {b} | {c} | {cc} | {_fmt(d, 0)} | {_fmt(e, 1)} | {_fmt(f, 3)} |"
                   for a, b, c, cc, d, e, f in cost]
-    try:
-        hosts = host_lines(infos)
-    except (AttributeError, KeyError, TypeError, ValueError) as exc:
-        problems.append(f"the runs' info files are not of the study's shape, no host lines "
-                        f"({exc.__class__.__name__}: {exc})")
-        hosts = []
+    hosts = _lines_or_problem(lambda: host_lines(infos), problems,
+                              "the runs' info files are not of the study's shape, no host lines")
     if hosts:
         lines += [""] + hosts
     lines += _schedule_lines(study, problems)
