@@ -88,12 +88,11 @@ def _records(path, columns):
     return [{c: _clean(v) for c, v in row.items()} for row in df[list(columns)].to_dict("records")]
 
 
-#: the states of a study's runs (a manifest entry's "state"), and the
-#: first words of the status text by which a manifest written before runs
-#: had a state shows each
-RUN_STATES = {"ok": ("ok",), "partial": ("partial",), "running": ("running",), "pending": ("pending",),
-              "resumable": ("resumable",), "unfinished": ("unfinished",), "not started": ("not started",),
-              "refused": ("refused",), "invalid": ("invalid",), "failed": ()}
+#: the states of a study's runs (a manifest entry's "state"); a manifest
+#: written before runs had a state begins each run's status text with it
+#: ("ok" and "partial" are the whole text)
+RUN_STATES = ("ok", "partial", "running", "pending", "resumable", "unfinished", "not started",
+              "refused", "invalid", "failed")
 
 
 def run_state(entry):
@@ -114,8 +113,7 @@ def run_state(entry):
     text = str(entry.get("status", ""))
     if text in ("ok", "partial"):
         return text
-    return next((s for s, heads in RUN_STATES.items() if s not in ("ok", "partial")
-                 and any(text.startswith(h) for h in heads)), "failed")
+    return next((s for s in RUN_STATES[2:] if text.startswith(s)), "failed")
 
 
 def _study_facts(study):
