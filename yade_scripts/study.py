@@ -720,7 +720,7 @@ def _collect(folder, tables, counts, figures, archive):
     from .archive import line_dump
     from .batch import table_lines
     from .runstate import state_of
-    from .slurm import queue_detail, queue_states
+    from .slurm import ON_A_NODE, queue_detail, queue_states
 
     runs, others, pending, resubmit = {}, {}, [], {}
     for t in tables:
@@ -759,12 +759,11 @@ def _collect(folder, tables, counts, figures, archive):
                     st_detail, state = f"refused, not analysed: {bad}", "refused"
                 elif line.task in queue:
                     st_detail = queue_detail(*queue[line.task])
-                    state = "running" if st_detail.startswith("running") else "pending"
-                elif st.state == "running":
-                    st_detail, state = st.detail, st.state
+                    state = "running" if queue[line.task][1] in ON_A_NODE else "pending"
                 else:
                     st_detail, state = st.detail, st.state
-                    todo.append(line)
+                    if st.state != "running":
+                        todo.append(line)
             pending.append(f"{os.path.relpath(os.path.join(t, line.description), folder)} ({st_detail})")
             others.setdefault(sample, []).append({"label": label, "dump": dump and os.path.relpath(dump, folder),
                                                   "status": st_detail, "state": state, **where})
