@@ -87,8 +87,12 @@ MAX_CANDIDATES = 30000
 BAN_RADIUS = 0.005
 #: a piece of a mesh enclosing less than this fraction of the largest piece's volume is a sliver
 SLIVER_VOLUME = 1e-3
-#: vertices closer than this fraction of the median edge length are near-duplicates (a seam)
+#: vertices closer than this fraction of the median edge length are near-duplicates (they break a
+#: surface that is non-manifold or oriented both ways)
 NEAR_DUPLICATE = 0.01
+#: a seam (boundary vertices nearer one another than this fraction of the median edge) is closed by
+#: a merge that suggests itself: such a tolerance joins the seam and no real edge of the mesh
+SEAM_EDGE_FRACTION = 0.25
 #: float32 coordinates whose step at the largest coordinate exceeds this fraction of the mesh's
 #: size have lost the precision a scan needs
 FLOAT32_STEP = 1e-5
@@ -694,7 +698,7 @@ def check_closed(vertices, triangles):
     >>> check_closed(v, t[1:])
     Traceback (most recent call last):
     ...
-    shapes.meshimport.ImportRefused: open mesh: 3 boundary edges (each in one triangle); a grain must be ...
+    shapes.meshimport.ImportRefused: open mesh: 3 boundary edges (each in one triangle), the boundary's vertices up to 1 from their nearest ...
     """
     v, t = vertices, triangles
     if not np.isfinite(v).all():
@@ -704,16 +708,10 @@ def check_closed(vertices, triangles):
         raise ImportRefused(f"degenerate: {len(v)} distinct vertices and {len(t)} proper triangles "
                             "(a closed solid needs at least 4 of each)")
     n = np.int64(len(v))
-    i = t.T.ravel()
-    j = t[:, [1, 2, 0]].T.ravel()
-    key = np.sort((np.minimum(i, j) * n + np.maximum(i, j)) * 2 + (i < j))
-    und = key >> 1
-    cut = np.flatnonzero(und[1:] != und[:-1]) + 1
-    counts = np.diff(np.concatenate([[0], cut, [len(und)]]))
+    key, und, cut, counts = _edge_counts(t, n)
     if np.any(counts == 1):
-        cause = _topology_cause(v, t, und[np.concatenate([[0], cut])][counts == 1], n)
-        raise ImportRefused(cause or f"open mesh: {int((counts == 1).sum())} boundary edges (each in one "
-                            "triangle); a grain must be a closed surface")
+        boundary = und[np.concatenate([[0], cut])][counts == 1]
+        raise ImportRefused(_topology_cause(v, t, boundary, n) or _open_mesh(v, boundary, n))
     if np.any(counts > 2):
         raise ImportRefused(_topology_cause(v, t) or f"non-manifold: {int((counts > 2).sum())} edges are "
                             "shared by more than two triangles")
@@ -746,9 +744,11 @@ def _topology_cause(v, t, boundary=None, n=None):
     """The likely cause of a mesh that is open, non-manifold or
     inconsistently oriented, as the one-line refusal, or "" when none is
     found: float32 coordinates far from the origin (their rounding joins
-    vertices), or a seam of near-duplicate vertices (closer than
-    NEAR_DUPLICATE x the median edge length) along the boundary edges
-    (``boundary``: their keys a * n + b)."""
+    vertices), a seam along the boundary edges (``boundary``: their keys
+    a * n + b) whose vertices lie closer to one another than
+    SEAM_EDGE_FRACTION x the median edge length, named with the
+    ``--merge-tolerance`` checked to close it, or pairs of near-duplicate
+    vertices (closer than NEAR_DUPLICATE x the median edge length)."""
     from scipy.spatial import cKDTree
 
     big = float(np.abs(v).max())
@@ -762,15 +762,16 @@ def _topology_cause(v, t, boundary=None, n=None):
     e = np.linalg.norm(v[t[:, 0]] - v[t[:, 1]], axis=1)
     tol = NEAR_DUPLICATE * float(np.median(e))
     if boundary is not None and len(boundary):
-        ends = np.unique(np.concatenate([boundary // n, boundary % n]))
-        dist, _ = cKDTree(v[ends]).query(v[ends], k=2)
-        near = dist[:, 1] < tol
+        dist = _boundary_gaps(v, boundary, n)
+        near = dist < SEAM_EDGE_FRACTION * float(np.median(e))
         if near.mean() >= 0.5:
-            worst = float(dist[near, 1].max())
-            sugg = float(f"{2 * worst:.0e}") if worst > 0 else tol
-            return (f"open mesh along a seam of near-duplicate vertices: {int(near.sum())} of the "
-                    f"{len(ends)} boundary vertices lie within {worst:.2g} of another ({worst / size:.1g} of the "
-                    f"mesh's size), unjoined; merge them with --merge-tolerance {sugg:g} (the mesh's units)")
+            worst = float(dist[near].max())
+            sugg = _tolerance_above(worst) if worst > 0 else tol
+            if _closes(v, t, sugg):
+                return (f"open mesh along a seam of near-duplicate vertices: {int(near.sum())} of the "
+                        f"{len(dist)} boundary vertices lie within {worst:.2g} of another ({worst / size:.1g} of "
+                        f"the mesh's size), unjoined; merge them with --merge-tolerance {sugg:g} (the mesh's "
+                        "units), which closes it")
         return ""
     pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
     if len(pairs):
@@ -779,6 +780,59 @@ def _topology_cause(v, t, boundary=None, n=None):
         return (f"{len(pairs)} pairs of near-duplicate vertices (within {worst:.2g}, {worst / size:.1g} of the mesh's "
                 f"size) break the surface; merge them with --merge-tolerance {sugg:g} (the mesh's units)")
     return ""
+
+
+def _edge_counts(t, n):
+    """The edges of triangles ``t`` (T, 3) on ``n`` vertices: ``key`` (3T,)
+    sorted, each undirected edge a * n + b (a < b) doubled plus 1 where the
+    triangle runs a -> b; ``und`` = key >> 1; ``cut``, the starts of each
+    distinct edge's run after the first; ``counts``, the triangles of each
+    distinct edge (1: a boundary edge, 2: manifold)."""
+    i = t.T.ravel()
+    j = t[:, [1, 2, 0]].T.ravel()
+    key = np.sort((np.minimum(i, j) * n + np.maximum(i, j)) * 2 + (i < j))
+    und = key >> 1
+    cut = np.flatnonzero(und[1:] != und[:-1]) + 1
+    counts = np.diff(np.concatenate([[0], cut, [len(und)]]))
+    return key, und, cut, counts
+
+
+def _boundary_gaps(v, boundary, n):
+    """(B,) distance (the mesh's units) from each of the B vertices of the
+    boundary edges ``boundary`` (keys a * n + b) to the nearest other
+    boundary vertex: across a seam, the width of the seam there."""
+    from scipy.spatial import cKDTree
+
+    ends = np.unique(np.concatenate([boundary // n, boundary % n]))
+    return cKDTree(v[ends]).query(v[ends], k=2)[0][:, 1]
+
+
+def _tolerance_above(width):
+    """The smallest number of one significant digit 1, 2 or 5 at or above
+    1.5 x ``width``: a merge tolerance that joins vertices ``width`` apart,
+    with a margin of half that width."""
+    exp = np.floor(np.log10(1.5 * width))
+    return next(float(f"{m * 10.0 ** exp:.0e}") for m in (1, 2, 5, 10) if m * 10.0 ** exp >= 1.5 * width)
+
+
+def _closes(v, t, tolerance):
+    """True when merging the vertices of the mesh (v, t) closer than
+    ``tolerance`` (:func:`merge_vertices`) leaves a surface without
+    boundary edges of at least 4 triangles."""
+    mv, mt = merge_vertices(v, t, tolerance)
+    return len(mt) >= 4 and not np.any(_edge_counts(mt, np.int64(len(mv)))[3] == 1)
+
+
+def _open_mesh(v, boundary, n):
+    """The one-line refusal of an open mesh whose cause
+    :func:`_topology_cause` did not name (no seam that a merge closes): how
+    many boundary edges (``boundary``, keys a * n + b) and how far the
+    boundary's vertices lie from their nearest, the tolerance a merge would
+    need."""
+    widest, size = float(_boundary_gaps(v, boundary, n).max()), float(np.ptp(v, axis=0).max())
+    return (f"open mesh: {len(boundary)} boundary edges (each in one triangle), the boundary's vertices up to "
+            f"{widest:.2g} from their nearest ({widest / size:.1g} of the mesh's size); a grain must be a "
+            "closed surface")
 
 
 def _count_pieces(edge_keys, n):

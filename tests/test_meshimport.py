@@ -13,7 +13,7 @@ from shapes.__main__ import main
 from shapes.descriptors import grain_descriptors
 from shapes.generate import generate_library
 from shapes.library import ShapeLibrary
-from shapes.meshimport import (Budget, ImportRefused, distance_to_convex, hausdorff_to_convex, import_mesh, read_mesh,
+from shapes.meshimport import (Budget, ImportRefused, check_closed, distance_to_convex, hausdorff_to_convex, import_mesh, read_mesh,
                                import_paths, merge_vertices, reduce_hull)
 from shapes.polyhedron import check_polyhedron
 
@@ -484,6 +484,58 @@ def test_a_seam_of_near_duplicate_vertices_is_named_and_merged_by_a_tolerance(tm
     assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "-1", "--out",
                  str(tmp_path / "c.h5")]) == 2
     assert "--merge-tolerance must be at least 0" in capsys.readouterr().err
+
+
+def split_ball(radius, subdivisions, width, seed=1):
+    """An icosphere whose two halves do not share their seam's vertices:
+    the right half's copies lie 0.2 to 1 x ``width`` (random directions)
+    from the left half's; (vertices, triangles, the copies' offsets)."""
+    s = trimesh.creation.icosphere(subdivisions=subdivisions, radius=radius)
+    v, t = np.asarray(s.vertices), np.asarray(s.faces)
+    right = v[t].mean(axis=1)[:, 0] > 0
+    shared = np.intersect1d(t[right].ravel(), t[~right].ravel())
+    rng = np.random.default_rng(seed)
+    off = rng.normal(size=(len(shared), 3))
+    off *= (width * rng.uniform(0.2, 1.0, len(shared)) / np.linalg.norm(off, axis=1))[:, None]
+    copy = dict(zip(shared.tolist(), range(len(v), len(v) + len(shared))))
+    t2 = t.copy()
+    t2[right] = np.vectorize(lambda k: copy.get(int(k), k))(t[right])
+    return np.vstack([v, v[shared] + off]), t2, off
+
+
+def test_a_seam_wider_than_a_hundredth_of_the_edges_is_named_with_its_width_and_the_tolerance(tmp_path, capsys):
+    """A finely scanned 30 mm stone (median edge 0.57 mm) whose seam's
+    vertices lie up to 10 um apart, over 1 % of an edge: refused with the
+    seam's width and the --merge-tolerance that closes it (1-2-5 at or above
+    1.5 x the width: 0.02 mm), which then imports it."""
+    v, t, off = split_ball(15.0, 5, 0.01)
+    widest = float(np.linalg.norm(off, axis=1).max())
+    assert 0.009 < widest <= 0.01
+    write(tmp_path / "fine.ply", v, t)
+    assert main(["import", str(tmp_path / "fine.ply"), "--out", str(tmp_path / "a.h5")]) == 2
+    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
+    assert "seam of near-duplicate vertices" in line and f"within {widest:.2g} of another" in line
+    assert "--merge-tolerance 0.02 (the mesh's units), which closes it" in line
+    assert main(["import", str(tmp_path / "fine.ply"), "--merge-tolerance", "0.02", "--out",
+                 str(tmp_path / "b.h5")]) == 0
+
+
+def test_a_hole_is_named_with_its_boundary_vertices_distance_and_no_merge_advised():
+    """A 40 mm ball with a cap of triangles cut out: the refusal names the
+    boundary edges and how far apart the boundary's nearest vertices are (an
+    edge length), and advises no merge, which would not close it."""
+    s = trimesh.creation.icosphere(subdivisions=3, radius=20.0)
+    v, t = np.asarray(s.vertices), np.asarray(s.faces)
+    keep = v[t].mean(axis=1)[:, 2] < 18.0
+    ends = np.unique(t[~keep])
+    rim = np.intersect1d(ends, np.unique(t[keep]))
+    with pytest.raises(ImportRefused) as e:
+        check_closed(v, t[keep])
+    msg = str(e.value)
+    gaps = np.sort(np.linalg.norm(v[rim][:, None] - v[rim][None], axis=2), axis=1)[:, 1]
+    assert msg.startswith("open mesh: ") and "boundary edges (each in one triangle)" in msg
+    assert f"the boundary's vertices up to {gaps.max():.2g} from their nearest" in msg
+    assert "--merge-tolerance" not in msg and msg.endswith("a grain must be a closed surface")
 
 
 def test_float32_far_from_the_origin_is_named_as_the_cause(tmp_path, capsys):
