@@ -23,6 +23,9 @@ COUNTS ?=
 # make study runs only the seeds it does not hold, reads those it does, and adds
 # each run it completes as soon as it is analysed
 ARCHIVE ?=
+# SET_ASIDE=1: a run folder of STUDY made with other parameters is renamed
+# FOLDER.old-K and started afresh (without it the study refuses and renames nothing)
+SET_ASIDE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
@@ -106,7 +109,8 @@ shapes: $(SHAPES_LIB)
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES)) \
-	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE))
+	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE)) \
+	    $(if $(SET_ASIDE),--set-aside)
 	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ]; then \
 	  $(PY) -m postproc.cli compare-results $(STUDY) || true; fi
 

@@ -62,7 +62,7 @@ def _archive_of_one_folder(tmp_path):
     good run record and records of the wrong shape."""
     import json
 
-    from postproc.provenance import code_hash
+    from postproc.provenance import ANALYSIS_VERSION, code_hash
     from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
 
     table = tmp_path / "study" / "spheres-ensemble"
@@ -74,7 +74,7 @@ def _archive_of_one_folder(tmp_path):
     (into / FOLDER_RECORD).write_text(json.dumps(_folder_record(str(table))))
     good = {"analyses": {"": "analysis-spheres-seed1"}, "info": None, "files": {}, "counts": [],
             "dump": {"name": "spheres-seed1.h5", "sha256": "0" * 64, "snapshots": 3},
-            "code": code_hash(), "saved": "2026-11-30T07:00:00"}
+            "version": ANALYSIS_VERSION, "code": code_hash(), "saved": "2026-11-30T07:00:00"}
     records = {"seed1": good, "seed2": [1, 2], "seed3": {**good, "dump": "spheres-seed3.h5"},
                "seed4": {k: v for k, v in good.items() if k != "analyses"},
                "seed5": {**good, "files": {"a.csv": 7}}, "seed6": "{broken",

@@ -194,6 +194,7 @@ def test_tangential_kernel_elastic_then_coulomb():
 
 
 def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
+    from yade_scripts.presets import ConfigError
     from yade_scripts.study import _set_aside_if_changed, finished
 
     folder = tmp_path / "spheres"
@@ -201,7 +202,10 @@ def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
     assert not finished(str(folder))                    # generated, not run
     _set_aside_if_changed(str(folder), "tiny", "spheres", None)
     assert folder.exists()                              # same parameters: kept
-    _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})
+    with pytest.raises(ConfigError, match=r"spheres: a run folder of other parameters \(kappa\); nothing renamed"):
+        _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})    # not asked: refused
+    assert folder.exists() and not (tmp_path / "spheres.old-1").exists()
+    _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500}, set_aside=True)
     assert not folder.exists() and (tmp_path / "spheres.old-1").exists()
 
 

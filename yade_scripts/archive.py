@@ -4,11 +4,13 @@
 
 A 5000-grain study runs for many hours, longer than a host may be kept: a
 new host starts with none of the old one's run folders. The archive keeps,
-of every run of STUDY that is complete, adds up and is analysed by today's
-code, what the report reads (the analysis folders' numbers: ``*.csv``,
+of every run of STUDY that is complete, adds up and is analysed under
+today's analysis version (:data:`postproc.provenance.ANALYSIS_VERSION`),
+what the report reads (the analysis folders' numbers: ``*.csv``,
 ``*.json``, ``*.txt``; no figures, no dump) and its record
 ``<stem>.archived.json``: the dump's name, size, snapshot count and SHA-256,
-the analysis code's hash (:func:`postproc.provenance.code_hash`), the
+the analysis version and, as provenance, the analysis code's hash
+(:func:`postproc.provenance.code_hash`), the
 SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
 (``DEST/<run folder>/``, each with ``archive.json``: its parameters and a
 fingerprint of its shape library's content), so it is small (about 0.4 MB
@@ -18,9 +20,15 @@ a 5000-grain S1 seed) and can be committed.
 DEST``) then runs only the seeds DEST does not hold: an archived seed is
 used as it is (:func:`archived`) when its run folder has the same
 parameters and shape library, its files are those recorded and its
-analysis was made by today's code, and it is never run again, so no seed
-is counted twice; any other archived seed is named with the reason and
-run again. A seed whose complete dump is on this host is analysed from it,
+analysis version is today's (:func:`postproc.provenance.version_of`: a
+record older than the version reads its code hash through
+:data:`postproc.provenance.HISTORICAL_CODE_VERSIONS`), and it is never
+run again, so no seed is counted twice. An archived record is never
+deleted or replaced by another version's: a study that meets one of
+another version, other parameters or another shape library refuses before
+it runs anything (:func:`conflicts`); write to a new archive, or read the
+old one with the code that made it. A record of the same version whose
+files are damaged is named and its seed runs again. A seed whose complete dump is on this host is analysed from it,
 as always. ``--collect DIR --archive DEST`` reads it the same way. Runs
 carried over this way come from other hosts: each repeats step for step
 only on its own host's CPU (docs/measurements.md, "Preparation"), and the
@@ -120,8 +128,9 @@ def _analysis_folders(dump):
 
 def _made_from(folder, dump):
     """None when ``folder`` holds an analysis (summary.csv, source.json) of
-    the dump file ``dump`` as it is now, made by today's code; else why not."""
-    from postproc.provenance import SOURCE_FILE, code_hash, input_files
+    the dump file ``dump`` as it is now, made under today's analysis
+    version; else why not."""
+    from postproc.provenance import SOURCE_FILE, input_files, is_today
 
     try:
         with open(os.path.join(folder, SOURCE_FILE)) as fh:
@@ -130,8 +139,8 @@ def _made_from(folder, dump):
             return "no summary.csv"
     except (OSError, ValueError):
         return "no readable source.json"
-    if src.get("code") != code_hash():
-        return "made by other analysis code"
+    if not is_today(src):
+        return "made under another analysis version"
     if src.get("input") != input_files(dump):
         return "made from another dump file"
     return None
@@ -209,11 +218,12 @@ def save(study, dest, echo=print):
     analysis was made from its dump by today's code, with every analysis of
     it by another contact count that is current too.
 
-    A run already archived from the same dump by today's code is left as it
-    is; a run whose seed is archived from another dump (another host's
-    run) by today's code is refused, so that no seed is archived twice; an
-    archived run made by other analysis code (never used again,
-    :func:`archived`) is replaced. Each run's files are written to a
+    A run already archived from the same dump under today's analysis
+    version is left as it is (or, analysed now by more contact counts,
+    archived again with them); a run whose seed is archived from another
+    dump (another host's run) is refused, so that no seed is archived
+    twice; a run archived under another analysis version is never replaced
+    (skipped, with why: that record is another version's result). Each run's files are written to a
     temporary folder and moved into place, its record last: a run is in
     the archive when, and only when, its record is. One process adds to an
     archive at a time (``DEST/archive.lock``; another waits for it).
@@ -263,7 +273,7 @@ def _lock(dest, echo):
 
 def _save(study, dest, echo):
     """:func:`save`'s work, the archive's lock held."""
-    from postproc.provenance import code_hash
+    from postproc.provenance import ANALYSIS_VERSION, code_hash, is_today
     from postproc.schema import DumpReader
 
     from .batch import table_lines
@@ -297,9 +307,15 @@ def _save(study, dest, echo):
             counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
             record_path = os.path.join(into, stem + RUN_RECORD)
             old = _read_json(record_path)
-            if old and _run_record_fault(old):
-                old = {}                         # unreadable: archived again below
-            current = bool(old) and old.get("code") == code_hash()
+            if old is not None and (not old or _run_record_fault(old)):
+                skipped.append(f"{where}: its archived record {record_path} cannot be read; not replaced "
+                               "(mend it from git, or move it aside)")
+                continue
+            current = bool(old) and is_today(old)
+            if old and not current:
+                skipped.append(f"{where}: archived under another analysis version; never replaced "
+                               "(archive to a new folder)")
+                continue
             if current and _same_file(old, into, dump) and set(counts) <= set(old.get("counts", [])):
                 skipped.append(f"{where}: already archived")
                 continue
@@ -314,8 +330,7 @@ def _save(study, dest, echo):
                                f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
                 continue
             if old is not None:
-                again = "with more counts" if current else "its archived run was analysed by other code"
-                echo(f"[archive] {where}: archived again ({again})")
+                echo(f"[archive] {where}: archived again (with more counts)")
                 os.remove(record_path)
             with DumpReader(dump) as r:
                 n = len(r)
@@ -327,7 +342,7 @@ def _save(study, dest, echo):
                       "info": info if info in files else None,
                       "dump": {"name": os.path.basename(dump), "bytes": os.path.getsize(dump),
                                "snapshots": n, "sha256": sha},
-                      "code": code_hash(), "counts": sorted(counts), "files": files,
+                      "version": ANALYSIS_VERSION, "code": code_hash(), "counts": sorted(counts), "files": files,
                       "saved": datetime.datetime.now().isoformat(timespec="seconds")}
             _write_json(record_path, record)
             saved.append(where)
@@ -383,9 +398,9 @@ def archived(dest, table, counts=()):
 
     A run is usable when its record is there, the archive's copy of the run
     folder has the same parameters and shape library as ``table``, every
-    file it records has the recorded SHA-256, its analyses were made by
-    today's analysis code, and it has an analysis by every contact count of
-    ``counts``.
+    file it records has the recorded SHA-256, its analysis version is
+    today's (:func:`postproc.provenance.is_today`), and it has an analysis
+    by every contact count of ``counts``.
 
     Parameters
     ----------
@@ -403,7 +418,23 @@ def archived(dest, table, counts=()):
         "analysis" (its primary analysis folder in the archive), "counts"
         {count: folder}, "info" (its run.info.json, or None) and "record".
     """
-    from postproc.provenance import code_hash
+    return {k: v[:2] for k, v in _judge(dest, table, counts).items()}
+
+
+def conflicts(dest, table, counts=()):
+    """One line per archived run of ``table`` in ``dest`` that a study must
+    not run again over: archived under another analysis version, or from a
+    run folder of other parameters or another shape library (running it
+    here would put another result beside, or over, that record). Empty
+    when there is none or no archive; see :func:`archived`."""
+    return [line for how, line, conflict in _judge(dest, table, counts).values() if conflict]
+
+
+def _judge(dest, table, counts):
+    """:func:`archived`'s verdicts, each with a third item: True when the
+    run is refused for another version, other parameters or another shape
+    library (:func:`conflicts`)."""
+    from postproc.provenance import is_today, version_of
 
     if not dest:
         return {}
@@ -422,13 +453,16 @@ def archived(dest, table, counts=()):
         fault = _run_record_fault(rec)
         named = None if fault else rec.get("dump", {}).get("name")
         name = named if isinstance(named, str) and named else f[: -len(RUN_RECORD)] + ".h5"
-        why = None
+        why, conflict = None, False
         if unread or fault:
             why = unread or fault
         elif not same:
-            why = "archived from a run folder of other parameters or another shape library"
-        elif rec.get("code") != code_hash():
-            why = "analysed by other analysis code, and its dump is not here to analyse again"
+            why, conflict = "archived from a run folder of other parameters or another shape library", True
+        elif not is_today(rec):
+            v = version_of(rec)
+            why = (f"analysed under analysis version {v}" if v is not None else
+                   f"analysed by code {str(rec.get('code'))[:12]} of no known analysis version")
+            why, conflict = why + ", not today's", True
         else:
             for rel, sha in rec.get("files", {}).items():
                 p = os.path.join(into, rel)
@@ -439,11 +473,12 @@ def archived(dest, table, counts=()):
             if why is None and missing:
                 why = f"no analysis by the {', '.join(missing)} count"
         if why:
-            out[name] = ("refused", f"{into}/{name} archived but not used: {why}; it runs again")
+            out[name] = ("refused", f"{into}/{name} archived but not used: {why}"
+                         + ("" if conflict else "; it runs again"), conflict)
             continue
         where = {c: os.path.join(into, rel) for c, rel in rec["analyses"].items()}
         out[name] = ("ok", {"analysis": where.pop(""), "counts": where, "record": rec,
-                            "info": rec.get("info") and os.path.join(into, rec["info"])})
+                            "info": rec.get("info") and os.path.join(into, rec["info"])}, False)
     return out
 
 

@@ -69,11 +69,12 @@ def finished(folder):
     return os.path.exists(os.path.join(folder, "run.info.json")) and complete(os.path.join(folder, "run.h5"))
 
 
-def _set_aside_if_changed(folder, preset, sample, overrides):
+def _set_aside_if_changed(folder, preset, sample, overrides, set_aside=False):
     """A run folder made with other parameters (its params.json against the
-    preset's, :func:`yade_scripts.parameters.changed`) is renamed
-    FOLDER.old-K, so that the run is generated afresh (and never silently
-    reused)."""
+    preset's, :func:`yade_scripts.parameters.changed`) is never reused: with
+    ``set_aside`` it is renamed FOLDER.old-K, so that the run is generated
+    afresh; without, ConfigError (one line naming the folder, the changed
+    parameters and the way out), and nothing is renamed."""
     path = os.path.join(folder, "params.json")
     if not os.path.exists(path):
         return
@@ -82,6 +83,10 @@ def _set_aside_if_changed(folder, preset, sample, overrides):
     names = changed(old, {"preset": preset, **resolve(preset, sample, overrides)})
     if not names:
         return
+    if not set_aside:
+        raise ConfigError(f"{folder}: a run folder of other parameters ({', '.join(names)}); nothing renamed "
+                          "or run: give another study folder (STUDY=DIR, --out DIR), or ask to keep it as "
+                          f"{os.path.basename(folder)}.old-K and start afresh (SET_ASIDE=1, --set-aside)")
     k = 1
     while os.path.exists(f"{folder}.old-{k}"):
         k += 1
@@ -103,13 +108,15 @@ def _need_yade():
         raise ConfigError("yade is not installed (make installs Debian's yade)")
 
 
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True):
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True,
+                set_aside=False):
     """Run one seed of each sample side by side: the study of ``python -m
     yade_scripts.study`` with one seed (``--ensemble 1``).
 
     Each sample's run folder ``OUT/<sample>`` is generated when it is not
     there (:func:`yade_scripts.generate.generate`); one made with other
-    parameters is first set aside as ``OUT/<sample>.old-K``, and one that
+    parameters is refused (ConfigError, nothing renamed) or, with
+    ``set_aside``, first set aside as ``OUT/<sample>.old-K``; one that
     holds a complete dump and its ``run.info.json`` is not run again. The
     others run at once through :func:`yade_scripts.pool.run_pool`, each on
     its own threads (polyhedra on the compiled kernel: every core of the
@@ -175,7 +182,7 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     jobs = []
     for s in samples:
         folder = os.path.join(out, s)
-        _set_aside_if_changed(folder, preset, s, overrides)
+        _set_aside_if_changed(folder, preset, s, overrides, set_aside)
         if finished(folder):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
@@ -189,13 +196,14 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None,
-                 counts=None, figures=True, archive=None):
+                 counts=None, figures=True, archive=None, set_aside=False):
     """Run seeds 1..n of each sample in one schedule: the study of ``make
     study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
 
     Each sample gets the run folder ``OUT/<sample>-ensemble`` with a table
     of the seeds (generated when it is not there; one made with other
-    parameters is first set aside as ``.old-K``; one with the same
+    parameters is refused (ConfigError, nothing renamed) or, with
+    ``set_aside``, first set aside as ``.old-K``; one with the same
     parameters gets its table written again, for another n). Every seed of
     every sample is a job of :func:`yade_scripts.pool.run_pool` on ``jobs``
     cores: longest first by :func:`yade_scripts.slurm.estimate`, the seeds
@@ -237,6 +245,12 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         :data:`ARCHIVED`. Each run that completes here is then analysed at
         once, on the first free core (``after_first`` of
         :func:`yade_scripts.pool.run_pool`), and added to the archive.
+        An archive holding a run of another analysis version, other
+        parameters or another shape library (:func:`yade_scripts.archive.conflicts`)
+        is refused before anything runs: ConfigError naming those runs.
+    set_aside : bool, optional
+        Rename a run folder of other parameters ``.old-K`` and start it
+        afresh (default False: ConfigError, nothing renamed).
 
     Returns
     -------
@@ -256,10 +270,10 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     from .pool import Job, run_pool
     from .slurm import estimate
 
-    pool, rows, kept = [], {}, set()
+    pool, rows, kept, clash = [], {}, set(), []
     for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
-        _set_aside_if_changed(folder, preset, s, overrides)
+        _set_aside_if_changed(folder, preset, s, overrides, set_aside)
         seeds = list(range(1, n + 1))
         if not os.path.exists(os.path.join(folder, "triaxial.py")):
             generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
@@ -268,11 +282,18 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         p = resolve(preset, s, overrides)
         cost = estimate(p)["core_hours"] * 3600
         rows[s] = read_table(folder)
+        clash += _conflicts(archive, folder, counts)
         kept.update(_from_archive(archive, folder, [dump_of(folder, r) for _, r in rows[s]], counts))
         pool += [Job(folder, k, r["description"], dump_of(folder, r), cost, tag=s,
                      widen=(s == "polyhedra" and p["contact_engine"] == "kernel"),
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s] if dump_of(folder, r) not in kept]
+    if clash:
+        names = ", ".join(line.split(" archived but not used")[0] for line in clash[:3])
+        raise ConfigError(f"the archive {archive} holds {len(clash)} run(s) of another analysis version, other "
+                          f"parameters or another shape library ({names}{', ...' if len(clash) > 3 else ''}); "
+                          "nothing run, nothing replaced: name a new archive (ARCHIVE=NEW_DIR), or read this "
+                          "one with the code that made it (docs/study.md)")
     if pool:
         _need_yade()
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
@@ -305,6 +326,16 @@ def _from_archive(archive, table, dumps, counts):
         else:
             print(f"[study] {what}", flush=True)
     return out
+
+
+def _conflicts(archive, table, counts):
+    """:func:`yade_scripts.archive.conflicts` for the study's ``counts``
+    (None: :data:`postproc.study.counts.EXTRA_COUNTS`); [] without an archive."""
+    from postproc.study.counts import EXTRA_COUNTS
+
+    from .archive import conflicts
+
+    return conflicts(archive, table, counts=EXTRA_COUNTS if counts is None else counts) if archive else []
 
 
 def _archived(archive, table, counts):
@@ -849,6 +880,9 @@ def main(argv=None):
     ap.add_argument("--archive", metavar="DEST",
                     help="an archive of analysed runs (python -m yade_scripts.archive STUDY DEST): seeds it "
                          "holds are not run, their archived analyses are used (ensembles and --collect)")
+    ap.add_argument("--set-aside", action="store_true",
+                    help="rename a run folder of other parameters FOLDER.old-K and start it afresh "
+                         "(without: the study refuses it and renames nothing)")
     ap.add_argument("--no-figures", action="store_true",
                     help="numbers only: the analyses and the report without their figures (faster)")
     args = ap.parse_args(argv)
@@ -927,12 +961,12 @@ def _study(args, overrides):
     try:
         if args.ensemble == 1:
             codes = run_samples(args.out, args.preset, overrides, args.library, counts=args.counts,
-                                figures=not args.no_figures)
+                                figures=not args.no_figures, set_aside=args.set_aside)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
                                 job_threads={"polyhedra": args.job_threads}, counts=args.counts,
-                                figures=not args.no_figures, archive=args.archive)
+                                figures=not args.no_figures, archive=args.archive, set_aside=args.set_aside)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
