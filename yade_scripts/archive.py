@@ -482,6 +482,72 @@ def _judge(dest, table, counts):
     return out
 
 
+def study_folders(dest, out, library=None):
+    """Generate in ``out`` the run folders of the archive ``dest``'s study,
+    as the study made them (each archived folder's preset, sample, other
+    parameters and seeds, from its ``archive.json`` and run records), so
+    that ``python -m yade_scripts.study --collect OUT --archive DEST``
+    reads the archive on a host that has none of the study's folders.
+
+    Parameters
+    ----------
+    dest : str
+        The archive.
+    out : str
+        The study folder to make (it must not hold these run folders yet).
+    library : str, optional
+        The polyhedra's shape library (default
+        :data:`yade_scripts.generate.DEFAULT_LIBRARY`, ``make shapes``); its
+        content must be the archived one's (:func:`library_fingerprint`).
+
+    Returns
+    -------
+    list of str
+        The run folders made.
+
+    Raises
+    ------
+    ConfigError
+        ``dest`` holds no archived run folder, one folder's record cannot
+        be read, or a generated folder's parameters or shape library differ
+        from the archived ones (named; nothing else is checked then).
+    """
+    from .generate import DEFAULT_LIBRARY, generate
+    from .presets import resolve
+
+    names = sorted(n for n in os.listdir(dest) if os.path.isfile(os.path.join(dest, n, FOLDER_RECORD))) \
+        if os.path.isdir(dest) else []
+    if not names:
+        raise ConfigError(f"{dest}: no archived run folder ({FOLDER_RECORD}) in it")
+    made = []
+    for name in names:
+        rec = _read_json(os.path.join(dest, name, FOLDER_RECORD))
+        params = (rec or {}).get("params")
+        if not isinstance(params, dict) or "preset" not in params or "sample" not in params:
+            raise ConfigError(f"{dest}/{name}/{FOLDER_RECORD}: no parameters (preset, sample) in it")
+        seeds = sorted({int(r["seed"]) for r in (_read_json(os.path.join(dest, name, f)) or {}
+                                                  for f in os.listdir(os.path.join(dest, name))
+                                                  if f.endswith(RUN_RECORD))
+                        if str(r.get("seed", "")).isdigit()})
+        if not seeds:
+            raise ConfigError(f"{dest}/{name}: no archived run with a seed")
+        base = resolve(params["preset"], params["sample"])
+        overrides = {k: v for k, v in params.items() if k in base and base[k] != v and k not in ("seed", "library")}
+        table = os.path.join(out, name)
+        generate(table, params["preset"], params["sample"], overrides, seeds=seeds,
+                 library=library or DEFAULT_LIBRARY)
+        mine = _folder_record(table)
+        if mine != rec:
+            keys = sorted(k for k in set(mine["params"]) | set(params)
+                          if mine["params"].get(k) != params.get(k))
+            what = (f"parameters {', '.join(keys)}" if keys else
+                    f"shape library (fingerprint {str(mine['library_fingerprint'])[:12]}, archived "
+                    f"{str(rec.get('library_fingerprint'))[:12]}: give the library it was run on)")
+            raise ConfigError(f"{table}: generated with other {what} than {dest}/{name}")
+        made.append(table)
+    return made
+
+
 def _read_json(path):
     """The JSON object (a dict) in the record ``path``: None when there is
     no such file, {} when it cannot be read or holds no object."""
