@@ -334,6 +334,15 @@ def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_librar
     capsys.readouterr()
     assert archive_main([str(out), str(arch)]) == 0                # a second time: nothing added
     assert capsys.readouterr().out.count("already archived") == 4
+    # extending it: a dry run of 3 seeds on a new host takes 2 + 2 from it and would run seed 3 of each
+    plan = tmp_path / "plan"
+    assert main(["--preset", "tiny", "--out", str(plan), "--ensemble", "3", "--library", shape_library,
+                 "--archive", str(arch), "--dry-run"]) == 0
+    assert "2 + 2 archived and usable; 1 + 1 to run" in capsys.readouterr().out and not plan.exists()
+    # on the study's own folder, whose dumps are here
+    assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "3", "--library", shape_library,
+                 "--archive", str(arch), "--dry-run"]) == 0
+    assert "0 + 0 archived and usable; 2 + 2 complete here; 1 + 1 to run" in capsys.readouterr().out
     # one record of an unknown analysis version: the study refuses before it runs anything, and
     # replaces nothing
     stale = arch / "spheres-ensemble" / f"spheres-seed2{RUN_RECORD}"

@@ -607,6 +607,9 @@ def main(argv=None):
         file could not be read or written (OSError), one line on stderr.
         (A bad command line exits 2 through argparse.)
     """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] in (["collect"], ["collect-at-commit"]):
+        return _collect_main(argv)
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.archive", description=__doc__.splitlines()[0])
     ap.add_argument("study", help="the study folder (or one generated run folder)")
     ap.add_argument("dest", help="the archive's folder, e.g. reference_data/<study name>")
@@ -620,6 +623,38 @@ def main(argv=None):
         print(f"[archive] {line}", flush=True)
     print(f"archive: {len(saved)} run(s) added to {args.dest}, {len(skipped)} not", file=sys.stderr)
     return 0
+
+
+def _collect_main(argv):
+    """``collect ARCHIVE OUT [--library LIB]``: the archive's study folders
+    (:func:`study_folders`) collected with today's code; ``collect-at-commit
+    ARCHIVE OUT``: with the code of the commit that made the archive
+    (:mod:`yade_scripts.archive_commit`). Exit 0, 2 with one line when
+    refused, else the collect's exit code."""
+    ap = argparse.ArgumentParser(prog=f"python -m yade_scripts.archive {argv[0]}")
+    ap.add_argument("archive")
+    ap.add_argument("out", help="a new folder")
+    if argv[0] == "collect":
+        ap.add_argument("--library", help="the shape library the study ran on (default runs/shapes/library.h5)")
+    args = ap.parse_args(argv[1:])
+    try:
+        if argv[0] == "collect-at-commit":
+            from .archive_commit import collect_at_commit
+
+            collect_at_commit(args.archive, args.out)
+            return 0
+        if os.path.exists(args.out) and os.listdir(args.out):
+            raise ConfigError(f"{args.out}: exists and is not empty; give a new folder")
+        study_folders(args.archive, args.out, args.library)
+    except (ConfigError, OSError) as exc:
+        print(f"archive: error: {exc}", file=sys.stderr)
+        return 2
+    from .study import main as study_main
+
+    counts = sorted({c for n in os.listdir(args.archive) if os.path.isdir(os.path.join(args.archive, n))
+                     for f in os.listdir(os.path.join(args.archive, n)) if f.endswith(RUN_RECORD)
+                     for c in (_read_json(os.path.join(args.archive, n, f)) or {}).get("counts", [])})
+    return study_main(["--collect", args.out, "--archive", args.archive, "--no-figures", "--counts", *counts])
 
 
 if __name__ == "__main__":
