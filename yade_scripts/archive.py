@@ -1,6 +1,8 @@
 """A study's analysed runs kept without their dumps, to carry a long study from host to host.
 
     python -m yade_scripts.archive STUDY DEST
+    python -m yade_scripts.archive collect DEST OUT [--library LIB]
+    python -m yade_scripts.archive collect-at-commit DEST OUT
 
 A 5000-grain study runs for many hours, longer than a host may be kept: a
 new host starts with none of the old one's run folders. The archive keeps,
@@ -29,7 +31,12 @@ another version, other parameters or another shape library refuses before
 it runs anything (:func:`conflicts`); write to a new archive, or read the
 old one with the code that made it. A record of the same version whose
 files are damaged is named and its seed runs again. A seed whose complete dump is on this host is analysed from it,
-as always. ``--collect DIR --archive DEST`` reads it the same way. Runs
+as always. ``--collect DIR --archive DEST`` reads it the same way. ``collect DEST OUT`` generates the study's run folders in
+OUT from the archive's records (:func:`study_folders`) and collects them
+with the archive, on a host that has none of them; ``collect-at-commit``
+does it with the code of the commit that made the archive
+(:mod:`yade_scripts.archive_commit`), for an archive of another analysis
+version. Runs
 carried over this way come from other hosts: each repeats step for step
 only on its own host's CPU (docs/measurements.md, "Preparation"), and the
 statistics over seeds are what they share.
