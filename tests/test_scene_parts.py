@@ -242,3 +242,22 @@ def test_presets_choose_the_contact_engine_and_the_study_its_threads():
         resolve("default", "polyhedra", {"contact_engine": "yade"})
     with pytest.raises(ConfigError, match="contact_engine must be one of"):
         resolve("default", "polyhedra", {"contact_engine": "cgal"})
+
+
+def test_a_study_on_a_folder_of_other_parameters_refuses_and_renames_nothing(tmp_path, capsys, shape_library):
+    """``python -m yade_scripts.study`` on a study folder whose ensemble was
+    made with other parameters exits 2 in one line and renames nothing; the
+    other sample's folder is not touched either."""
+    from yade_scripts.study import main
+
+    out = tmp_path / "study"
+    generate(str(out / "polyhedra-ensemble"), "tiny", "polyhedra", seeds=[1, 2], library=shape_library)
+    generate(str(out / "spheres-ensemble"), "tiny", "spheres", {"kappa": 500}, seeds=[1, 2])
+    table = (out / "polyhedra-ensemble" / "table.txt").read_text()
+    assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "3", "--no-figures",
+                 "--library", shape_library]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "spheres-ensemble: a run folder of other parameters (kappa); nothing renamed" in err[0]
+    assert "SET_ASIDE=1" in err[0]
+    assert sorted(p.name for p in out.iterdir() if p.is_dir()) == ["polyhedra-ensemble", "spheres-ensemble"]
+    assert (out / "polyhedra-ensemble" / "table.txt").read_text() == table          # not rewritten for 3 seeds

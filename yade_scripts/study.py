@@ -183,6 +183,9 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
     _need_yade()
     jobs = []
+    if not set_aside:                  # every sample's folder checked before any is touched
+        for s in samples:
+            _set_aside_if_changed(os.path.join(out, s), preset, s, overrides)
     for s in samples:
         folder = os.path.join(out, s)
         _set_aside_if_changed(folder, preset, s, overrides, set_aside)
@@ -274,6 +277,9 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     from .slurm import estimate
 
     pool, rows, kept, clash = [], {}, set(), []
+    if not set_aside:                  # every sample's folder checked before any is touched
+        for s in samples:
+            _set_aside_if_changed(os.path.join(out, f"{s}-ensemble"), preset, s, overrides)
     for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
         _set_aside_if_changed(folder, preset, s, overrides, set_aside)
