@@ -23,10 +23,15 @@ COUNTS ?=
 # make study runs only the seeds it does not hold, reads those it does, and adds
 # each run it completes as soon as it is analysed
 ARCHIVE ?=
+# DRY_RUN=1: make study says what it would take from ARCHIVE and run, and runs nothing
+DRY_RUN ?=
+# SET_ASIDE=1: a run folder of STUDY made with other parameters is renamed
+# FOLDER.old-K and started afresh (without it the study refuses and renames nothing)
+SET_ASIDE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
@@ -106,8 +111,9 @@ shapes: $(SHAPES_LIB)
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES)) \
-	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE))
-	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ]; then \
+	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE)) \
+	    $(if $(SET_ASIDE),--set-aside) $(if $(DRY_RUN),--dry-run)
+	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ] && [ -z "$(DRY_RUN)" ]; then \
 	  $(PY) -m postproc.cli compare-results $(STUDY) || true; fi
 
 # Keep STUDY's analysed runs (numbers only, no dumps) in ARCHIVE, to carry a
@@ -115,6 +121,16 @@ study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 archive: venv
 	@test -n "$(ARCHIVE)" || { echo "make archive: give ARCHIVE=DEST (e.g. reference_data/<study name>)"; exit 2; }
 	$(PY) -m yade_scripts.archive $(STUDY) $(ARCHIVE)
+
+# An archive's study collected on a host that has none of its run folders
+# (STUDY, a new folder; today's code): make collect-archive
+# ARCHIVE=reference_data/claim6-5000 STUDY=runs/claim6, then postproc results
+# STUDY --out reference_data/claim6-5000.json gives back the committed file.
+# An archive of another analysis version: python -m yade_scripts.archive
+# collect-at-commit ARCHIVE OUT (its commit's code, docs/study.md).
+collect-archive: venv $(SHAPES_LIB)
+	@test -n "$(ARCHIVE)" || { echo "make collect-archive: give ARCHIVE=DIR"; exit 2; }
+	$(PY) -m yade_scripts.archive collect $(ARCHIVE) $(STUDY) --library $(SHAPES_LIB)
 
 # After make study: its results against the committed ones, which the README's
 # claims table shows ("same as the README", or each difference; exit 1 then).

@@ -2,15 +2,24 @@
 
 :func:`postproc.pipeline.analyze_path` writes ``OUT/source.json`` beside
 ``summary.csv``: the input's files (name, size in bytes, modification time
-in ns), the analysis options, and a hash of the analysis code (every
-source file of the ``postproc`` and ``shapes`` packages, comments and
-docstrings left out; the options' ``figures`` only when False). An analysis is
-current (:func:`is_current`) when all three are what they would be now (but
-that one with figures is current for a request without them), so
+in ns), the analysis options, the analysis version
+(:data:`ANALYSIS_VERSION`) and, as provenance only, a hash of the analysis
+code (every source file of the ``postproc`` and ``shapes`` packages,
+comments and docstrings left out; the options' ``figures`` only when
+False). An analysis is current (:func:`is_current`) when its input, options
+and analysis version are what they would be now (but that one with figures
+is current for a request without them), so
 a rerun of the study (``make study``, ``yade_scripts.study --collect``)
 keeps it instead of analysing a 5000-grain dump again (minutes per dump),
-and redoes it when the dump, the options or the code changed. A folder
-without ``source.json`` (made before it existed) is never current.
+and redoes it when the dump, the options or the analysis version changed.
+A folder without ``source.json`` (made before it existed) is never current.
+
+The version, not the code hash, says whether old numbers are today's
+numbers: the code hash changes with any edit (an input check, a message),
+the version only when an output number changes. A record written before
+the version existed carries only its code hash; :func:`version_of` reads it
+through :data:`HISTORICAL_CODE_VERSIONS`, and a code hash not in that table
+has no version (never current, never used from an archive).
 """
 from __future__ import annotations
 
@@ -28,6 +37,72 @@ SOURCE_FILE = "source.json"
 PACKAGES = ("postproc", "shapes")
 #: the code's files that count
 CODE_SUFFIXES = (".py", ".c", ".h")
+
+#: The analysis version: an integer that must be incremented by every change
+#: to ``postproc/`` or ``shapes/`` that moves any number an analysis writes
+#: (summary.csv, the other tables, the JSON records), and only then.
+#: tests/test_analysis_golden.py holds a digest of every output number of
+#: committed fixture dumps under this version and fails when the numbers
+#: change and the version did not. After a bump, analyses and archived runs
+#: of the earlier version are no longer used: re-collect (or rerun) the
+#: committed results, or read an old archive with the code that made it
+#: (``python -m yade_scripts.archive collect-at-commit``).
+ANALYSIS_VERSION = 1
+
+#: code hashes (:func:`code_hash`) of analyses written before records named
+#: their version -> the version their numbers are (the commit whose tree has
+#: that hash). Each was checked by running tests/golden/analysis_digest.py
+#: against that commit's postproc/ and shapes/: the same digest as version
+#: 1's. c237acd4... made the committed archive reference_data/claim6-5000.
+#: Add no hash whose digest was not checked so.
+HISTORICAL_CODE_VERSIONS = {
+    "c237acd4bb6279825166a98265fa3598662f8f292f25a36eade50abedecce914": 1,     # c4d1cf9
+    "a10f2ba8bbe13ac43f31683ec10ecb358a0922f83307318af94aa03da21a7e5e": 1,     # cc57b28
+    "febbb1ced82ca2df6e789a9e94d929e9338104719c146700e129c60306693706": 1,     # 1132f6d
+    "926a4c8195ad08ee3ac64706126c9784460ae6070494f55492d96f85b2df2fe6": 1,     # 2169b80
+    "b96755e1f368e95bd01432ca756ca967385242c3586ca351940d9c01f0237e65": 1,     # 0a1156b
+    "0d55a8760ad58aa5ce3847912d508cbb7b7bab72e9160851f1bf6b7483148b9f": 1,     # 28e969a
+    "52bb03e9f6a91d5431d379619195490815d1b2d3592954409aedfb2eec3c730e": 1,     # 23dd53c
+    "3610b0e60342b7d05b02916bedf9a49b27d6f602c89461312b567964223d1970": 1,     # d1f831b
+    "278922f1e1bf437065b19de0d9f66d10dbc9d41c43d3db244d95590428d63e32": 1,     # 0c821d5
+    "d0e1fc60c4ffee38677bbc3696ea5566098683712d29c0279b73690e4e6c3d81": 1,     # 2219f6f
+    "cde2326896d91f1174971ce787e58f237371b63690e18fb1b3aab116f69daeb7": 1,     # 642d54a
+    "88d27a767b0759723b177fd2e35fd94e51fe93b612830f529d67f090510ea0ae": 1,     # bca27a8
+    "22bcb40d32816b368ed4d78b3a197e9f54c8fbaa0990ead582124037e4072773": 1,     # 2435ccb
+    "da46e0dbad97fb9d87207665d3474aeb4d85a682efc8844c0f2a6215d2ec42a1": 1,     # 675ade0
+    "67713b7a7c8377df95d6fd6ba2be49e15d275e9fe3519f1d2ac52437c0e5b91f": 1,     # 4d32836
+    "610a327dd34eaaf1ee730357dea20177820285db947b9c51028697a7ab39a643": 1,     # 179f5cf
+}
+
+
+def version_of(record):
+    """The analysis version of a provenance record (a source.json or an
+    archive's run record, a dict): its ``"version"`` when it names one,
+    else the version :data:`HISTORICAL_CODE_VERSIONS` gives its ``"code"``,
+    else None (unknown: never taken for today's numbers).
+
+    >>> version_of({"version": 3, "code": "x"})
+    3
+    >>> version_of({"code": "c237acd4bb6279825166a98265fa3598662f8f292f25a36eade50abedecce914"})
+    1
+    >>> version_of({"code": "0" * 64}) is None
+    True
+    """
+    if not isinstance(record, dict):
+        return None
+    v = record.get("version")
+    if isinstance(v, int) and not isinstance(v, bool):
+        return v
+    if v is not None:
+        return None
+    code = record.get("code")
+    return HISTORICAL_CODE_VERSIONS.get(code) if isinstance(code, str) else None
+
+
+def is_today(record):
+    """True when the provenance record ``record`` (a dict) has today's
+    analysis version (:func:`version_of` == :data:`ANALYSIS_VERSION`)."""
+    return version_of(record) == ANALYSIS_VERSION
 
 
 @lru_cache(maxsize=1)
@@ -90,19 +165,21 @@ def _options(options):
 
 
 def stamp(path, options):
-    """{"input", "options", "code"}: what an analysis of ``path`` with
-    :class:`postproc.pipeline.AnalysisOptions` ``options`` is made from
-    (JSON-ready). Raises OSError when ``path`` cannot be read."""
+    """{"input", "options", "version", "code"}: what an analysis of ``path``
+    with :class:`postproc.pipeline.AnalysisOptions` ``options`` is made from
+    (JSON-ready; "code" is provenance, not compared). Raises OSError when
+    ``path`` cannot be read."""
     files = input_files(path) + (input_files(options.atoms) if getattr(options, "atoms", None) else [])
-    return {"input": files, "options": _options(options), "code": code_hash()}
+    return {"input": files, "options": _options(options), "version": ANALYSIS_VERSION, "code": code_hash()}
 
 
 def is_current(path, out, options):
     """True when ``out`` holds an analysis (summary.csv) of ``path`` made with
-    ``options`` by today's code from today's input files (its source.json
-    equals :func:`stamp`, but that an analysis with figures is current for
-    one asked without them); False otherwise, also when anything is missing
-    or unreadable."""
+    ``options`` under today's analysis version (:func:`is_today`) from
+    today's input files (its source.json's input and options equal
+    :func:`stamp`'s, but that an analysis with figures is current for one
+    asked without them); False otherwise, also when anything is missing or
+    unreadable. The code hash is not compared."""
     try:
         if not os.path.exists(os.path.join(out, "summary.csv")):
             return False
@@ -112,7 +189,7 @@ def is_current(path, out, options):
         was = dict(old.get("options") or {})
         drew = was.pop("figures", True) is True     # recorded only when False
         want = now["options"].pop("figures", True) is True
-        return ({"input": old.get("input"), "options": was, "code": old.get("code")} == now
-                and (drew or not want))
+        return ({"input": old.get("input"), "options": was} == {"input": now["input"], "options": now["options"]}
+                and is_today(old) and (drew or not want))
     except (OSError, ValueError, AttributeError, TypeError):
         return False

@@ -62,7 +62,7 @@ def _archive_of_one_folder(tmp_path):
     good run record and records of the wrong shape."""
     import json
 
-    from postproc.provenance import code_hash
+    from postproc.provenance import ANALYSIS_VERSION, code_hash
     from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
 
     table = tmp_path / "study" / "spheres-ensemble"
@@ -74,7 +74,7 @@ def _archive_of_one_folder(tmp_path):
     (into / FOLDER_RECORD).write_text(json.dumps(_folder_record(str(table))))
     good = {"analyses": {"": "analysis-spheres-seed1"}, "info": None, "files": {}, "counts": [],
             "dump": {"name": "spheres-seed1.h5", "sha256": "0" * 64, "snapshots": 3},
-            "code": code_hash(), "saved": "2026-11-30T07:00:00"}
+            "version": ANALYSIS_VERSION, "code": code_hash(), "saved": "2026-11-30T07:00:00"}
     records = {"seed1": good, "seed2": [1, 2], "seed3": {**good, "dump": "spheres-seed3.h5"},
                "seed4": {k: v for k, v in good.items() if k != "analyses"},
                "seed5": {**good, "files": {"a.csv": 7}}, "seed6": "{broken",
@@ -122,3 +122,40 @@ def test_an_unreadable_folder_record_is_named_as_such(tmp_path, capsys):
     assert archive_main([str(tmp_path / "study"), str(tmp_path / "arch")]) == 2
     err = capsys.readouterr().err.strip()
     assert "archive.json: the archive's folder record cannot be read" in err and "\n" not in err
+
+
+def test_records_of_another_version_or_other_parameters_are_conflicts(tmp_path):
+    """A run archived under another analysis version (or by code of no known
+    version) is not used and is a conflict (the study refuses, replacing
+    nothing), not a seed to run again; one of the committed archive's old
+    code hash without a version is version 1's, used; the folder's
+    parameters changed make every record a conflict."""
+    import json
+
+    from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, archived, conflicts
+
+    table, into = _archive_of_one_folder(tmp_path)
+    for f in into.glob(f"*{RUN_RECORD}"):
+        if f.name != f"spheres-seed1{RUN_RECORD}":
+            f.unlink()
+    good = json.loads((into / f"spheres-seed1{RUN_RECORD}").read_text())
+    old = "c237acd4bb6279825166a98265fa3598662f8f292f25a36eade50abedecce914"
+    records = {"seed2": {**good, "version": 2}, "seed3": {**{k: v for k, v in good.items() if k != "version"},
+                                                         "code": "0" * 64},
+               "seed4": {**{k: v for k, v in good.items() if k != "version"}, "code": old}}
+    for k, rec in records.items():
+        rec = {**rec, "dump": {**rec["dump"], "name": f"spheres-{k}.h5"}}
+        (into / f"spheres-{k}{RUN_RECORD}").write_text(json.dumps(rec))
+    arch = str(tmp_path / "arch")
+    got = archived(arch, table)
+    assert got["spheres-seed1.h5"][0] == got["spheres-seed4.h5"][0] == "ok"
+    assert got["spheres-seed2.h5"][1].endswith("archived but not used: analysed under analysis version 2, not today's")
+    assert got["spheres-seed3.h5"][1].endswith(
+        "archived but not used: analysed by code 000000000000 of no known analysis version, not today's")
+    assert sorted(c.split(" archived")[0].rsplit("/", 1)[1] for c in conflicts(arch, table)) == \
+        ["spheres-seed2.h5", "spheres-seed3.h5"]
+    params = json.loads((into / FOLDER_RECORD).read_text())
+    params["params"]["preset"] = "default"
+    (into / FOLDER_RECORD).write_text(json.dumps(params))
+    assert len(conflicts(arch, table)) == 4
+    assert conflicts(None, table) == []

@@ -43,6 +43,34 @@ def test_an_analysis_records_its_source_and_is_current(analysed):
     assert provenance.is_current(dump, out, BARE)
 
 
+def test_the_analysis_version_not_the_code_hash_decides(analysed):
+    """Another code hash of today's version is current; a record with no
+    version reads its code hash through HISTORICAL_CODE_VERSIONS (the
+    committed archive's c237acd4... is version 1); an unknown hash or
+    another version is not current."""
+    dump, out = analysed
+    path = os.path.join(out, provenance.SOURCE_FILE)
+    rec = json.load(open(path))
+    assert rec["version"] == provenance.ANALYSIS_VERSION == 1
+
+    def with_(**kw):
+        new = {k: v for k, v in rec.items() if k not in kw or kw[k] is not None}
+        new.update({k: v for k, v in kw.items() if v is not None})
+        if kw.get("version", 0) is None:
+            new.pop("version", None)
+        json.dump(new, open(path, "w"))
+        return provenance.is_current(dump, out, BARE)
+
+    assert with_(code="f" * 64)                                         # an edit that moved no number
+    old = "c237acd4bb6279825166a98265fa3598662f8f292f25a36eade50abedecce914"
+    assert provenance.HISTORICAL_CODE_VERSIONS[old] == 1
+    assert with_(code=old, version=None)                                # written before versions: version 1
+    assert not with_(code="0" * 64, version=None)                       # no version, unknown hash
+    assert not with_(version=2)
+    assert not with_(version="1")                                       # not an integer: unknown
+    assert provenance.version_of({"code": old}) == 1 and provenance.version_of([]) is None
+
+
 def test_another_dump_other_options_or_no_record_is_not_current(analysed):
     dump, out = analysed
     assert not provenance.is_current(dump, out, AnalysisOptions(errors=False, figures=False))

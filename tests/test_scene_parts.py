@@ -194,6 +194,7 @@ def test_tangential_kernel_elastic_then_coulomb():
 
 
 def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
+    from yade_scripts.presets import ConfigError
     from yade_scripts.study import _set_aside_if_changed, finished
 
     folder = tmp_path / "spheres"
@@ -201,7 +202,10 @@ def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
     assert not finished(str(folder))                    # generated, not run
     _set_aside_if_changed(str(folder), "tiny", "spheres", None)
     assert folder.exists()                              # same parameters: kept
-    _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})
+    with pytest.raises(ConfigError, match=r"spheres: a run folder of other parameters \(kappa\); nothing renamed"):
+        _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500})    # not asked: refused
+    assert folder.exists() and not (tmp_path / "spheres.old-1").exists()
+    _set_aside_if_changed(str(folder), "tiny", "spheres", {"kappa": 500}, set_aside=True)
     assert not folder.exists() and (tmp_path / "spheres.old-1").exists()
 
 
@@ -238,3 +242,22 @@ def test_presets_choose_the_contact_engine_and_the_study_its_threads():
         resolve("default", "polyhedra", {"contact_engine": "yade"})
     with pytest.raises(ConfigError, match="contact_engine must be one of"):
         resolve("default", "polyhedra", {"contact_engine": "cgal"})
+
+
+def test_a_study_on_a_folder_of_other_parameters_refuses_and_renames_nothing(tmp_path, capsys, shape_library):
+    """``python -m yade_scripts.study`` on a study folder whose ensemble was
+    made with other parameters exits 2 in one line and renames nothing; the
+    other sample's folder is not touched either."""
+    from yade_scripts.study import main
+
+    out = tmp_path / "study"
+    generate(str(out / "polyhedra-ensemble"), "tiny", "polyhedra", seeds=[1, 2], library=shape_library)
+    generate(str(out / "spheres-ensemble"), "tiny", "spheres", {"kappa": 500}, seeds=[1, 2])
+    table = (out / "polyhedra-ensemble" / "table.txt").read_text()
+    assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "3", "--no-figures",
+                 "--library", shape_library]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "spheres-ensemble: a run folder of other parameters (kappa); nothing renamed" in err[0]
+    assert "SET_ASIDE=1" in err[0]
+    assert sorted(p.name for p in out.iterdir() if p.is_dir()) == ["polyhedra-ensemble", "spheres-ensemble"]
+    assert (out / "polyhedra-ensemble" / "table.txt").read_text() == table          # not rewritten for 3 seeds

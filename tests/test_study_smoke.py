@@ -311,8 +311,9 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, m
 def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_library, tmp_path, capsys):
     """``python -m yade_scripts.archive`` keeps every analysed run's numbers
     without its dump or figures; a new study folder (a new host) with
-    ``--archive`` runs none of the usable archived seeds, runs again the one
-    whose record is not today's code's, and reports the same numbers as the
+    ``--archive`` refuses an archive holding a record of another analysis
+    version (replacing nothing), runs none of the usable archived seeds and
+    only the one the archive lacks, and reports the same numbers as the
     study made from the dumps; ``--collect --archive`` reads it the same way."""
     import hashlib
 
@@ -333,25 +334,42 @@ def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_librar
     capsys.readouterr()
     assert archive_main([str(out), str(arch)]) == 0                # a second time: nothing added
     assert capsys.readouterr().out.count("already archived") == 4
-    # one record made by other analysis code: that seed is named and runs again
+    # extending it: a dry run of 3 seeds on a new host takes 2 + 2 from it and would run seed 3 of each
+    plan = tmp_path / "plan"
+    assert main(["--preset", "tiny", "--out", str(plan), "--ensemble", "3", "--library", shape_library,
+                 "--archive", str(arch), "--dry-run"]) == 0
+    assert "2 + 2 archived and usable; 1 + 1 to run" in capsys.readouterr().out and not plan.exists()
+    # on the study's own folder, whose dumps are here
+    assert main(["--preset", "tiny", "--out", str(out), "--ensemble", "3", "--library", shape_library,
+                 "--archive", str(arch), "--dry-run"]) == 0
+    assert "0 + 0 archived and usable; 2 + 2 complete here; 1 + 1 to run" in capsys.readouterr().out
+    # one record of an unknown analysis version: the study refuses before it runs anything, and
+    # replaces nothing
     stale = arch / "spheres-ensemble" / f"spheres-seed2{RUN_RECORD}"
     rec = json.loads(stale.read_text())
-    stale.write_text(json.dumps({**rec, "code": "0" * 64}))
+    stale.write_text(json.dumps({**{k: v for k, v in rec.items() if k != "version"}, "code": "0" * 64}))
+    before = {p: p.read_bytes() for p in arch.rglob("*") if p.is_file() and p.name != "archive.lock"}
     new = tmp_path / "new"
-    assert main(["--preset", "tiny", "--out", str(new), "--ensemble", "2", "--library", shape_library,
-                 "--archive", str(arch)]) == 0
+    args = ["--preset", "tiny", "--out", str(new), "--ensemble", "2", "--library", shape_library,
+            "--archive", str(arch)]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert f"the archive {arch} holds 1 run(s) of another analysis version" in err
+    assert "spheres-seed2.h5" in err and "ARCHIVE=NEW_DIR" in err and len(err.strip().splitlines()) == 1
+    assert {p: p.read_bytes() for p in arch.rglob("*") if p.is_file() and p.name != "archive.lock"} == before
+    assert not new.exists()                                     # refused before anything was made
+    # the archive without that seed's record (as if never archived): it runs here and is archived
+    stale.unlink()
+    assert main(args) == 0
     said = capsys.readouterr().out
     assert said.count("taken from the archive") == 3
-    assert "spheres-seed2.h5 archived but not used: analysed by other analysis code" in said
     assert "spheres-seed2 started" in said and "polyhedra-seed1 started" not in said
-    # the seed run here was analysed at once and replaced its stale record in the archive
-    from postproc.provenance import code_hash
+    from postproc.provenance import ANALYSIS_VERSION
     assert "spheres-seed2: the work after it started" in said
-    assert ("spheres-seed2.h5: archived again (its archived run was analysed by other code)"
-            in (new / "spheres-ensemble" / "spheres-seed2.after.log").read_text())
+    assert "spheres-seed2.h5: kept" in (new / "spheres-ensemble" / "spheres-seed2.after.log").read_text()
     rec2 = json.loads(stale.read_text())
     dump2 = new / "spheres-ensemble" / "spheres-seed2.h5"
-    assert rec2["code"] == code_hash() and rec2["dump"]["sha256"] == hashlib.sha256(dump2.read_bytes()).hexdigest()
+    assert rec2["version"] == ANALYSIS_VERSION and rec2["dump"]["sha256"] == hashlib.sha256(dump2.read_bytes()).hexdigest()
     manifest = json.loads((new / "manifest.json").read_text())
     assert [r["status"] for s in ("polyhedra", "spheres") for r in manifest[s]] == ["ok"] * 4
     assert [("archived" in r) for s in ("polyhedra", "spheres") for r in manifest[s]] == [True, True, True, False]

@@ -1,14 +1,18 @@
 """A study's analysed runs kept without their dumps, to carry a long study from host to host.
 
     python -m yade_scripts.archive STUDY DEST
+    python -m yade_scripts.archive collect DEST OUT [--library LIB]
+    python -m yade_scripts.archive collect-at-commit DEST OUT
 
 A 5000-grain study runs for many hours, longer than a host may be kept: a
 new host starts with none of the old one's run folders. The archive keeps,
-of every run of STUDY that is complete, adds up and is analysed by today's
-code, what the report reads (the analysis folders' numbers: ``*.csv``,
+of every run of STUDY that is complete, adds up and is analysed under
+today's analysis version (:data:`postproc.provenance.ANALYSIS_VERSION`),
+what the report reads (the analysis folders' numbers: ``*.csv``,
 ``*.json``, ``*.txt``; no figures, no dump) and its record
 ``<stem>.archived.json``: the dump's name, size, snapshot count and SHA-256,
-the analysis code's hash (:func:`postproc.provenance.code_hash`), the
+the analysis version and, as provenance, the analysis code's hash
+(:func:`postproc.provenance.code_hash`), the
 SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
 (``DEST/<run folder>/``, each with ``archive.json``: its parameters and a
 fingerprint of its shape library's content), so it is small (about 0.4 MB
@@ -18,10 +22,21 @@ a 5000-grain S1 seed) and can be committed.
 DEST``) then runs only the seeds DEST does not hold: an archived seed is
 used as it is (:func:`archived`) when its run folder has the same
 parameters and shape library, its files are those recorded and its
-analysis was made by today's code, and it is never run again, so no seed
-is counted twice; any other archived seed is named with the reason and
-run again. A seed whose complete dump is on this host is analysed from it,
-as always. ``--collect DIR --archive DEST`` reads it the same way. Runs
+analysis version is today's (:func:`postproc.provenance.version_of`: a
+record older than the version reads its code hash through
+:data:`postproc.provenance.HISTORICAL_CODE_VERSIONS`), and it is never
+run again, so no seed is counted twice. An archived record is never
+deleted or replaced by another version's: a study that meets one of
+another version, other parameters or another shape library refuses before
+it runs anything (:func:`conflicts`); write to a new archive, or read the
+old one with the code that made it. A record of the same version whose
+files are damaged is named and its seed runs again. A seed whose complete dump is on this host is analysed from it,
+as always. ``--collect DIR --archive DEST`` reads it the same way. ``collect DEST OUT`` generates the study's run folders in
+OUT from the archive's records (:func:`study_folders`) and collects them
+with the archive, on a host that has none of them; ``collect-at-commit``
+does it with the code of the commit that made the archive
+(:mod:`yade_scripts.archive_commit`), for an archive of another analysis
+version. Runs
 carried over this way come from other hosts: each repeats step for step
 only on its own host's CPU (docs/measurements.md, "Preparation"), and the
 statistics over seeds are what they share.
@@ -120,8 +135,9 @@ def _analysis_folders(dump):
 
 def _made_from(folder, dump):
     """None when ``folder`` holds an analysis (summary.csv, source.json) of
-    the dump file ``dump`` as it is now, made by today's code; else why not."""
-    from postproc.provenance import SOURCE_FILE, code_hash, input_files
+    the dump file ``dump`` as it is now, made under today's analysis
+    version; else why not."""
+    from postproc.provenance import SOURCE_FILE, input_files, is_today
 
     try:
         with open(os.path.join(folder, SOURCE_FILE)) as fh:
@@ -130,8 +146,8 @@ def _made_from(folder, dump):
             return "no summary.csv"
     except (OSError, ValueError):
         return "no readable source.json"
-    if src.get("code") != code_hash():
-        return "made by other analysis code"
+    if not is_today(src):
+        return "made under another analysis version"
     if src.get("input") != input_files(dump):
         return "made from another dump file"
     return None
@@ -209,11 +225,12 @@ def save(study, dest, echo=print):
     analysis was made from its dump by today's code, with every analysis of
     it by another contact count that is current too.
 
-    A run already archived from the same dump by today's code is left as it
-    is; a run whose seed is archived from another dump (another host's
-    run) by today's code is refused, so that no seed is archived twice; an
-    archived run made by other analysis code (never used again,
-    :func:`archived`) is replaced. Each run's files are written to a
+    A run already archived from the same dump under today's analysis
+    version is left as it is (or, analysed now by more contact counts,
+    archived again with them); a run whose seed is archived from another
+    dump (another host's run) is refused, so that no seed is archived
+    twice; a run archived under another analysis version is never replaced
+    (skipped, with why: that record is another version's result). Each run's files are written to a
     temporary folder and moved into place, its record last: a run is in
     the archive when, and only when, its record is. One process adds to an
     archive at a time (``DEST/archive.lock``; another waits for it).
@@ -263,7 +280,7 @@ def _lock(dest, echo):
 
 def _save(study, dest, echo):
     """:func:`save`'s work, the archive's lock held."""
-    from postproc.provenance import code_hash
+    from postproc.provenance import ANALYSIS_VERSION, code_hash, is_today
     from postproc.schema import DumpReader
 
     from .batch import table_lines
@@ -297,9 +314,15 @@ def _save(study, dest, echo):
             counts = {c: f for c, f in folders.items() if c and _made_from(f, dump) is None}
             record_path = os.path.join(into, stem + RUN_RECORD)
             old = _read_json(record_path)
-            if old and _run_record_fault(old):
-                old = {}                         # unreadable: archived again below
-            current = bool(old) and old.get("code") == code_hash()
+            if old is not None and (not old or _run_record_fault(old)):
+                skipped.append(f"{where}: its archived record {record_path} cannot be read; not replaced "
+                               "(mend it from git, or move it aside)")
+                continue
+            current = bool(old) and is_today(old)
+            if old and not current:
+                skipped.append(f"{where}: archived under another analysis version; never replaced "
+                               "(archive to a new folder)")
+                continue
             if current and _same_file(old, into, dump) and set(counts) <= set(old.get("counts", [])):
                 skipped.append(f"{where}: already archived")
                 continue
@@ -314,8 +337,7 @@ def _save(study, dest, echo):
                                f"{old.get('dump', {}).get('sha256', '?')[:12]}), not added")
                 continue
             if old is not None:
-                again = "with more counts" if current else "its archived run was analysed by other code"
-                echo(f"[archive] {where}: archived again ({again})")
+                echo(f"[archive] {where}: archived again (with more counts)")
                 os.remove(record_path)
             with DumpReader(dump) as r:
                 n = len(r)
@@ -327,7 +349,7 @@ def _save(study, dest, echo):
                       "info": info if info in files else None,
                       "dump": {"name": os.path.basename(dump), "bytes": os.path.getsize(dump),
                                "snapshots": n, "sha256": sha},
-                      "code": code_hash(), "counts": sorted(counts), "files": files,
+                      "version": ANALYSIS_VERSION, "code": code_hash(), "counts": sorted(counts), "files": files,
                       "saved": datetime.datetime.now().isoformat(timespec="seconds")}
             _write_json(record_path, record)
             saved.append(where)
@@ -383,9 +405,9 @@ def archived(dest, table, counts=()):
 
     A run is usable when its record is there, the archive's copy of the run
     folder has the same parameters and shape library as ``table``, every
-    file it records has the recorded SHA-256, its analyses were made by
-    today's analysis code, and it has an analysis by every contact count of
-    ``counts``.
+    file it records has the recorded SHA-256, its analysis version is
+    today's (:func:`postproc.provenance.is_today`), and it has an analysis
+    by every contact count of ``counts``.
 
     Parameters
     ----------
@@ -403,7 +425,23 @@ def archived(dest, table, counts=()):
         "analysis" (its primary analysis folder in the archive), "counts"
         {count: folder}, "info" (its run.info.json, or None) and "record".
     """
-    from postproc.provenance import code_hash
+    return {k: v[:2] for k, v in _judge(dest, table, counts).items()}
+
+
+def conflicts(dest, table, counts=()):
+    """One line per archived run of ``table`` in ``dest`` that a study must
+    not run again over: archived under another analysis version, or from a
+    run folder of other parameters or another shape library (running it
+    here would put another result beside, or over, that record). Empty
+    when there is none or no archive; see :func:`archived`."""
+    return [line for how, line, conflict in _judge(dest, table, counts).values() if conflict]
+
+
+def _judge(dest, table, counts):
+    """:func:`archived`'s verdicts, each with a third item: True when the
+    run is refused for another version, other parameters or another shape
+    library (:func:`conflicts`)."""
+    from postproc.provenance import is_today, version_of
 
     if not dest:
         return {}
@@ -422,13 +460,16 @@ def archived(dest, table, counts=()):
         fault = _run_record_fault(rec)
         named = None if fault else rec.get("dump", {}).get("name")
         name = named if isinstance(named, str) and named else f[: -len(RUN_RECORD)] + ".h5"
-        why = None
+        why, conflict = None, False
         if unread or fault:
             why = unread or fault
         elif not same:
-            why = "archived from a run folder of other parameters or another shape library"
-        elif rec.get("code") != code_hash():
-            why = "analysed by other analysis code, and its dump is not here to analyse again"
+            why, conflict = "archived from a run folder of other parameters or another shape library", True
+        elif not is_today(rec):
+            v = version_of(rec)
+            why = (f"analysed under analysis version {v}" if v is not None else
+                   f"analysed by code {str(rec.get('code'))[:12]} of no known analysis version")
+            why, conflict = why + ", not today's", True
         else:
             for rel, sha in rec.get("files", {}).items():
                 p = os.path.join(into, rel)
@@ -439,12 +480,79 @@ def archived(dest, table, counts=()):
             if why is None and missing:
                 why = f"no analysis by the {', '.join(missing)} count"
         if why:
-            out[name] = ("refused", f"{into}/{name} archived but not used: {why}; it runs again")
+            out[name] = ("refused", f"{into}/{name} archived but not used: {why}"
+                         + ("" if conflict else "; it runs again"), conflict)
             continue
         where = {c: os.path.join(into, rel) for c, rel in rec["analyses"].items()}
         out[name] = ("ok", {"analysis": where.pop(""), "counts": where, "record": rec,
-                            "info": rec.get("info") and os.path.join(into, rec["info"])})
+                            "info": rec.get("info") and os.path.join(into, rec["info"])}, False)
     return out
+
+
+def study_folders(dest, out, library=None):
+    """Generate in ``out`` the run folders of the archive ``dest``'s study,
+    as the study made them (each archived folder's preset, sample, other
+    parameters and seeds, from its ``archive.json`` and run records), so
+    that ``python -m yade_scripts.study --collect OUT --archive DEST``
+    reads the archive on a host that has none of the study's folders.
+
+    Parameters
+    ----------
+    dest : str
+        The archive.
+    out : str
+        The study folder to make (it must not hold these run folders yet).
+    library : str, optional
+        The polyhedra's shape library (default
+        :data:`yade_scripts.generate.DEFAULT_LIBRARY`, ``make shapes``); its
+        content must be the archived one's (:func:`library_fingerprint`).
+
+    Returns
+    -------
+    list of str
+        The run folders made.
+
+    Raises
+    ------
+    ConfigError
+        ``dest`` holds no archived run folder, one folder's record cannot
+        be read, or a generated folder's parameters or shape library differ
+        from the archived ones (named; nothing else is checked then).
+    """
+    from .generate import DEFAULT_LIBRARY, generate
+    from .presets import resolve
+
+    names = sorted(n for n in os.listdir(dest) if os.path.isfile(os.path.join(dest, n, FOLDER_RECORD))) \
+        if os.path.isdir(dest) else []
+    if not names:
+        raise ConfigError(f"{dest}: no archived run folder ({FOLDER_RECORD}) in it")
+    made = []
+    for name in names:
+        rec = _read_json(os.path.join(dest, name, FOLDER_RECORD))
+        params = (rec or {}).get("params")
+        if not isinstance(params, dict) or "preset" not in params or "sample" not in params:
+            raise ConfigError(f"{dest}/{name}/{FOLDER_RECORD}: no parameters (preset, sample) in it")
+        seeds = sorted({int(r["seed"]) for r in (_read_json(os.path.join(dest, name, f)) or {}
+                                                  for f in os.listdir(os.path.join(dest, name))
+                                                  if f.endswith(RUN_RECORD))
+                        if str(r.get("seed", "")).isdigit()})
+        if not seeds:
+            raise ConfigError(f"{dest}/{name}: no archived run with a seed")
+        base = resolve(params["preset"], params["sample"])
+        overrides = {k: v for k, v in params.items() if k in base and base[k] != v and k not in ("seed", "library")}
+        table = os.path.join(out, name)
+        generate(table, params["preset"], params["sample"], overrides, seeds=seeds,
+                 library=library or DEFAULT_LIBRARY)
+        mine = _folder_record(table)
+        if mine != rec:
+            keys = sorted(k for k in set(mine["params"]) | set(params)
+                          if mine["params"].get(k) != params.get(k))
+            what = (f"parameters {', '.join(keys)}" if keys else
+                    f"shape library (fingerprint {str(mine['library_fingerprint'])[:12]}, archived "
+                    f"{str(rec.get('library_fingerprint'))[:12]}: give the library it was run on)")
+            raise ConfigError(f"{table}: generated with other {what} than {dest}/{name}")
+        made.append(table)
+    return made
 
 
 def _read_json(path):
@@ -506,6 +614,9 @@ def main(argv=None):
         file could not be read or written (OSError), one line on stderr.
         (A bad command line exits 2 through argparse.)
     """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] in (["collect"], ["collect-at-commit"]):
+        return _collect_main(argv)
     ap = argparse.ArgumentParser(prog="python -m yade_scripts.archive", description=__doc__.splitlines()[0])
     ap.add_argument("study", help="the study folder (or one generated run folder)")
     ap.add_argument("dest", help="the archive's folder, e.g. reference_data/<study name>")
@@ -519,6 +630,38 @@ def main(argv=None):
         print(f"[archive] {line}", flush=True)
     print(f"archive: {len(saved)} run(s) added to {args.dest}, {len(skipped)} not", file=sys.stderr)
     return 0
+
+
+def _collect_main(argv):
+    """``collect ARCHIVE OUT [--library LIB]``: the archive's study folders
+    (:func:`study_folders`) collected with today's code; ``collect-at-commit
+    ARCHIVE OUT``: with the code of the commit that made the archive
+    (:mod:`yade_scripts.archive_commit`). Exit 0, 2 with one line when
+    refused, else the collect's exit code."""
+    ap = argparse.ArgumentParser(prog=f"python -m yade_scripts.archive {argv[0]}")
+    ap.add_argument("archive")
+    ap.add_argument("out", help="a new folder")
+    if argv[0] == "collect":
+        ap.add_argument("--library", help="the shape library the study ran on (default runs/shapes/library.h5)")
+    args = ap.parse_args(argv[1:])
+    try:
+        if argv[0] == "collect-at-commit":
+            from .archive_commit import collect_at_commit
+
+            collect_at_commit(args.archive, args.out)
+            return 0
+        if os.path.exists(args.out) and os.listdir(args.out):
+            raise ConfigError(f"{args.out}: exists and is not empty; give a new folder")
+        study_folders(args.archive, args.out, args.library)
+    except (ConfigError, OSError) as exc:
+        print(f"archive: error: {exc}", file=sys.stderr)
+        return 2
+    from .study import main as study_main
+
+    counts = sorted({c for n in os.listdir(args.archive) if os.path.isdir(os.path.join(args.archive, n))
+                     for f in os.listdir(os.path.join(args.archive, n)) if f.endswith(RUN_RECORD)
+                     for c in (_read_json(os.path.join(args.archive, n, f)) or {}).get("counts", [])})
+    return study_main(["--collect", args.out, "--archive", args.archive, "--no-figures", "--counts", *counts])
 
 
 if __name__ == "__main__":

@@ -14,7 +14,10 @@ core idle at the end; ``OUT/schedule.json`` holds its attempts and idle
 core-time). Both go through :mod:`yade_scripts.pool`, the one loop that
 runs, resumes and records every run (:mod:`yade_scripts.runstate`). Complete
 dumps are never run again, so a rerun only does what is missing; a folder
-made with other parameters is set aside. Every dump is analysed
+made with other parameters is refused (renamed ``.old-K`` and started
+afresh only with ``--set-aside``). ``--dry-run`` (ensembles) says what a
+study would take from ``--archive`` and what it would run, and runs and
+writes nothing. Every dump is analysed
 (:func:`analyse_dump`: :func:`postproc.pipeline.analyze_path`, what
 ``postproc analyze`` runs) into an analysis folder, and every usable S1
 dump once more per other contact count (``--counts``, default LMGC90's,
@@ -69,11 +72,12 @@ def finished(folder):
     return os.path.exists(os.path.join(folder, "run.info.json")) and complete(os.path.join(folder, "run.h5"))
 
 
-def _set_aside_if_changed(folder, preset, sample, overrides):
+def _set_aside_if_changed(folder, preset, sample, overrides, set_aside=False):
     """A run folder made with other parameters (its params.json against the
-    preset's, :func:`yade_scripts.parameters.changed`) is renamed
-    FOLDER.old-K, so that the run is generated afresh (and never silently
-    reused)."""
+    preset's, :func:`yade_scripts.parameters.changed`) is never reused: with
+    ``set_aside`` it is renamed FOLDER.old-K, so that the run is generated
+    afresh; without, ConfigError (one line naming the folder, the changed
+    parameters and the way out), and nothing is renamed."""
     path = os.path.join(folder, "params.json")
     if not os.path.exists(path):
         return
@@ -82,6 +86,10 @@ def _set_aside_if_changed(folder, preset, sample, overrides):
     names = changed(old, {"preset": preset, **resolve(preset, sample, overrides)})
     if not names:
         return
+    if not set_aside:
+        raise ConfigError(f"{folder}: a run folder of other parameters ({', '.join(names)}); nothing renamed "
+                          "or run: give another study folder (STUDY=DIR, --out DIR), or ask to keep it as "
+                          f"{os.path.basename(folder)}.old-K and start afresh (SET_ASIDE=1, --set-aside)")
     k = 1
     while os.path.exists(f"{folder}.old-{k}"):
         k += 1
@@ -103,13 +111,15 @@ def _need_yade():
         raise ConfigError("yade is not installed (make installs Debian's yade)")
 
 
-def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True):
+def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True,
+                set_aside=False):
     """Run one seed of each sample side by side: the study of ``python -m
     yade_scripts.study`` with one seed (``--ensemble 1``).
 
     Each sample's run folder ``OUT/<sample>`` is generated when it is not
     there (:func:`yade_scripts.generate.generate`); one made with other
-    parameters is first set aside as ``OUT/<sample>.old-K``, and one that
+    parameters is refused (ConfigError, nothing renamed) or, with
+    ``set_aside``, first set aside as ``OUT/<sample>.old-K``; one that
     holds a complete dump and its ``run.info.json`` is not run again. The
     others run at once through :func:`yade_scripts.pool.run_pool`, each on
     its own threads (polyhedra on the compiled kernel: every core of the
@@ -173,9 +183,12 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
     _need_yade()
     jobs = []
+    if not set_aside:                  # every sample's folder checked before any is touched
+        for s in samples:
+            _set_aside_if_changed(os.path.join(out, s), preset, s, overrides)
     for s in samples:
         folder = os.path.join(out, s)
-        _set_aside_if_changed(folder, preset, s, overrides)
+        _set_aside_if_changed(folder, preset, s, overrides, set_aside)
         if finished(folder):
             print(f"[{s}] already complete in {folder}, not run again", flush=True)
             continue
@@ -189,13 +202,14 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
 
 def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=SAMPLES, job_threads=None,
-                 counts=None, figures=True, archive=None):
+                 counts=None, figures=True, archive=None, set_aside=False):
     """Run seeds 1..n of each sample in one schedule: the study of ``make
     study`` (``--ensemble N``, N >= 2; the Makefile's default is 3).
 
     Each sample gets the run folder ``OUT/<sample>-ensemble`` with a table
     of the seeds (generated when it is not there; one made with other
-    parameters is first set aside as ``.old-K``; one with the same
+    parameters is refused (ConfigError, nothing renamed) or, with
+    ``set_aside``, first set aside as ``.old-K``; one with the same
     parameters gets its table written again, for another n). Every seed of
     every sample is a job of :func:`yade_scripts.pool.run_pool` on ``jobs``
     cores: longest first by :func:`yade_scripts.slurm.estimate`, the seeds
@@ -237,6 +251,12 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         :data:`ARCHIVED`. Each run that completes here is then analysed at
         once, on the first free core (``after_first`` of
         :func:`yade_scripts.pool.run_pool`), and added to the archive.
+        An archive holding a run of another analysis version, other
+        parameters or another shape library (:func:`yade_scripts.archive.conflicts`)
+        is refused before anything runs: ConfigError naming those runs.
+    set_aside : bool, optional
+        Rename a run folder of other parameters ``.old-K`` and start it
+        afresh (default False: ConfigError, nothing renamed).
 
     Returns
     -------
@@ -256,10 +276,13 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     from .pool import Job, run_pool
     from .slurm import estimate
 
-    pool, rows, kept = [], {}, set()
+    pool, rows, kept, clash = [], {}, set(), []
+    if not set_aside:                  # every sample's folder checked before any is touched
+        for s in samples:
+            _set_aside_if_changed(os.path.join(out, f"{s}-ensemble"), preset, s, overrides)
     for s in samples:
         folder = os.path.join(out, f"{s}-ensemble")
-        _set_aside_if_changed(folder, preset, s, overrides)
+        _set_aside_if_changed(folder, preset, s, overrides, set_aside)
         seeds = list(range(1, n + 1))
         if not os.path.exists(os.path.join(folder, "triaxial.py")):
             generate(folder, preset, s, overrides, seeds=seeds, library=library or DEFAULT_LIBRARY)
@@ -268,11 +291,14 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         p = resolve(preset, s, overrides)
         cost = estimate(p)["core_hours"] * 3600
         rows[s] = read_table(folder)
+        clash += _conflicts(archive, folder, counts)
         kept.update(_from_archive(archive, folder, [dump_of(folder, r) for _, r in rows[s]], counts))
         pool += [Job(folder, k, r["description"], dump_of(folder, r), cost, tag=s,
                      widen=(s == "polyhedra" and p["contact_engine"] == "kernel"),
                      threads=min((job_threads or {}).get(s, 1), jobs))
                  for k, r in rows[s] if dump_of(folder, r) not in kept]
+    if clash:
+        raise ConfigError(_refusal(archive, clash))
     if pool:
         _need_yade()
     status = run_pool(pool, jobs, record=os.path.join(out, "schedule.json"), echo=lambda m: print(m, flush=True),
@@ -283,6 +309,80 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
         return f"seed {r['seed']}", dump, ARCHIVED if dump in kept else status[r["description"]]
 
     return {s: [outcome(s, r) for _, r in rows[s]] for s in samples}
+
+
+def plan_ensemble(out, preset, n, overrides=None, library=None, samples=SAMPLES, counts=None, archive=None):
+    """What :func:`run_ensemble` would do, done nothing of: for each sample,
+    how many of seeds 1..n are taken from ``archive`` (usable and not
+    complete here), complete here, and to run, and the archive's runs it
+    would refuse.
+
+    A sample's run folder that is not there yet is generated into a
+    temporary folder of the same name (its parameters and shape library
+    are what the archive is compared with), then removed; nothing in
+    ``out`` is made or changed.
+
+    Parameters
+    ----------
+    out, preset, n, overrides, library, samples, counts, archive
+        As :func:`run_ensemble`'s.
+
+    Returns
+    -------
+    dict
+        sample -> {"archived": int, "here": int, "run": int, "conflicts":
+        [line], "refused": [line]} (``conflicts``: runs of another analysis
+        version, parameters or shape library, which make the study refuse;
+        ``refused``: other archived runs not used, which run again).
+
+    Raises
+    ------
+    ConfigError
+        Invalid parameters, or a run folder of ``out`` made with other
+        parameters (what the study would refuse).
+    """
+    import tempfile
+
+    from .batch import dump_of, read_table
+
+    plan = {}
+    with tempfile.TemporaryDirectory(prefix="study-dry-run-") as tmp:
+        for s in samples:
+            folder = os.path.join(out, f"{s}-ensemble")
+            fresh = os.path.join(tmp, f"{s}-ensemble")      # the folder as the study would make it, for n seeds
+            generate(fresh, preset, s, overrides, seeds=list(range(1, n + 1)), library=library or DEFAULT_LIBRARY)
+            table = fresh
+            if os.path.exists(os.path.join(folder, "triaxial.py")):
+                _set_aside_if_changed(folder, preset, s, overrides, set_aside=False)
+                table = folder
+            held = _archived(archive, table, counts) if archive else {}
+            got = {"archived": 0, "here": 0, "run": 0, "conflicts": _conflicts(archive, table, counts),
+                   "refused": []}
+            for _, r in read_table(fresh):
+                name = os.path.basename(dump_of(fresh, r))
+                how, what = held.get(name, (None, None))
+                if complete(os.path.join(folder, name)) or complete(os.path.join(folder, r["description"], name)):
+                    got["here"] += 1
+                elif how == "ok":
+                    got["archived"] += 1
+                else:
+                    got["run"] += 1
+                    if how == "refused" and what not in got["conflicts"]:
+                        got["refused"].append(what)
+            plan[s] = got
+    return plan
+
+
+def describe_plan(plan):
+    """The dry run's line: "A + B archived and usable; C + D to run" (one
+    number per sample, in the plan's order), with the complete dumps here
+    when there are any."""
+    def nums(key):
+        return " + ".join(str(p[key]) for p in plan.values())
+
+    here = any(p["here"] for p in plan.values())
+    return (f"{nums('archived')} archived and usable; " + (f"{nums('here')} complete here; " if here else "")
+            + f"{nums('run')} to run")
 
 
 def _from_archive(archive, table, dumps, counts):
@@ -305,6 +405,26 @@ def _from_archive(archive, table, dumps, counts):
         else:
             print(f"[study] {what}", flush=True)
     return out
+
+
+def _refusal(archive, clash):
+    """The one line of a study refused for the archive's runs ``clash``
+    (:func:`yade_scripts.archive.conflicts`' lines)."""
+    names = ", ".join(line.split(" archived but not used")[0] for line in clash[:3])
+    return (f"the archive {archive} holds {len(clash)} run(s) of another analysis version, other parameters or "
+            f"another shape library ({names}{', ...' if len(clash) > 3 else ''}); nothing run, nothing replaced: "
+            "name a new archive (ARCHIVE=NEW_DIR), or read this one with the code that made it "
+            "(python -m yade_scripts.archive collect-at-commit ARCHIVE OUT, docs/study.md)")
+
+
+def _conflicts(archive, table, counts):
+    """:func:`yade_scripts.archive.conflicts` for the study's ``counts``
+    (None: :data:`postproc.study.counts.EXTRA_COUNTS`); [] without an archive."""
+    from postproc.study.counts import EXTRA_COUNTS
+
+    from .archive import conflicts
+
+    return conflicts(archive, table, counts=EXTRA_COUNTS if counts is None else counts) if archive else []
 
 
 def _archived(archive, table, counts):
@@ -849,6 +969,12 @@ def main(argv=None):
     ap.add_argument("--archive", metavar="DEST",
                     help="an archive of analysed runs (python -m yade_scripts.archive STUDY DEST): seeds it "
                          "holds are not run, their archived analyses are used (ensembles and --collect)")
+    ap.add_argument("--set-aside", action="store_true",
+                    help="rename a run folder of other parameters FOLDER.old-K and start it afresh "
+                         "(without: the study refuses it and renames nothing)")
+    ap.add_argument("--dry-run", action="store_true",
+                    help="ensembles: say how many seeds the archive gives and how many would run; run and "
+                         "write nothing")
     ap.add_argument("--no-figures", action="store_true",
                     help="numbers only: the analyses and the report without their figures (faster)")
     args = ap.parse_args(argv)
@@ -894,6 +1020,8 @@ def main(argv=None):
         return 1 if failed else 0
     if not args.out:
         ap.error("--out is required (unless --collect)")
+    if args.dry_run:
+        return _dry_run(args)
     try:                            # checked before the folder is made: a refused study makes nothing
         if args.ensemble < 1:
             raise ConfigError(f"--ensemble must be >= 1, got {args.ensemble}")
@@ -904,6 +1032,12 @@ def main(argv=None):
         # at once: both samples (one seed), or --jobs runs of the largest (ensembles)
         check_memory(params if args.ensemble == 1 else
                      [max(params, key=memory_mb)] * min(args.jobs, args.ensemble * len(SAMPLES)))
+        if args.archive:            # an archive it would not use as it is: refused before anything is made
+            plan = plan_ensemble(args.out, args.preset, args.ensemble, overrides, args.library,
+                                 counts=args.counts, archive=args.archive)
+            clash = [line for p in plan.values() for line in p["conflicts"]]
+            if clash:
+                raise ConfigError(_refusal(args.archive, clash))
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
@@ -922,17 +1056,41 @@ def main(argv=None):
         lock.release()
 
 
+def _dry_run(args):
+    """``--dry-run``: :func:`plan_ensemble`'s line, the archive's refused
+    runs each in a line; exit 0, or 2 when the study would refuse."""
+    if args.ensemble < 2:
+        print("study: error: --dry-run plans an ensemble (--ensemble N >= 2)", file=sys.stderr)
+        return 2
+    try:
+        plan = plan_ensemble(args.out, args.preset, args.ensemble, parse_overrides(args.set), args.library,
+                             counts=args.counts, archive=args.archive)
+    except ConfigError as exc:
+        print(f"study: error: {exc}", file=sys.stderr)
+        return 2
+    for p in plan.values():
+        for line in p["refused"]:
+            print(f"[study] {line}")
+    clash = [line for p in plan.values() for line in p["conflicts"]]
+    print(f"study: dry run of {args.out} (nothing run or written): {describe_plan(plan)}"
+          + (f" (seeds of {' + '.join(plan)})" if plan else ""))
+    if clash:
+        print(f"study: error: the study would refuse: {_refusal(args.archive, clash)}", file=sys.stderr)
+        return 2
+    return 0
+
+
 def _study(args, overrides):
     """The study of ``main``'s parsed ``args`` (checked), its folder's lock held."""
     try:
         if args.ensemble == 1:
             codes = run_samples(args.out, args.preset, overrides, args.library, counts=args.counts,
-                                figures=not args.no_figures)
+                                figures=not args.no_figures, set_aside=args.set_aside)
             runs = {s: [("seed 1", os.path.join(args.out, s, "run.h5"), c)] for s, c in codes.items()}
         else:
             runs = run_ensemble(args.out, args.preset, args.ensemble, overrides, args.library, args.jobs,
                                 job_threads={"polyhedra": args.job_threads}, counts=args.counts,
-                                figures=not args.no_figures, archive=args.archive)
+                                figures=not args.no_figures, archive=args.archive, set_aside=args.set_aside)
     except ConfigError as exc:
         print(f"study: error: {exc}", file=sys.stderr)
         return 2
