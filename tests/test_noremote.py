@@ -208,6 +208,30 @@ def test_a_pause_from_another_thread_checkpoints_exits_75_and_resumes(tmp_path, 
     assert f"resumed from run.ckpt at step {meta['step']} " in again.stdout, again.stdout[-2000:]
 
 
+@needs_yade
+def test_an_exception_in_the_scenes_own_engine_is_a_failure_not_a_pause(tmp_path, shape_library):
+    """The scene's controller (a PyRunner) raises at step 3000: exit 3,
+    named an exception in its own engines, never "paused from outside"."""
+    d = tmp_path / "run"
+    env = _tiny(d, shape_library, final_strain=0.02)
+    (d / "boom.py").write_text(
+        "import threading, time\n"
+        "def breaker():\n"
+        "    while 'control' not in globals() or O.iter < 3000:\n"
+        "        time.sleep(0.001)\n"
+        "    def control():\n"
+        "        raise ValueError('injected')\n"
+        "    globals()['control'] = control\n"
+        "threading.Thread(target=breaker, daemon=True).start()\n"
+        "exec(compile(open('triaxial.py').read(), 'triaxial.py', 'exec'))\n")
+    r = subprocess.run(noremote.command(YADE, ["-j", "1", "-n", "-x", "boom.py"]), cwd=d, env=env,
+                       capture_output=True, text=True, timeout=300)
+    out = r.stdout + r.stderr
+    assert r.returncode == 3, out[-2000:]
+    assert "an exception in the scene's own engines stopped the simulation" in out and "ValueError: injected" in out
+    assert "paused from outside" not in out
+
+
 # ------------------------------------------------------------ files under the umask
 def test_folders_lock_and_slurm_script_follow_the_umask(tmp_path, shape_library):
     old = os.umask(0o027)
