@@ -56,7 +56,7 @@ import pandas as pd
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
-from yade_scripts import yadeplugin  # noqa: E402
+from yade_scripts import noremote, yadeplugin  # noqa: E402
 from yade_scripts.checkpoint import read as read_checkpoint  # noqa: E402
 from yade_scripts.generate import DEFAULT_LIBRARY, generate  # noqa: E402
 
@@ -93,7 +93,7 @@ def run_once(folder, threads, steps, timeout, fresh):
         before = read_checkpoint(ckpt)[0]
     env = dict(yadeplugin.environment(run_folder=folder), OMP_WAIT_POLICY="PASSIVE")    # as the study runs it
     t0 = time.perf_counter()
-    proc = subprocess.Popen(["yade", "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder, env=env,
+    proc = subprocess.Popen(noremote.command(shutil.which("yade"), ["-j", str(threads), "-n", "-x", "triaxial.py"]), cwd=folder, env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, bufsize=1)
     setup, sent, lines, hwm = None, False, [], 0.0
     for line in proc.stdout:
@@ -174,8 +174,8 @@ def dense(specs, threads, steps, blocks, out):
     ctrl = {}
     for th in threads:
         js = os.path.join(out, f"dense-j{th}.json")
-        subprocess.run(["yade", "-j", str(th), "-n", "-x", os.path.join(ROOT, "benchmarks", "bench_scale_dense.py"),
-                        js, str(steps), str(blocks), *specs], check=True, env=env, stdout=subprocess.DEVNULL)
+        subprocess.run(noremote.command(shutil.which("yade"), ["-j", str(th), "-n", "-x",
+                        os.path.join(ROOT, "benchmarks", "bench_scale_dense.py"), js, str(steps), str(blocks), *specs]), check=True, env=env, stdout=subprocess.DEVNULL)
         with open(js) as fh:
             res = json.load(fh)
         for spec, p in zip(specs, res["packings"]):

@@ -20,6 +20,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -29,7 +30,7 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
-from yade_scripts import yadeplugin  # noqa: E402
+from yade_scripts import noremote, yadeplugin  # noqa: E402
 from yade_scripts.generate import DEFAULT_LIBRARY, generate  # noqa: E402
 
 
@@ -71,7 +72,8 @@ def run(folder, plugin, threads):
         env["OMP_WAIT_POLICY"] = "PASSIVE"
         t0 = time.time()
         with open(os.path.join(folder, "yade.log"), "w") as log:
-            rc = subprocess.run(["yade", "-j", str(threads), "-n", "-x", "triaxial.py"], cwd=folder, env=env,
+            rc = subprocess.run(noremote.command(shutil.which("yade"), ["-j", str(threads), "-n", "-x", "triaxial.py"]),
+                                cwd=folder, env=env,
                                 stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL).returncode
         if rc != 0:
             raise SystemExit(f"plugin_same_run: {folder}: exit {rc} (see yade.log)")

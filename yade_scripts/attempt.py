@@ -555,8 +555,10 @@ class Attempt:
         """Run YADE until ``done()``, a failure (:meth:`fail`) or SIGTERM,
         with a checkpoint every checkpoint_seconds of wall time and one on
         SIGTERM. Returns "done", "failed", "terminated" (a checkpoint was
-        written: run again to resume) or "stalled" (YADE stopped for no
-        reason the scene gave, e.g. an exception in a PyRunner).
+        written: run again to resume), "paused" (YADE was paused by
+        something other than the scene, e.g. ``O.pause()`` from another
+        thread; a checkpoint was written) or "stalled" (an exception in
+        one of the scene's engines stopped YADE).
 
         Parameters
         ----------
@@ -568,7 +570,7 @@ class Attempt:
         Returns
         -------
         str
-            "done", "failed", "terminated" or "stalled".
+            "done", "failed", "terminated", "paused" or "stalled".
 
         Raises
         ------
@@ -576,13 +578,17 @@ class Attempt:
             As :meth:`save_checkpoint`.
         """
         while True:
+            before = getattr(sys, "last_value", None)      # YADE prints an engine's exception, which sets it
             due = self._run_until_stop()
             if self.failed:
                 return "failed"
             if done():
                 return "done"
             if not due:
-                return "stalled"
+                if getattr(sys, "last_value", None) is not before:
+                    return "stalled"
+                self.save_checkpoint("paused from outside", get_state, where)
+                return "paused"
             self.save_checkpoint("SIGTERM" if self.terminated else "periodic", get_state, where)
             if self.terminated:
                 return "terminated"

@@ -72,7 +72,7 @@ import threading
 import time
 from dataclasses import dataclass, field
 
-from . import yadeplugin
+from . import noremote, yadeplugin
 from .parameters import ConfigError
 from .runlock import RunBusy, RunLock, describe, lock_path
 from .runstate import (EXIT_TERM, MAX_RESUMES, RunFiles, Verdict, checkpoint_position, clear_attempt, complete, end_attempt,
@@ -406,7 +406,7 @@ def _launch(job, threads, yade, number, note, own_session=False, lock=None):
     env["DISPLAY"] = ""
     where = checkpoint_position(job.dump)
     how = f"resumes from its checkpoint at step {where[0]} ({where[1]})" if where else "starts"
-    cmd = [yade, "-j", str(threads), "-n", "-x", "triaxial.py"]
+    cmd = noremote.command(yade, ["-j", str(threads), "-n", "-x", "triaxial.py"])     # no remote servers
     offset = os.path.getsize(job.log) if os.path.exists(job.log) else 0
     with open(job.log, "a") as log:
         log.write(f"==== attempt {number} of {job.description}: {how}; {now_utc()} on {platform.node()}, "

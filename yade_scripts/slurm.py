@@ -445,7 +445,8 @@ exec "$PY" -m yade_scripts.task "$HERE" --requeues {int(requeues)}
     path = os.path.join(folder, "slurm.sh")
     with open(path, "w") as fh:
         fh.write(text)
-    os.chmod(path, 0o755)
+    mode = os.stat(path).st_mode
+    os.chmod(path, mode | (mode & 0o444) >> 2)      # executable where readable: as chmod +x, under the umask
     return path
 
 

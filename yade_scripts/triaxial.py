@@ -109,6 +109,7 @@ from shapes.library import ShapeLibrary  # noqa: E402
 from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
 from yade_scripts import sample as sampling  # noqa: E402
 from yade_scripts.attempt import Attempt, Progress, leave, remove_scratch_at_exit  # noqa: E402
+from yade_scripts.noremote import close_servers  # noqa: E402
 from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
 from yade_scripts.runlock import RunBusy  # noqa: E402
 from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
@@ -120,6 +121,12 @@ def say(message):
     """Print one line of the scene, ``triaxial.py: <message>``, at once
     (the launchers relay the lines with this prefix)."""
     print(f"triaxial.py: {message}", flush=True)
+
+
+CLOSED = close_servers()          # the yade launcher's remote servers; the project's launchers open none
+if CLOSED:
+    say(f"closed YADE's remote prompt and XMLRPC server (ports {', '.join(map(str, CLOSED))}), which the yade "
+        f"launcher opened: this run listens on no port")
 
 
 PARAMS = {k: v for k, v in vars(sys.modules["yade.params.table"]).items() if not k.startswith("_")}
@@ -589,8 +596,12 @@ if KERNEL:
 O.timingEnabled = bool(timing)
 outcome = run.loop(done=lambda: program.stage == "done", get_state=scene_state, where=stage_and_strain)
 if outcome == "stalled":
-    fail("the simulation stopped without a reason (an exception in a PyRunner?)")
+    fail("an exception in the scene's own engines stopped the simulation (its traceback is above)")
 log_file.close()
+if outcome == "paused":
+    say(f"paused from outside at step {O.iter} (a stop the scene did not ask for); the checkpoint and the "
+        f"{writer.n_snapshots} snapshot(s) are kept: run again in this folder to resume (exit {EXIT_TERM})")
+    leave(EXIT_TERM)
 if outcome == "terminated":
     say(f"stopped on SIGTERM at step {O.iter}; the checkpoint and the {writer.n_snapshots} snapshot(s) are kept: "
         f"run again in this folder to resume (exit {EXIT_TERM})")

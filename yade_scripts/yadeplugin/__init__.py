@@ -55,6 +55,8 @@ import subprocess
 import sys
 import tempfile
 
+from .. import noremote
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "PolyhedraKernelEngine.cpp")
 INCLUDE = os.path.join(HERE, "include")
@@ -320,8 +322,8 @@ def probe(prefix, timeout=300):
                                           + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]))
     env.pop(SKIP_VARIABLE, None)
     try:
-        res = subprocess.run(["yade", "-j1", "-n", "-x", PROBE_SCENE, out], env=env, capture_output=True, text=True,
-                             timeout=timeout, cwd=prefix)
+        res = subprocess.run(noremote.command(shutil.which("yade") or "yade", ["-j1", "-n", "-x", PROBE_SCENE, out]),
+                             env=env, capture_output=True, text=True, timeout=timeout, cwd=prefix)
     except subprocess.TimeoutExpired:
         raise _Transient(f"the probe scene did not finish in {timeout} s") from None
     except OSError as exc:
