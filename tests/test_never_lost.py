@@ -117,7 +117,7 @@ def test_clear_attempt_never_removes_a_finished_dump(tmp_path, holder):
     short = truncate(d)
     (tmp_path / "run.log.csv").write_text("x")
     said = clear_attempt(str(d))
-    assert said[0].startswith("run.h5 is truncated or damaged") and "moved aside to run.h5.truncated-" in said[0]
+    assert said[0].startswith("run.h5: truncated or damaged") and "moved aside to run.h5.truncated-" in said[0]
     assert said[1] == "removed the unfinished attempt (run.log.csv)"
     assert [open(f, "rb").read() for f in aside(d, "truncated")] == [short] and not d.exists()
     # a moved-aside file of the same name (same second) is never replaced: the new one is suffixed
@@ -236,3 +236,29 @@ def test_a_sigterm_is_named_after_what_slurm_says(show, restarts, cause):
     assert sigterm_cause(show, restarts) == cause
     assert ("scancel" in SIGTERM_WORDS["unknown"] and "requeue" in SIGTERM_WORDS["unknown"]
             and "scancel" not in SIGTERM_WORDS["requeue"])
+
+
+def test_the_scene_never_removes_a_dump_it_cannot_open_or_check(tmp_path, holder):
+    """The scene's own start (yade_scripts.attempt): a locked dump is refused
+    as a busy run (exit 4 in triaxial.py), untouched; a cut one is moved
+    aside and the attempt starts afresh."""
+    from test_loading import new_attempt
+
+    from yade_scripts.runlock import RunBusy
+
+    d = tmp_path / "run.h5"
+    finished_dump(d)
+    p = holder(d)
+    data = d.read_bytes()
+    said = []
+    with pytest.raises(RunBusy, match="cannot be opened now"):
+        new_attempt(str(d), {"seed": 1}, True, said)
+    assert d.read_bytes() == data
+    p.kill(), p.wait()
+    assert new_attempt(str(d), {"seed": 1}, True, said).complete
+    kept = cut(d)
+    said = []
+    run = new_attempt(str(d), {"seed": 1}, True, said)
+    assert not run.complete and not d.exists()
+    assert [open(f, "rb").read() for f in aside(d, "does-not-verify")] == [kept]
+    assert len(said) == 1 and said[0].startswith("starting afresh: run.h5: does not verify: says 3 snapshots")

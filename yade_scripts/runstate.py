@@ -271,7 +271,7 @@ def dump_condition(dump):
     except OSError as exc:
         text = str(exc).lower()
         if "unable to lock" in text or "errno = 11" in text or "temporarily unavailable" in text:
-            return "unreadable", "held open by another process (HDF5 file lock)"
+            return "unreadable", "held open by another process: HDF5 file lock"
         if "truncated" in text or "signature" in text or "eof" in text or "bad" in text or "corrupt" in text:
             return "truncated", f"truncated or damaged ({str(exc).splitlines()[0][:120]})"
         return "unreadable", f"cannot be opened: {str(exc).splitlines()[0][:120]}"
@@ -364,7 +364,7 @@ def clear_attempt(dump):
     files = RunFiles(dump)
     if kind in SET_ASIDE:
         moved = set_aside(dump, kind)
-        text = f"{os.path.basename(dump)} is {why}: moved aside to {os.path.basename(moved)}"
+        text = f"{os.path.basename(dump)}: {why}: moved aside to {os.path.basename(moved)}"
         if os.path.isdir(files.parts):
             text += f" (its parts to {os.path.basename(set_aside(files.parts, kind))})"
         said.append(text)

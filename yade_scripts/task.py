@@ -395,9 +395,9 @@ def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, ec
         try:
             moved = set_aside(dump, kind)
         except OSError as exc:
-            return finish(EXIT_CONFIG, f"failed: {dump} is {why} and could not be moved aside: "
+            return finish(EXIT_CONFIG, f"failed: {dump}: {why}, and it could not be moved aside: "
                                        f"{exc.strerror or exc}", job_id)
-        say(f"{os.path.basename(dump)} is {why}: moved aside to {os.path.basename(moved)}; the line runs again")
+        say(f"{os.path.basename(dump)}: {why}: moved aside to {os.path.basename(moved)}; the line runs again")
     before = state_of(dump)
     say(f"table line {line.number} ({line.description}): {before.detail}; {threads} thread(s)")
 
