@@ -262,3 +262,39 @@ def test_the_scene_never_removes_a_dump_it_cannot_open_or_check(tmp_path, holder
     assert not run.complete and not d.exists()
     assert [open(f, "rb").read() for f in aside(d, "does-not-verify")] == [kept]
     assert len(said) == 1 and said[0].startswith("starting afresh: run.h5: does not verify: says 3 snapshots")
+
+
+@pytest.mark.parametrize("show, final", [
+    ("JobId=5 JobState=COMPLETING Restarts=1", "requeued by SLURM (SIGTERM of a requeue"),
+    ("JobId=5 JobState=CANCELLED Restarts=0", "stopped on request (SIGTERM, scancel)"),
+    (None, "stopped by SLURM (SIGTERM: scancel or requeue")])
+def test_the_task_s_final_line_after_slurm_s_sigterm(tmp_path, monkeypatch, capsys, show, final):
+    """A task inside SLURM stopped by SIGTERM: its FINAL line and comment say
+    what SLURM recorded, never a scancel it cannot know of."""
+    from yade_scripts.runstate import Verdict
+
+    out = make(tmp_path, (1,))
+    comments = []
+
+    def stopped_run(jobs, cores, **kw):     # the run asked to stop by SLURM's SIGTERM, resumable
+        os.kill(os.getpid(), signal.SIGTERM)
+        assert kw["stopping"]()
+        jobs[0].verdict = Verdict("resume", "stopped on request")
+        return {jobs[0].description: "stopped"}
+
+    monkeypatch.setattr("yade_scripts.pool.run_pool", stopped_run)
+    monkeypatch.setattr(task_mod, "show_job", lambda job: show)
+    monkeypatch.setattr(task_mod, "scontrol", lambda *a: comments.append(a[-1]))
+    for k, v in {"SLURM_JOB_ID": "5", "SLURM_ARRAY_JOB_ID": "4", "SLURM_ARRAY_TASK_ID": "1",
+                 "SLURM_RESTART_COUNT": "0"}.items():
+        monkeypatch.setenv(k, v)
+    handlers = {s: signal.getsignal(s) for s in (signal.SIGTERM, signal.SIGUSR1)}
+    try:
+        code = task_mod.run_task(str(out), 1)
+    finally:
+        for s, h in handlers.items():
+            signal.signal(s, h)
+    lines = [x for x in capsys.readouterr().out.splitlines() if x.startswith("task: FINAL")]
+    assert code == runstate.EXIT_TERM and len(lines) == 1 and lines[0].startswith(f"task: FINAL {final}")
+    assert comments[-1].startswith(f"Comment={final}")
+    assert ("sbatch --array=1" in lines[0]) == (final != SIGTERM_WORDS["requeue"][:len(final)])
