@@ -191,7 +191,7 @@ def test_attempt_starts_afresh_resumes_or_finds_the_run_complete(tmp_path):
     run = new_attempt(dump, params, True, said)
     assert not run.complete and run.resumed is None
     assert not any(os.path.exists(p) for p in files.written_by_an_attempt())
-    assert "removing the unfinished attempt" in said[-1]
+    assert "removed the unfinished attempt" in said[-1]
     # a finished dump: nothing to do
     w = schema.DumpWriter(dump, "spheres", {"seed": 1})
     w.close(pack=True)

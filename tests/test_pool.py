@@ -63,8 +63,11 @@ def fake(tmp_path, monkeypatch):
     exe.write_text(FAKE.format(python=sys.executable))
     exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
     # the stand-in's dumps are text files: "complete" when done (pool and rule alike)
-    done = lambda dump: os.path.exists(dump) and open(dump).read() == "complete"   # noqa: E731
-    monkeypatch.setattr(pool, "complete", done)
+    done = lambda dump: os.path.isfile(dump) and open(dump, "rb").read(9) == b"complete"   # noqa: E731
+    real = runstate.dump_condition
+    cond = lambda dump: ("complete", "complete") if done(dump) else real(dump)   # noqa: E731
+    monkeypatch.setattr(pool, "dump_condition", cond)
+    monkeypatch.setattr(runstate, "dump_condition", cond)
     monkeypatch.setattr(runstate, "complete", done)
     monkeypatch.setattr(pool, "POLL_SECONDS", 0.05)
     monkeypatch.setattr(pool, "WIDEN_AFTER_SECONDS", 0.2)

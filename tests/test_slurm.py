@@ -226,7 +226,7 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
             assert f.attrs["complete"] == 1
             assert json.loads(f.attrs["parameters"])["seed"] == k     # the line's parameters
     again = task(out, 1, tmp_path)
-    assert again.returncode == 0 and "is complete, nothing to do" in again.stdout
+    assert again.returncode == 0 and "is complete and verifies, nothing to do" in again.stdout
     # line 3 never ran, line 4 is invalid: both listed, the two finished ones analysed
     assert study_main(["--collect", str(out), "--no-figures"]) == 0
     err = capsys.readouterr().err
@@ -248,8 +248,9 @@ def test_two_tiny_lines_run_locally_then_collect(tmp_path, capsys):
         del f[f"snapshots/{n - 2:06d}"]
     assert study_main(["--collect", str(out), "--no-figures"]) == 0
     err = capsys.readouterr().err
-    assert f"not finished: spheres-seed2 (refused, not analysed: {out}/spheres-seed2/spheres-seed2.h5: says {n} " \
-        f"snapshots, holds {n - 1}" in err
+    assert f"not finished: spheres-seed2 (refused, not analysed: {out}/spheres-seed2/spheres-seed2.h5: complete but " \
+        f"does not verify: says {n} snapshots, holds {n - 1}" in err
+    assert f"resubmit the unfinished lines of arr: sbatch --array=3 {out}/slurm.sh" in err      # not line 2
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["spheres"][1]["status"].startswith("refused, not analysed:")
     assert "move it aside" in manifest["spheres"][1]["note"]

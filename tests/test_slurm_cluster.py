@@ -307,7 +307,9 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     run(env, "scancel", f"{job3}_1")
     wait_for(env, job3, 300)
     out = (b / f"slurm-{job3}_1.out").read_text()
-    assert out.count("task: FINAL") == 1 and "task: FINAL stopped on request (SIGTERM, scancel)" in out
+    # SLURM may show the cancelled job as COMPLETING by then: the task says only what it knows
+    assert out.count("task: FINAL") == 1 and ("task: FINAL stopped on request (SIGTERM, scancel)" in out or
+                                              "task: FINAL stopped by SLURM (SIGTERM: scancel or requeue" in out)
     assert "the job's comment could not be set" in out
     assert checkpoint_position(str(d1 / "spheres-seed1.h5"))[0] > step
     job4 = sbatch(env, "--array=1", str(b / "slurm.sh"), cwd=tmp_path)

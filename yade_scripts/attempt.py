@@ -34,11 +34,11 @@ import sys
 import time
 from dataclasses import dataclass
 
-from postproc.schema import DumpFormatError, DumpReader, DumpWriter
+from postproc.schema import DumpWriter
 
 from . import checkpoint
 from .runlock import RunLock, describe, inherited, lock_path
-from .runstate import RunFiles
+from .runstate import RunFiles, clear_attempt, dump_condition
 
 
 @dataclass
@@ -264,22 +264,13 @@ class Attempt:
                 writer.attrs["parameters"] = meta["dump_parameters"]
                 self.resumed = Resumed(path, meta, arrays, blobs["scene"], writer)
                 return
-        if os.path.exists(f.dump):
-            try:
-                with DumpReader(f.dump) as r:
-                    if r.complete:
-                        self.complete = True
-                        return
-            except DumpFormatError:
-                pass
-        left = [p for p in f.written_by_an_attempt() if os.path.exists(p)]
-        if left:
-            self.say(f"starting afresh: removing the unfinished attempt ({', '.join(map(os.path.basename, left))})")
-            for p in left:
-                if os.path.isdir(p):
-                    shutil.rmtree(p, ignore_errors=True)
-                else:
-                    os.remove(p)
+        if dump_condition(f.dump)[0] == "complete":
+            self.complete = True
+            return
+        # never removes a dump that may be finished: one that cannot be opened now raises
+        # DumpUnreadable (a RunBusy: refused, untouched); a damaged one is moved aside
+        for line in clear_attempt(f.dump):
+            self.say(f"starting afresh: {line}")
 
     # ------------------------------------------------------------ the dump and the log
     def open_dump(self, new_dump):

@@ -75,7 +75,8 @@ from dataclasses import dataclass, field
 from . import noremote, yadeplugin
 from .parameters import ConfigError
 from .runlock import RunBusy, RunLock, describe, lock_path
-from .runstate import (EXIT_TERM, MAX_RESUMES, RunFiles, Verdict, checkpoint_position, clear_attempt, complete, end_attempt,
+from .runstate import (EXIT_TERM, MAX_RESUMES, DumpUnreadable, RunFiles, Verdict, checkpoint_position, clear_attempt,
+                       dump_condition, end_attempt,
                        has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
 
 #: a running job is widened only after this many seconds (its SIGTERM
@@ -497,7 +498,11 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
         description -> status: 0 done or complete already; the exit code
         of a failed run; "no complete dump" when it exited 0 without one;
         "stopped" when ``stopping()`` (or the pool's signal) stopped it,
-        resumable, or it never started. Each job's ``exits`` then lists the
+        resumable, or it never started; "unreadable dump" when its dump
+        could not be opened (held open by another process, an I/O error): it
+        may be finished, so it was neither cleared nor run. A dump that says
+        complete but is truncated or does not verify is moved aside (never
+        removed) and its run starts afresh, said in one line. Each job's ``exits`` then lists the
         exit codes of its attempts (stops asked for left out) and
         ``verdict`` the rule's last word.
 
@@ -639,15 +644,22 @@ def _run_locked(jobs, cores, record, echo, yade, stopping, note, max_resumes, af
             todo.append((job, cmd))
 
     for job in order(jobs):
-        if complete(job.dump):
+        kind, why = dump_condition(job.dump)
+        if kind == "complete":
             echo(f"{job.name} already complete, not run again")
             status[job.description] = 0
             queue_after(job)
             continue
-        if has_checkpoint(job.dump):
+        if kind == "unreadable":        # it may be finished: never cleared, never run over
+            echo(f"{job.name}: refused: {DumpUnreadable(job.dump, why)}")
+            status[job.description] = "unreadable dump"
+            continue
+        if has_checkpoint(job.dump) and kind not in ("does-not-verify", "not-hdf5"):
             echo(f"{job.name}: an unfinished run with a checkpoint, resuming it")
         else:
-            clear_attempt(job.dump)
+            said = clear_attempt(job.dump)
+            if said:
+                echo(f"{job.name}: starting afresh: {'; '.join(said)}")
         waiting.append(job)
     attempts, running = [], {}      # description -> _Running
     t0 = time.time()

@@ -36,6 +36,8 @@ import os
 import shutil
 from dataclasses import dataclass
 
+from .runlock import RunBusy
+
 EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_BUSY, EXIT_TERM = 0, 2, 3, 4, 75
 #: a run that crashed and left a checkpoint is started again this many times
 #: at most; stops asked for (SIGTERM by a scheduler, or to give a run more
@@ -197,10 +199,134 @@ def checkpoint_position(dump):
     return None
 
 
+class DumpUnreadable(RunBusy):
+    """A dump that cannot be opened now (another process holds it open, so
+    HDF5's file lock refuses it, or the file system fails to read it): it may
+    hold a finished run, so nothing is touched. ``str()`` is one line.
+
+    Attributes
+    ----------
+    path : str
+        The dump.
+    holder : dict
+        Empty (the process that holds the file is not known).
+    """
+
+    def __init__(self, dump, why):
+        self.path, self.holder = dump, {}
+        RuntimeError.__init__(self, f"{dump} cannot be opened now ({why}); it may hold a finished run, so it is left "
+                                    f"untouched: close what holds it open (or mend the file system), then run again")
+
+
+#: the conditions of an existing dump (:func:`dump_condition`)
+DUMP_CONDITIONS = ("absent", "empty", "unfinished", "complete", "unreadable", "truncated", "does-not-verify",
+                   "not-hdf5")
+
+
+def dump_condition(dump):
+    """What a dump is, checked whole: the ``complete`` flag alone is not
+    trusted.
+
+    Parameters
+    ----------
+    dump : str
+        The dump.
+
+    Returns
+    -------
+    condition : str
+        "absent"; "empty" (0 bytes); "unfinished" (it opens, ``complete``
+        is not set); "complete" (``complete = 1`` and every snapshot reads
+        against its index, :meth:`postproc.schema.DumpReader.verify`);
+        "unreadable" (it cannot be opened now: held open by another process
+        through HDF5's file lock, or an I/O error; it may be fine);
+        "truncated" (an HDF5 file cut short or damaged); "does-not-verify"
+        (it opens but its snapshots, count or index do not add up: e.g. a
+        packed dump that lost a snapshot); "not-hdf5" (no HDF5 signature).
+    detail : str
+        One line: why.
+
+    Examples
+    --------
+    >>> dump_condition("/nonexistent/run.h5")
+    ('absent', 'no dump')
+    """
+    if not os.path.lexists(dump):
+        return "absent", "no dump"
+    try:
+        size = os.path.getsize(dump)
+        with open(dump, "rb") as fh:
+            head = fh.read(8)
+    except OSError as exc:
+        return "unreadable", f"cannot be read: {exc.strerror or exc.__class__.__name__}"
+    if size == 0:
+        return "empty", "an empty file (0 bytes)"
+    if head != b"\x89HDF\r\n\x1a\n":
+        return "not-hdf5", f"not an HDF5 file ({size} bytes, no HDF5 signature)"
+    import h5py
+
+    try:
+        with h5py.File(dump, "r") as f:
+            flag = bool(f.attrs.get("complete", 0))
+    except OSError as exc:
+        text = str(exc).lower()
+        if "unable to lock" in text or "errno = 11" in text or "temporarily unavailable" in text:
+            return "unreadable", "held open by another process: HDF5 file lock"
+        if "truncated" in text or "signature" in text or "eof" in text or "bad" in text or "corrupt" in text:
+            return "truncated", f"truncated or damaged ({str(exc).splitlines()[0][:120]})"
+        return "unreadable", f"cannot be opened: {str(exc).splitlines()[0][:120]}"
+    if not flag:
+        return "unfinished", "unfinished (complete is not set)"
+    from postproc.schema import DumpFormatError, verify_dump
+
+    try:
+        verify_dump(dump)
+    except DumpFormatError as exc:
+        return "does-not-verify", "does not verify: " + str(exc).replace(dump + ": ", "", 1)
+    except OSError as exc:
+        return "unreadable", f"cannot be read whole: {str(exc).splitlines()[0][:120]}"
+    return "complete", "complete"
+
+
+def set_aside(path, why):
+    """Move a file (or folder) aside as ``PATH.<why>-<UTC stamp>`` (a
+    ``-2``, ``-3`` ... added when that name is taken): never removed, never
+    over another moved-aside file.
+
+    Parameters
+    ----------
+    path : str
+        The file.
+    why : str
+        One word or hyphenated words, e.g. "truncated".
+
+    Returns
+    -------
+    str
+        The new path.
+    """
+    stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
+    base = f"{path}.{why}-{stamp}"
+    new, k = base, 1
+    while os.path.lexists(new):
+        k += 1
+        new = f"{base}-{k}"
+    os.rename(path, new)        # same folder: atomic, fails rather than replaces on no platform we run
+    return new
+
+
+#: damaged finished dumps: moved aside, and the run starts again
+SET_ASIDE = ("truncated", "does-not-verify", "not-hdf5")
+
+
 def clear_attempt(dump):
-    """Remove what an unfinished attempt left (:meth:`RunFiles.written_by_an_attempt`);
+    """Clear what an unfinished attempt left (:meth:`RunFiles.written_by_an_attempt`);
     its logs, attempts record and lock are kept. Call it holding the run's
-    lock (:mod:`yade_scripts.runlock`).
+    lock (:mod:`yade_scripts.runlock`). A dump that may hold a finished run
+    is never removed (:func:`dump_condition`): a complete one stays; one
+    that cannot be opened now raises :class:`DumpUnreadable` and nothing is
+    touched; a truncated, not-verifying or non-HDF5 one is moved aside
+    (:func:`set_aside`) and its parts folder with it.
 
     Parameters
     ----------
@@ -209,7 +335,16 @@ def clear_attempt(dump):
 
     Returns
     -------
-    None
+    list of str
+        One line for each thing it did (what it removed; what it moved
+        aside, where and why); empty when there was nothing to clear.
+
+    Raises
+    ------
+    DumpUnreadable
+        The dump cannot be opened now (nothing was touched).
+    ValueError
+        The dump is complete (nothing was touched).
 
     Examples
     --------
@@ -217,13 +352,31 @@ def clear_attempt(dump):
     >>> d = tempfile.mkdtemp()
     >>> open(os.path.join(d, "run.log.csv"), "w").close()
     >>> clear_attempt(os.path.join(d, "run.h5")); os.listdir(d)
+    ['removed the unfinished attempt (run.log.csv)']
     []
     """
-    for p in RunFiles(dump).written_by_an_attempt():
+    said = []
+    kind, why = dump_condition(dump)
+    if kind == "unreadable":
+        raise DumpUnreadable(dump, why)
+    if kind == "complete":
+        raise ValueError(f"{dump} is complete: not cleared")
+    files = RunFiles(dump)
+    if kind in SET_ASIDE:
+        moved = set_aside(dump, kind)
+        text = f"{os.path.basename(dump)}: {why}: moved aside to {os.path.basename(moved)}"
+        if os.path.isdir(files.parts):
+            text += f" (its parts to {os.path.basename(set_aside(files.parts, kind))})"
+        said.append(text)
+    left = [p for p in files.written_by_an_attempt() if os.path.lexists(p)]
+    for p in left:
         if os.path.isdir(p):
             shutil.rmtree(p, ignore_errors=True)
-        elif os.path.exists(p):
+        else:
             os.remove(p)
+    if left:
+        said.append(f"removed the unfinished attempt ({', '.join(map(os.path.basename, left))})")
+    return said
 
 
 # ------------------------------------------------------------ the rule
@@ -549,8 +702,9 @@ class RunState:
     Attributes
     ----------
     state : str
-        "complete", "running", "resumable", "failed", "unfinished" or "not
-        started".
+        "complete", "running", "unreadable" (the dump cannot be opened now),
+        "damaged" (a dump that is truncated or does not verify),
+        "resumable", "failed", "unfinished" or "not started".
     detail : str
         One line.
     step : int or None
@@ -577,9 +731,12 @@ def state_of(dump):
     :mod:`yade_scripts.runlock`; never this process); a checkpoint
     (resumable at its step); the last recorded attempt failed (its reason);
     files of an attempt without either (unfinished: killed before its first
-    checkpoint, it starts afresh); nothing (not started). Only a dump whose
-    ``complete`` flag is set is complete here; whether it adds up is checked
-    when it is read (:class:`postproc.schema.DumpReader`).
+    checkpoint, it starts afresh); nothing (not started). A dump is complete
+    here only when its ``complete`` flag is set and it verifies whole
+    (:func:`dump_condition`); one that cannot be opened now is "unreadable"
+    (after "running": a writer holds its dump open), one truncated or not
+    verifying "damaged" (moved aside, never removed, when its line runs
+    again).
 
     Parameters
     ----------
@@ -599,7 +756,8 @@ def state_of(dump):
     """
     from .runlock import describe, holds, lock_path, run_holder
 
-    if complete(dump):
+    kind, why = dump_condition(dump)
+    if kind == "complete":
         return RunState("complete", "complete")
     where = checkpoint_position(dump)
     try:
@@ -609,6 +767,13 @@ def state_of(dump):
     if holder is not None:
         at = f", last checkpoint at step {where[0]} ({where[1]})" if where else ""
         return RunState("running", f"running: {describe(holder)}{at}", where and where[0], holder)
+    if kind == "unreadable":
+        return RunState("unreadable", f"the dump cannot be opened now ({why}): it may be a finished run; a task "
+                        f"refuses it and leaves it untouched: look at it")
+    if kind in SET_ASIDE and (where is None or complete(dump)):
+        said = "complete but " if complete(dump) else ""
+        return RunState("damaged", f"{said}{why}: maybe a finished run; moved aside (never removed) when its line "
+                        f"runs again")
     if where is not None:
         return RunState("resumable", f"resumable at step {where[0]} ({where[1]})", where[0])
     tries = read_attempts(dump)

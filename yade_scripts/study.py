@@ -870,13 +870,14 @@ def _collect(folder, tables, counts, figures, archive):
                 if dump in held:
                     runs.setdefault(sample, []).append((label, dump, ARCHIVED))
                     continue
-                st = state_of(dump)
-                bad = whole(dump) if st.finished else None
-                if st.finished and bad is None:
+                st = state_of(dump)          # complete only when it verifies whole
+                if st.finished:
                     runs.setdefault(sample, []).append((label, dump, 0))
                     continue
-                if bad is not None:
-                    st_detail, state = f"refused, not analysed: {bad}", "refused"
+                if st.state == "damaged":        # truncated or not verifying: never "starts afresh"
+                    st_detail, state = f"refused, not analysed: {dump}: {st.detail}", "refused"
+                elif st.state == "unreadable":   # held open by another process: it may be fine
+                    st_detail, state = st.detail, "unreadable"
                 elif line.task in queue:
                     st_detail = queue_detail(*queue[line.task])
                     state = "running" if queue[line.task][1] in ON_A_NODE else "pending"
@@ -903,8 +904,10 @@ def _collect(folder, tables, counts, figures, archive):
         for e in mine:
             line = by_number[e["line"]]
             if e["status"].startswith("refused"):
-                e["note"] = (f"the dump does not add up: move it aside (and its .lock, .attempts.json), then "
-                             f"{command([line])}")
+                e["note"] = (f"the dump does not add up and may be a finished run: look at it (or move it aside), "
+                             f"then {command([line])}, whose task moves it aside itself (never removes it)")
+            elif e.get("state") == "unreadable":
+                e["note"] = f"close what holds the dump open, then collect again (or {command([line])})"
             elif line.error:
                 e["note"] = f"fix line {line.number} of {name}/table.txt, then: {command([line])}"
             elif line in todo:

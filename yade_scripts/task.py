@@ -18,7 +18,14 @@ task:
    process writes the run (the same line submitted twice, a study or a
    task by hand on it), it refuses at once, naming that process, touches
    nothing and exits 4;
-3. exits at once when the line's dump is complete;
+3. checks the line's dump whole (:func:`yade_scripts.runstate.dump_condition`:
+   the ``complete`` flag and every snapshot against its index) and exits at
+   once when it is complete; a dump that cannot be opened now (held open by
+   another process, HDF5's file lock; an I/O error) may be finished, so the
+   task refuses, touches nothing and exits 4; a dump that is truncated or
+   does not verify (a packed dump that lost a snapshot) is moved aside as
+   ``NAME.h5.truncated-<UTC stamp>`` (or ``.does-not-verify-…``), never
+   removed, said in one line, and the line runs again;
 4. runs the line through :func:`yade_scripts.pool.run_pool` (the one loop
    and rule of every run: every attempt recorded in the run's
    ``STEM.attempts.json`` as it starts and when it ends, one killed with
@@ -32,8 +39,14 @@ task:
    ``--requeues`` times (counted in the attempts record: SLURM's own
    requeues, after a node failure or a preemption, do not count), so that
    the next job of the task resumes from the checkpoint;
-6. on SIGTERM (``scancel``: stop for good) stops YADE the same way and
-   ends, not requeued; its run stays resumable by submitting the task again.
+6. on SIGTERM stops YADE the same way and ends, not requeued by itself;
+   SLURM sends the same SIGTERM for ``scancel`` (stop for good: the run
+   stays resumable by submitting the task again) and for its own requeue
+   (``scontrol requeue``, a preemption: the task starts again by itself and
+   resumes). The task tells them apart by what SLURM records of the job
+   first (its restart count and state, :func:`sigterm_cause`) and, when
+   that does not tell, says "stopped by SLURM (scancel or requeue)" rather
+   than guess.
 
 Its final state and reason go to its output (lines ``task: ...``, the last
 one, once per job, ``task: FINAL ...``), to SLURM's accounting (the exit
@@ -43,7 +56,7 @@ comments) and to the run's attempts record.
 
 Exit codes: 0 complete (or requeued); 2 invalid line or folder; 3 the run
 failed (a blow-up, or it crashed past its resumes); 4 another process
-writes the run; 75 stopped and resumable but not requeued (scancel, no
+writes the run, or its dump cannot be opened now (held open elsewhere); 75 stopped and resumable but not requeued (scancel, no
 SLURM, or ``--requeues`` used up): submit the task again.
 
 Standard library only outside the run (the pool and the table checks):
@@ -61,8 +74,8 @@ import sys
 from .batch import dump_of, table_lines
 from .parameters import ConfigError
 from .runlock import RunBusy, RunLock, describe, lock_path
-from .runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, mark_requeued, now_utc, state_of,
-                       task_requeues)
+from .runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, SET_ASIDE, DumpUnreadable, complete,
+                       dump_condition, has_checkpoint, mark_requeued, now_utc, set_aside, state_of, task_requeues)
 
 #: requeues of one task at most (``--requeues``): each is one job's time limit
 DEFAULT_REQUEUES = 10
@@ -131,6 +144,75 @@ def scontrol(*args):
     if r.returncode != 0:
         return (r.stderr.strip() or r.stdout.strip() or f"exit {r.returncode}").splitlines()[0]
     return None
+
+
+def sigterm_cause(show_job, restarts=0):
+    """Who sent the task's SIGTERM, from ``scontrol show job -o JOB`` taken
+    after it. SLURM sends the same SIGTERM for a ``scancel`` and for its
+    requeue (``scontrol requeue``, a preemption), and marks the job first:
+    a requeue counts one more restart (``Restarts``, above this job's
+    ``$SLURM_RESTART_COUNT``) and leaves it REQUEUED (then PENDING); a
+    scancel leaves it CANCELLED; ``scancel --batch --signal=TERM`` only
+    signals, and the job stays RUNNING. While the job's processes end,
+    scontrol may show COMPLETING for either: then, as with no answer, the
+    cause is not known.
+
+    Parameters
+    ----------
+    show_job : str or None
+        scontrol's one-line record of the job (``Key=Value`` words), or None.
+    restarts : int
+        ``$SLURM_RESTART_COUNT`` of this job (0 on its first start).
+
+    Returns
+    -------
+    str
+        "requeue", "scancel" or "unknown".
+
+    Examples
+    --------
+    >>> sigterm_cause("JobId=7 ArrayJobId=6 JobState=COMPLETING Reason=None Restarts=1", 0)
+    'requeue'
+    >>> sigterm_cause("JobId=7 JobState=CANCELLED Reason=None Restarts=0"), sigterm_cause(None)
+    ('scancel', 'unknown')
+    """
+    fields = dict(w.split("=", 1) for w in (show_job or "").split() if "=" in w)
+    state = fields.get("JobState", "").upper()
+    counted = fields.get("Restarts", "")
+    if (counted.isdigit() and int(counted) > restarts) or state.startswith(("REQUEUE", "PENDING")):
+        return "requeue"
+    if state.startswith(("CANCELLED", "RUNNING")):
+        return "scancel"
+    return "unknown"
+
+
+#: the task's words for who sent its SIGTERM (:func:`sigterm_cause`)
+SIGTERM_WORDS = {"requeue": "requeued by SLURM (SIGTERM of a requeue: SLURM starts the task again by itself, and "
+                            "it resumes)",
+                 "scancel": "stopped on request (SIGTERM, scancel)",
+                 "unknown": "stopped by SLURM (SIGTERM: scancel or requeue; which one, SLURM did not say)"}
+
+
+def show_job(job_id):
+    """``scontrol show job -o JOB``'s one line, or None when it fails.
+
+    Parameters
+    ----------
+    job_id : str
+        The job as scontrol takes it (:func:`slurm_job`).
+
+    Returns
+    -------
+    str or None
+    """
+    exe = shutil.which("scontrol")
+    if exe is None:
+        return None
+    try:
+        r = subprocess.run([exe, "show", "job", "-o", job_id], capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return r.stdout.strip().splitlines()[0] if r.returncode == 0 and r.stdout.strip() else None
 
 
 def finish(code, state, job_id):
@@ -304,9 +386,19 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
 
 def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, echo):
     """The task's line, its run's lock held."""
+    kind, why = dump_condition(dump)
+    if kind == "unreadable":            # it may be finished: refuse, touch nothing
+        return finish(EXIT_BUSY, f"refused: {DumpUnreadable(dump, why)}", job_id)
+    if kind == "complete":              # verified whole, not only its flag
+        return finish(EXIT_DONE, f"done: {os.path.basename(dump)} is complete and verifies, nothing to do", job_id)
+    if kind in SET_ASIDE and (complete(dump) or not has_checkpoint(dump)):
+        try:
+            moved = set_aside(dump, kind)
+        except OSError as exc:
+            return finish(EXIT_CONFIG, f"failed: {dump}: {why}, and it could not be moved aside: "
+                                       f"{exc.strerror or exc}", job_id)
+        say(f"{os.path.basename(dump)}: {why}: moved aside to {os.path.basename(moved)}; the line runs again")
     before = state_of(dump)
-    if before.finished:
-        return finish(EXIT_DONE, f"done: {os.path.basename(dump)} is complete, nothing to do", job_id)
     say(f"table line {line.number} ({line.description}): {before.detail}; {threads} thread(s)")
 
     from .pool import Job, run_pool
@@ -337,8 +429,12 @@ def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, ec
     asked = signal.Signals(stop[0]).name if stop else "no signal"
     if not job_id:
         return finish(EXIT_TERM, f"stopped on request ({asked}) ({where}); to resume: {resubmit}", job_id)
-    if stop and stop[0] == signal.SIGTERM:         # scancel: stopped for good, resumable by hand
-        return finish(EXIT_TERM, f"stopped on request (SIGTERM, scancel) ({where}); to resume: {resubmit}", job_id)
+    if stop and stop[0] == signal.SIGTERM:         # scancel or SLURM's requeue: SLURM marked the job first
+        cause = sigterm_cause(show_job(job_id), int(os.environ.get("SLURM_RESTART_COUNT") or 0))
+        if cause == "requeue":
+            return finish(EXIT_TERM, f"{SIGTERM_WORDS[cause]} ({where})", job_id)
+        return finish(EXIT_TERM, f"{SIGTERM_WORDS[cause]} ({where}); to resume"
+                                 f"{' if it is not requeued' if cause == 'unknown' else ''}: {resubmit}", job_id)
     used = task_requeues(dump)           # its own requeues: SLURM's (node failure, preemption) not counted
     if used >= requeues:
         return finish(EXIT_TERM, f"stopped ({where}); its {requeues} requeue(s) are used up; to resume: {resubmit}",
