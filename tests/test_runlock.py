@@ -289,7 +289,7 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
     monkeypatch.setattr(study, "run_samples", lambda *a, **k: {"polyhedra": 0, "spheres": 0})
     monkeypatch.setattr(study, "REPORT_WAIT_SECONDS", 0.05)
     args = argparse.Namespace(ensemble=1, out=str(out), preset="tiny", library=None, counts=None, no_figures=True,
-                              archive=None)
+                              set_aside=False, archive=None)
     p = subprocess.Popen([sys.executable, "-c", HOLD.format(root=ROOT, then="sys.stdin.readline()"),
                           str(out / study.REPORT_LOCK)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     released = []

@@ -429,11 +429,26 @@ def archived(dest, table, counts=()):
 
 
 def conflicts(dest, table, counts=()):
-    """One line per archived run of ``table`` in ``dest`` that a study must
-    not run again over: archived under another analysis version, or from a
-    run folder of other parameters or another shape library (running it
-    here would put another result beside, or over, that record). Empty
-    when there is none or no archive; see :func:`archived`."""
+    """The archived runs of ``table`` in ``dest`` that a study must not run
+    again over: archived under another analysis version, or from a run
+    folder of other parameters or another shape library (running it here
+    would put another result beside, or over, that record).
+
+    Parameters
+    ----------
+    dest : str or None
+        The archive (None or "": no archive).
+    table : str
+        A sample's run folder of the study (its ``params.json`` is read).
+    counts : sequence of str
+        The contact counts the study reads besides its own.
+
+    Returns
+    -------
+    list of str
+        One line per such run, naming it and why; empty when there is none
+        or no archive (see :func:`archived`).
+    """
     return [line for how, line, conflict in _judge(dest, table, counts).values() if conflict]
 
 

@@ -304,6 +304,16 @@ def set_aside(path, why):
     -------
     str
         The new path.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> d = tempfile.mkdtemp()
+    >>> for _ in range(2):
+    ...     _ = open(os.path.join(d, "run.h5"), "w").close()
+    ...     _ = set_aside(os.path.join(d, "run.h5"), "truncated")
+    >>> sorted(n.split("-", 1)[0] + ("-2" if n.endswith("-2") else "") for n in os.listdir(d))
+    ['run.h5.truncated', 'run.h5.truncated-2']
     """
     stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y%m%dT%H%M%SZ")
     base = f"{path}.{why}-{stamp}"
@@ -311,7 +321,7 @@ def set_aside(path, why):
     while os.path.lexists(new):
         k += 1
         new = f"{base}-{k}"
-    os.rename(path, new)        # same folder: atomic, fails rather than replaces on no platform we run
+    os.rename(path, new)        # same folder: atomic; the new name was found free just above
     return new
 
 
