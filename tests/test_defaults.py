@@ -49,8 +49,10 @@ def test_what_make_study_runs_is_what_docs_study_quotes():
     assert "SHAPES ?=\n" in text("Makefile")     # no library of one's own by default: the $(if ...) adds nothing
     assert "COUNTS ?=\n" in text("Makefile")     # the study's default counts: the $(if ...) adds nothing
     assert "ARCHIVE ?=\n" in text("Makefile")    # no archive of analysed runs by default: the same
+    assert "SET_ASIDE ?=\n" in text("Makefile") and "DRY_RUN ?=\n" in text("Makefile")   # off by default
     for part in ("$(if $(SHAPES),--library $(SHAPES))", "$(if $(COUNTS),--counts $(COUNTS))",
-                 "$(if $(ARCHIVE),--archive $(ARCHIVE))"):
+                 "$(if $(ARCHIVE),--archive $(ARCHIVE))", "$(if $(SET_ASIDE),--set-aside)",
+                 "$(if $(DRY_RUN),--dry-run)"):
         recipe = recipe.replace(part, "")
     for name, value in v.items():
         recipe = recipe.replace(f"$({name})", value)
