@@ -50,7 +50,10 @@ def source_hash(python=sys.executable):
             else:
                 with open(path, "rb") as fh:
                     h.update(fh.read())
-    h.update(" ".join(CMAKE_FLAGS).encode() + b"\0" + os.path.realpath(python).encode())
+    # the interpreter's own path, not the file it links to: a venv and the
+    # system Python share one binary but not their numpy (whose headers the
+    # build compiles against)
+    h.update(" ".join(CMAKE_FLAGS).encode() + b"\0" + os.path.abspath(python).encode())
     return h.hexdigest()[:12]
 
 
