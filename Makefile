@@ -31,7 +31,7 @@ SET_ASIDE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front
+.PHONY: test test-fast docs study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front lmgc90 lmgc90-system
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
@@ -68,13 +68,29 @@ kernel: system venv
 	$(PY) -c "from shapes import ckernel; ckernel.build(quiet=False)"
 	$(PY) -m yade_scripts.yadeplugin build
 
+# LMGC90 (the Contact Dynamics code of the paper), its Python API pylmgc90
+# built from the vendored source lmgc90/vendor (lmgc90/ORIGIN.md) with
+# gfortran, swig, LAPACK and BLAS, once, into lmgc90/_build/<hash of the
+# source> (about 4 minutes on 2 cores; docs/lmgc90.md). Rebuilt only when
+# the vendored source changes.
+LMGC90_DEBS := gfortran swig cmake liblapack-dev libblas-dev
+lmgc90-system:
+	@if ! dpkg -s $(LMGC90_DEBS) >/dev/null 2>&1; then \
+	  echo "make: installing Debian packages $(LMGC90_DEBS)"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(LMGC90_DEBS); \
+	fi
+
+lmgc90: lmgc90-system venv
+	$(PY) -m lmgc90.build
+
 # The suite on TEST_WORKERS pytest-xdist workers, a file to a worker at a time
 # (its fixtures run once). tests/conftest.py starts the longest files first;
 # --no-loadscope-reorder keeps that order (xdist would otherwise sort the files
 # by their number of tests and start the long YADE files, which have few, last)
 TEST_WORKERS ?= 2
 XDIST = -n $(TEST_WORKERS) --dist loadfile --no-loadscope-reorder
-test: system venv kernel
+test: system venv kernel lmgc90
 	$(PY) -m pytest -q $(XDIST) --durations=25
 
 # The documentation: docs/*.md and the API reference from the docstrings

@@ -1,0 +1,1 @@
+"""LMGC90 (Contact Dynamics) beside YADE: the vendored source (``vendor/``) and its build (``build``)."""

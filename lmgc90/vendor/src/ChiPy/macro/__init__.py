@@ -1,0 +1,6 @@
+
+from .macro import *
+from . import computation
+
+Initialize()
+

@@ -1,0 +1,3 @@
+
+is_vtk_display = False
+vtkVersion     = (0,0,)

@@ -1,0 +1,3 @@
+
+all = ["ann_eucl", "ann_manh"]
+

@@ -1,0 +1,4 @@
+
+from .macro import OpenCentralKernelFiles , \
+                   WriteCentralKernelFiles
+

@@ -1,0 +1,6 @@
+__all__=['avatar',
+         'bulks', 'bulk',
+         'nodes', 'node',
+         'contactors', 'contactor',
+         'groups','group'
+        ]

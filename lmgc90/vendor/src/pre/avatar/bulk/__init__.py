@@ -1,0 +1,5 @@
+__all__=['bulk',
+         'element',
+         'rigid2d',
+         'rigid3d'
+         ]

@@ -1,0 +1,1 @@
+__all__=['containers2D', 'containers3D','granulometry']

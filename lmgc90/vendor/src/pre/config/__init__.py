@@ -1,0 +1,3 @@
+
+novisu    = False
+nowarning = False

@@ -1,0 +1,1 @@
+__all__=['tact_behav','bulk_behav','model']

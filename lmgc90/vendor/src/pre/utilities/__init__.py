@@ -1,0 +1,1 @@
+__all__=['nTree', 'error', 'variables','check_compiled_modules']
