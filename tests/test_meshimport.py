@@ -461,31 +461,6 @@ def test_components_refuse_shells_and_slivers_and_no_advice_to_use_them(tmp_path
     assert "with --components, which refuses the 1 inward-facing shell, 1 sliver" in line
 
 
-def test_a_seam_of_near_duplicate_vertices_is_named_and_merged_by_a_tolerance(tmp_path, capsys):
-    """A 40 mm ball whose two halves' shared vertices are 1 um apart (a
-    seam): open, but the cause named, and closed by --merge-tolerance."""
-    s = trimesh.creation.icosphere(subdivisions=3, radius=20.0)
-    v, t = np.asarray(s.vertices), np.asarray(s.faces)
-    right = v[t].mean(axis=1)[:, 0] > 0
-    shared = np.intersect1d(t[right].ravel(), t[~right].ravel())
-    copy = {int(k): len(v) + i for i, k in enumerate(shared)}
-    seam = v[shared] + np.array([1e-3, 0, 0])                     # 1 um in mm
-    t2 = t.copy()
-    t2[right] = np.vectorize(lambda k: copy.get(int(k), k))(t[right])
-    write(tmp_path / "seam.ply", np.vstack([v, seam]), t2)
-    assert main(["import", str(tmp_path / "seam.ply"), "--out", str(tmp_path / "a.h5")]) == 2
-    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
-    assert "seam of near-duplicate vertices" in line and f"{2 * len(shared)} of the {2 * len(shared)}" in line
-    assert "--merge-tolerance 0.002" in line
-    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "0.002", "--out",
-                 str(tmp_path / "b.h5")]) == 0
-    lib = ShapeLibrary(str(tmp_path / "b.h5"))
-    assert lib.mesh_triangles[0] == len(t) and json.loads(lib.attrs["recipe"])["merge_tolerance"] == 0.002
-    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "-1", "--out",
-                 str(tmp_path / "c.h5")]) == 2
-    assert "--merge-tolerance must be at least 0" in capsys.readouterr().err
-
-
 def split_ball(radius, subdivisions, width, seed=1):
     """An icosphere whose two halves do not share their seam's vertices:
     the right half's copies lie 0.2 to 1 x ``width`` (random directions)
@@ -501,6 +476,24 @@ def split_ball(radius, subdivisions, width, seed=1):
     t2 = t.copy()
     t2[right] = np.vectorize(lambda k: copy.get(int(k), k))(t[right])
     return np.vstack([v, v[shared] + off]), t2, off
+
+
+def test_a_seam_of_near_duplicate_vertices_is_named_and_merged_by_a_tolerance(tmp_path, capsys):
+    """A 40 mm ball whose two halves' shared vertices are up to 1 um apart
+    (a seam): open, but the cause named, and closed by --merge-tolerance."""
+    v, t, off = split_ball(20.0, 3, 1e-3)                          # up to 1 um in mm
+    write(tmp_path / "seam.ply", v, t)
+    assert main(["import", str(tmp_path / "seam.ply"), "--out", str(tmp_path / "a.h5")]) == 2
+    line = next(x for x in capsys.readouterr().err.splitlines() if x.startswith("shapes: refused"))
+    assert "seam of near-duplicate vertices" in line and f"{2 * len(off)} of the {2 * len(off)}" in line
+    assert "--merge-tolerance 0.002" in line
+    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "0.002", "--out",
+                 str(tmp_path / "b.h5")]) == 0
+    lib = ShapeLibrary(str(tmp_path / "b.h5"))
+    assert lib.mesh_triangles[0] == len(t) and json.loads(lib.attrs["recipe"])["merge_tolerance"] == 0.002
+    assert main(["import", str(tmp_path / "seam.ply"), "--merge-tolerance", "-1", "--out",
+                 str(tmp_path / "c.h5")]) == 2
+    assert "--merge-tolerance must be at least 0" in capsys.readouterr().err
 
 
 def test_a_seam_wider_than_a_hundredth_of_the_edges_is_named_with_its_width_and_the_tolerance(tmp_path, capsys):
