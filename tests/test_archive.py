@@ -2,6 +2,7 @@
 tells two shape libraries apart, and a bad archive named in one line. The
 whole path (a study archived, a new study folder reading it) is in
 tests/test_study_smoke.py."""
+import os
 import shutil
 
 import pytest
@@ -159,3 +160,27 @@ def test_records_of_another_version_or_other_parameters_are_conflicts(tmp_path):
     (into / FOLDER_RECORD).write_text(json.dumps(params))
     assert len(conflicts(arch, table)) == 4
     assert conflicts(None, table) == []
+
+
+@pytest.mark.parametrize("mask, mode", [(0o022, 0o755), (0o027, 0o750)])
+def test_an_archived_analysis_folder_takes_the_user_s_umask(tmp_path, mask, mode):
+    """An analysis folder is copied into the archive through a staging folder
+    renamed into place: it gets the mode any new folder gets under the
+    umask, not tempfile's 0700."""
+    import stat
+
+    from yade_scripts.archive import _copy_run
+
+    table = tmp_path / "study" / "spheres-ensemble"
+    (table / "analysis-spheres-seed1").mkdir(parents=True)
+    (table / "analysis-spheres-seed1" / "summary.csv").write_text("step\n1\n")
+    into = tmp_path / "arch" / "spheres-ensemble"
+    into.mkdir(parents=True)
+    old = os.umask(mask)
+    try:
+        files = _copy_run(str(table / "spheres-seed1.h5"), str(table), str(into),
+                          {"": str(table / "analysis-spheres-seed1")})
+    finally:
+        os.umask(old)
+    assert list(files) == ["analysis-spheres-seed1/summary.csv"]
+    assert stat.S_IMODE(os.stat(into / "analysis-spheres-seed1").st_mode) == mode

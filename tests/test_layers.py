@@ -11,7 +11,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 #: postproc's layers, from the bottom: a module may import its own layer or
 #: lower ones, never a higher one
 LAYERS = [
-    ("base", {"errors", "schema", "axes", "statistics", "periodic", "provenance"}),
+    ("base", {"errors", "schema", "axes", "statistics", "periodic", "provenance", "staging"}),
     ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
                  "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),

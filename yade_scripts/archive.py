@@ -50,7 +50,8 @@ import json
 import os
 import shutil
 import sys
-import tempfile
+
+from postproc.staging import staging_dir
 
 from .parameters import ConfigError
 
@@ -386,7 +387,7 @@ def _copy_run(dump, table, into, folders):
             files[rel] = sha256_of(path)
     for folder in folders.values():
         rel = os.path.relpath(folder, table)
-        tmp = tempfile.mkdtemp(prefix=".tmp-", dir=into)
+        tmp = staging_dir(into, ".tmp-")
         for f in sorted(os.listdir(folder)):
             if f.endswith(KEPT_SUFFIXES) and os.path.isfile(os.path.join(folder, f)):
                 shutil.copyfile(os.path.join(folder, f), os.path.join(tmp, f))
