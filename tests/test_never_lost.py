@@ -33,6 +33,17 @@ HOLD = ("import h5py, sys, time\n"
         "time.sleep(120)\n")
 
 
+def _run_task_keeping_signals(out):
+    """``task.run_task(out, 1)`` in this process, its SIGTERM and SIGUSR1
+    handlers put back after it (the task installs its own)."""
+    handlers = {s: signal.getsignal(s) for s in (signal.SIGTERM, signal.SIGUSR1)}
+    try:
+        return task_mod.run_task(str(out), 1)
+    finally:
+        for s, h in handlers.items():
+            signal.signal(s, h)
+
+
 def finished_dump(path, n=3):
     """A complete, packed dump of ``n`` small snapshots; its bytes."""
     snap, _, _ = lattice_snapshot()
@@ -190,12 +201,7 @@ def test_a_task_checks_a_complete_dump_whole(tmp_path, monkeypatch, capsys):
         return {jobs[0].description: "stopped"}
 
     monkeypatch.setattr("yade_scripts.pool.run_pool", no_yade)
-    handlers = {s: signal.getsignal(s) for s in (signal.SIGTERM, signal.SIGUSR1)}
-    try:
-        code = task_mod.run_task(str(out), 1)
-    finally:
-        for s, h in handlers.items():
-            signal.signal(s, h)
+    code = _run_task_keeping_signals(out)
     said = capsys.readouterr().out
     assert code == runstate.EXIT_TERM and ran == [False]
     assert "nothing to do" not in said
@@ -288,12 +294,7 @@ def test_the_task_s_final_line_after_slurm_s_sigterm(tmp_path, monkeypatch, caps
     for k, v in {"SLURM_JOB_ID": "5", "SLURM_ARRAY_JOB_ID": "4", "SLURM_ARRAY_TASK_ID": "1",
                  "SLURM_RESTART_COUNT": "0"}.items():
         monkeypatch.setenv(k, v)
-    handlers = {s: signal.getsignal(s) for s in (signal.SIGTERM, signal.SIGUSR1)}
-    try:
-        code = task_mod.run_task(str(out), 1)
-    finally:
-        for s, h in handlers.items():
-            signal.signal(s, h)
+    code = _run_task_keeping_signals(out)
     lines = [x for x in capsys.readouterr().out.splitlines() if x.startswith("task: FINAL")]
     assert code == runstate.EXIT_TERM and len(lines) == 1 and lines[0].startswith(f"task: FINAL {final}")
     assert comments[-1].startswith(f"Comment={final}")

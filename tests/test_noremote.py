@@ -179,6 +179,17 @@ def test_a_scene_started_by_hand_closes_the_servers_at_its_start(tmp_path, shape
     assert opened <= {int(m.group(1)), int(m.group(2))} and ports == set()
 
 
+def _beside_the_scene(path, body):
+    """Write a YADE script ``path`` that starts a daemon thread running
+    ``body`` (the indented lines of a function of no argument; ``O``,
+    ``time`` and the scene's globals in reach), then runs the folder's
+    ``triaxial.py`` in its own globals."""
+    path.write_text("import threading, time\n"
+                    "def beside():\n" + body +
+                    "threading.Thread(target=beside, daemon=True).start()\n"
+                    "exec(compile(open('triaxial.py').read(), 'triaxial.py', 'exec'))\n")
+
+
 @needs_yade
 def test_a_pause_from_another_thread_checkpoints_exits_75_and_resumes(tmp_path, shape_library):
     """O.pause() from a second thread of the run's process, at step 3000
@@ -187,14 +198,10 @@ def test_a_pause_from_another_thread_checkpoints_exits_75_and_resumes(tmp_path, 
     again, it resumes from there and completes."""
     d = tmp_path / "run"
     env = _tiny(d, shape_library, final_strain=0.02)
-    (d / "pause.py").write_text(
-        "import threading, time\n"
-        "def pauser():\n"
-        "    while O.iter < 3000:\n"
-        "        time.sleep(0.001)\n"
-        "    O.pause()\n"
-        "threading.Thread(target=pauser, daemon=True).start()\n"
-        "exec(compile(open('triaxial.py').read(), 'triaxial.py', 'exec'))\n")
+    _beside_the_scene(d / "pause.py",
+                      "    while O.iter < 3000:\n"
+                      "        time.sleep(0.001)\n"
+                      "    O.pause()\n")
     cmd = noremote.command(YADE, ["-j", "1", "-n", "-x"])
     r = subprocess.run(cmd + ["pause.py"], cwd=d, env=env, capture_output=True, text=True, timeout=300)
     assert r.returncode == EXIT_TERM, (r.stdout + r.stderr)[-2000:]
@@ -214,16 +221,12 @@ def test_an_exception_in_the_scenes_own_engine_is_a_failure_not_a_pause(tmp_path
     named an exception in its own engines, never "paused from outside"."""
     d = tmp_path / "run"
     env = _tiny(d, shape_library, final_strain=0.02)
-    (d / "boom.py").write_text(
-        "import threading, time\n"
-        "def breaker():\n"
-        "    while 'control' not in globals() or O.iter < 3000:\n"
-        "        time.sleep(0.001)\n"
-        "    def control():\n"
-        "        raise ValueError('injected')\n"
-        "    globals()['control'] = control\n"
-        "threading.Thread(target=breaker, daemon=True).start()\n"
-        "exec(compile(open('triaxial.py').read(), 'triaxial.py', 'exec'))\n")
+    _beside_the_scene(d / "boom.py",
+                      "    while 'control' not in globals() or O.iter < 3000:\n"
+                      "        time.sleep(0.001)\n"
+                      "    def control():\n"
+                      "        raise ValueError('injected')\n"
+                      "    globals()['control'] = control\n")
     r = subprocess.run(noremote.command(YADE, ["-j", "1", "-n", "-x", "boom.py"]), cwd=d, env=env,
                        capture_output=True, text=True, timeout=300)
     out = r.stdout + r.stderr
