@@ -2029,6 +2029,36 @@ int pc_engine_contacts(engine_t *E, int cap, int *i1, int *i2, double *point, do
     return m;
 }
 
+/* The contacts of the last step as pc_engine_contacts gives them, without
+ * the shadows (footprint, area), which cost a second clipping: body rows i1,
+ * i2, point (3), normal (3, from i1 to i2), normal and tangential force on
+ * i2 (3 each), volume; a wall contact has i1 = -1 - k. Returns the number
+ * written (at most cap). */
+int pc_engine_contacts_noshadow(engine_t *E, int cap, int *i1, int *i2, double *point, double *normal,
+                                double *fnrm, double *ftan, double *vol) {
+    int m = 0;
+    for (int k = 0; k < E->npairs && m < cap; k++) {
+        const pair_t *p = E->pairs + k;
+        if (!p->touching) continue;
+        i1[m] = p->i; i2[m] = p->j;
+        for (int c = 0; c < 3; c++) { point[3 * m + c] = p->c[c]; normal[3 * m + c] = p->n[c]; fnrm[3 * m + c] = p->fn[c]; ftan[3 * m + c] = p->ft[c]; }
+        vol[m] = p->vol;
+        m++;
+    }
+    for (int b = 0; b < E->nb; b++) for (int k = 0; k < E->nw && m < cap; k++) {
+        int idx = b * E->nw + k;
+        if (!E->wtouch[idx]) continue;
+        const double *res = E->wres + PC_WALL_DOUBLES * idx, *ft = E->wft + 3 * idx;
+        i1[m] = -1 - k; i2[m] = b;
+        double n[3] = {0, 0, 0};
+        n[E->wall_axis[k]] = E->wall_sign[k];
+        for (int c = 0; c < 3; c++) { point[3 * m + c] = res[1 + c]; normal[3 * m + c] = n[c]; fnrm[3 * m + c] = res[7 + c]; ftan[3 * m + c] = ft[c]; }
+        vol[m] = res[0];
+        m++;
+    }
+    return m;
+}
+
 /* Memory held by the engine (bytes), for the benchmark. */
 long pc_engine_memory(const engine_t *E) {
     long b = sizeof(engine_t);
