@@ -59,12 +59,17 @@ from .. import noremote
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "PolyhedraKernelEngine.cpp")
+#: the engine for a user's own scene (yade_scripts.yadeplugin.contacts), built into the same library
+USER_SOURCE = os.path.join(HERE, "PolyhedraContactEngine.cpp")
 INCLUDE = os.path.join(HERE, "include")
 PROBE_SCENE = os.path.join(HERE, "probe_scene.py")
 CLASS_NAME = "PolyhedraKernelEngine"
 LIBRARY_NAME = "libPolyhedraKernelEngine.so"
 #: classes whose layout the plugin relies on, with the size YADE allocates
-CHECKED_CLASSES = ("Scene", "Body", "State", "BodyContainer", "Engine", "GlobalEngine")
+CHECKED_CLASSES = ("Scene", "Body", "State", "BodyContainer", "Engine", "GlobalEngine", "Interaction",
+                   "InteractionContainer")
+#: classes the user's engine writes at measured offsets (no header): their sizes bound the measurement
+MEASURED_CLASSES = ("PolyhedraGeom", "PolyhedraPhys")
 #: yade.config.features -> the definitions of YADE's CMakeLists.txt
 FEATURE_DEFINES = {
     "LOGGER": ["YADE_BOOST_LOG", "BOOST_LOG_DYN_LINK"],
@@ -244,7 +249,7 @@ def source_files(here=HERE):
     """The plugin's source and the vendored headers, sorted (of the copy of
     this package in ``here``)."""
     heads = sorted(glob.glob(os.path.join(here, "include", "**", "*.hpp"), recursive=True))
-    return [os.path.join(here, os.path.basename(SOURCE))] + heads
+    return [os.path.join(here, os.path.basename(SOURCE)), os.path.join(here, os.path.basename(USER_SOURCE))] + heads
 
 
 def source_hash(here=HERE):
@@ -291,7 +296,7 @@ def compile_command(yade, out, sizes):
     defs = defines(yade) + [f"PKE_SOURCE_HASH=\"{source_hash()}\""]
     defs += [f"PKE_SIZEOF_{c}={n}" for c, n in sorted(sizes.items())]
     return (["g++", *CXXFLAGS, *(f"-D{d}" for d in defs), f"-I{INCLUDE}", *(f"-I{d}" for d in _include_dirs()),
-             "-o", out, SOURCE, f"-L{yade['lib_dir']}", "-lyade", f"-Wl,-rpath,{yade['lib_dir']}"])
+             "-o", out, SOURCE, USER_SOURCE, f"-L{yade['lib_dir']}", "-lyade", f"-Wl,-rpath,{yade['lib_dir']}"])
 
 
 def _make_prefix(folder, yade, library):
@@ -408,6 +413,10 @@ def build(here=HERE, quiet=True, lib_dir=None):
     tmp = tempfile.mkdtemp(prefix=".tmp-", dir=os.path.dirname(folder))
     try:
         sizes = allocated_sizes(yade["libyade"])
+        try:
+            measured = allocated_sizes(os.path.join(yade["lib_dir"], "libpkg_polyhedra.so"), MEASURED_CLASSES)
+        except PluginError:             # a YADE without polyhedra: the user's engine cannot fill O.interactions
+            measured = {}
         lib = os.path.join(tmp, LIBRARY_NAME)
         say(f"building {CLASS_NAME} against YADE {yade['version']} ({len(yade['features'])} features; about a minute)")
         res = subprocess.run(compile_command(yade, lib, sizes), capture_output=True, text=True)
@@ -432,6 +441,7 @@ def build(here=HERE, quiet=True, lib_dir=None):
         shutil.rmtree(tmp, ignore_errors=True)
         return dict(status, why=f"the build stopped: {type(exc).__name__}: {exc}")
     status["sizes_checked"] = {c: n for c, n in (locals().get("sizes") or {}).items()}
+    status["sizes_measured"] = dict(locals().get("measured") or {})
     with open(os.path.join(tmp, "status.json"), "w") as fh:
         json.dump(status, fh, indent=1)
     try:

@@ -1,0 +1,71 @@
+"""Load the plugin into a YADE that was started without ``YADE_PREFIX``.
+
+YADE loads its plugins when it starts, from ``$YADE_PREFIX/lib/...``. A
+script typed as ``yade script.py`` has no such prefix; :func:`engine_class`
+then loads this copy's ready build itself (``ctypes``, ``RTLD_GLOBAL``: the
+library's constructors register its classes with YADE's class factory) and
+asks it to add its classes to ``yade.wrapper`` (``pke_register_python``).
+The rules of :func:`yade_scripts.yadeplugin.loaded_class` hold either way: a
+build of other sources, or of another YADE, is refused in one line.
+
+Standard library only.
+"""
+from __future__ import annotations
+
+import ctypes
+import os
+
+from . import (LIBRARY_NAME, MEASURED_CLASSES, PluginError, allocated_sizes, find_yade, prefix_libdir,
+               source_hash, status)
+
+USER_CLASS = "PolyhedraContactEngine"
+_loaded = {}
+
+
+def load_library():
+    """Load this copy's ready build into the running YADE unless YADE did;
+    returns one line saying where the classes came from. Raises
+    PluginError (one line) when there is no ready build for this YADE and
+    these sources."""
+    import yade.wrapper as wrapper
+
+    if hasattr(wrapper, USER_CLASS):
+        why = f"loaded by YADE from YADE_PREFIX={os.environ.get('YADE_PREFIX', '?')}"
+        return _loaded.setdefault("why", why)
+    st = status()
+    if not st.get("ok"):
+        raise PluginError(f"the YADE plugin is not ready ({st.get('why')}): python3 -m yade_scripts.yadeplugin build")
+    lib = os.path.join(prefix_libdir(st["prefix"], find_yade()), LIBRARY_NAME)
+    handle = ctypes.PyDLL(lib, mode=ctypes.RTLD_GLOBAL)
+    if handle.pke_register_python() != 0 or not hasattr(wrapper, USER_CLASS):
+        raise PluginError(f"{lib} did not register its classes with yade.wrapper")
+    _loaded["handle"] = handle
+    return _loaded.setdefault("why", f"loaded by this script from {lib}")
+
+
+def engine_class():
+    """``yade.wrapper.PolyhedraContactEngine``, loading the plugin if YADE
+    did not; raises PluginError (one line) for a build of other sources."""
+    load_library()
+    import yade.wrapper as wrapper
+
+    cls = getattr(wrapper, USER_CLASS)
+    built, ours = cls().sourceHash, source_hash()
+    if built != ours:
+        raise PluginError(f"the loaded plugin was built from other sources (hash {built}, this copy's {ours}): "
+                          "python3 -m yade_scripts.yadeplugin build")
+    return cls
+
+
+def measured_sizes():
+    """{class: bytes} YADE allocates for the classes whose fields the user's
+    engine writes at measured offsets (``PolyhedraGeom``, ``PolyhedraPhys``):
+    the build's record, else read off the installed YADE now."""
+    st = status()
+    got = dict(st.get("sizes_measured") or {})
+    if set(MEASURED_CLASSES) <= set(got):
+        return got
+    if "sizes" not in _loaded:
+        y = find_yade()
+        _loaded["sizes"] = allocated_sizes(os.path.join(y["lib_dir"], "libpkg_polyhedra.so"), MEASURED_CLASSES)
+    return _loaded["sizes"]
