@@ -1290,6 +1290,7 @@ static const char *PC_STAT_NAMES[PC_NSTAT] = {
     "apart_by_axis_search", "workspace_overflows", "clip_fallbacks", "structure_kept", "structure_broken"};
 
 #define PC_MAX_WALLS 16
+#define PC_LARGE 4.0     /* a body PC_LARGE times the mean bounding radius stays out of the neighbour grid */
 #define PC_KEEP_DOUBLES ((int)((sizeof(keep_t) + 5) / 6))   /* a kept structure, 6 bytes per double */
 #define PC_PAIR_DOUBLES (24 + PC_KEEP_DOUBLES)   /* a pair's record in the engine state (see pc_engine_get_state) */
 #define PC_WALL_DOUBLES 10       /* a wall contact's results: vol c(3) fp(2) area fn(3) */
@@ -1431,8 +1432,25 @@ static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shap
  * history of pairs present in the old list (both lists sorted by (i, j)) */
 static int rebuild(engine_t *E) {
     int nb = E->nb;
+    /* Bodies much larger than the mean (a user scene's facets and slabs:
+     * PC_LARGE times the mean bounding radius) stay out of the grid, whose
+     * cells they would make as wide as themselves, and are listed against
+     * every body by their bounding spheres. The list is the same either way
+     * (every pair within reach, sorted by (i, j)); a scene without them
+     * builds its grid exactly as before. */
+    double rmean = 0;
+    for (int b = 0; b < nb; b++) rmean += body_radius(E, b);
+    rmean /= nb > 0 ? nb : 1;
+    char *large = calloc(nb + 1, 1);
+    if (!large) return -1;
+    int nlarge = 0;
+    for (int b = 0; b < nb; b++) if (body_radius(E, b) > PC_LARGE * rmean) { large[b] = 1; nlarge++; }
+    int *biglist = malloc(sizeof(int) * (nlarge + 1));       /* the large bodies, in increasing order */
+    if (!biglist) { free(large); free(biglist); return -1; }
+    for (int b = 0, q = 0; b < nb; b++) if (large[b]) biglist[q++] = b;
     double rmax = 0, lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int b = 0; b < nb; b++) {
+        if (large[b]) continue;
         double r = body_radius(E, b);
         if (r > rmax) rmax = r;
         for (int c = 0; c < 3; c++) { double q = E->x[3 * b + c]; if (q < lo[c]) lo[c] = q; if (q > hi[c]) hi[c] = q; }
@@ -1442,7 +1460,7 @@ static int rebuild(engine_t *E) {
     long ncell = 1;
     for (int c = 0; c < 3; c++) {
         double span = hi[c] - lo[c];
-        if (!isfinite(span)) return -2;
+        if (!isfinite(span)) { free(large); free(biglist); return -2; }
         nc[c] = (int)(span / cell);          /* cells at least `cell` wide */
         if (nc[c] > 256) nc[c] = 256;
         if (nc[c] < 1) nc[c] = 1;
@@ -1452,17 +1470,18 @@ static int rebuild(engine_t *E) {
         free(E->cellhead);
         E->cellhead = malloc(sizeof(int) * ncell);
         E->cellcap = (int)ncell;
-        if (!E->cellhead) return -1;
+        if (!E->cellhead) { free(large); free(biglist); return -1; }
     }
     free(E->cellnext);
     E->cellnext = malloc(sizeof(int) * (nb + 1));
-    if (!E->cellnext) return -1;
+    if (!E->cellnext) { free(large); free(biglist); return -1; }
     for (long k = 0; k < ncell; k++) E->cellhead[k] = -1;
     double csz[3];
     for (int c = 0; c < 3; c++) csz[c] = (hi[c] - lo[c]) / nc[c] * (1 + 1e-12) + 1e-300;   /* >= cell */
     int *cidx = malloc(sizeof(int) * 3 * (nb + 1));
-    if (!cidx) return -1;
+    if (!cidx) { free(large); free(biglist); return -1; }
     for (int b = nb - 1; b >= 0; b--) {
+        if (large[b]) continue;
         int ci[3];
         for (int c = 0; c < 3; c++) {
             ci[c] = (int)((E->x[3 * b + c] - lo[c]) / csz[c]);
@@ -1479,6 +1498,24 @@ static int rebuild(engine_t *E) {
     for (int i = 0; i < nb; i++) {
         int start = np;
         double ri = body_radius(E, i);
+        /* a large body, or a small one against the large ones: by bounding spheres, j in increasing order */
+        for (int q = 0; q < (large[i] ? nb - i - 1 : nlarge); q++) {
+            int j = large[i] ? i + 1 + q : biglist[q];
+            if (j <= i) continue;
+            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+            double reach = ri + body_radius(E, j) + E->skin;
+            if (dot3(d, d) > reach * reach) continue;
+            if (np >= E->cap_spare) {
+                int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
+                pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
+                if (!s) { free(cidx); free(large); free(biglist); return -1; }
+                E->spare = s; E->cap_spare = nc2;
+            }
+            pair_t *p = E->spare + np++;
+            memset(p, 0, sizeof(*p));
+            p->i = i; p->j = j;
+        }
+        if (large[i]) continue;             /* its partners are listed, in order */
         for (int dx = -1; dx <= 1; dx++) for (int dy = -1; dy <= 1; dy++) for (int dz = -1; dz <= 1; dz++) {
             int a = cidx[3 * i] + dx, b2 = cidx[3 * i + 1] + dy, c2 = cidx[3 * i + 2] + dz;
             if (a < 0 || b2 < 0 || c2 < 0 || a >= nc[0] || b2 >= nc[1] || c2 >= nc[2]) continue;
@@ -1490,7 +1527,7 @@ static int rebuild(engine_t *E) {
                 if (np >= E->cap_spare) {
                     int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
                     pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
-                    if (!s) { free(cidx); return -1; }
+                    if (!s) { free(cidx); free(large); free(biglist); return -1; }
                     E->spare = s; E->cap_spare = nc2;
                 }
                 pair_t *p = E->spare + np++;
@@ -1507,6 +1544,8 @@ static int rebuild(engine_t *E) {
         }
     }
     free(cidx);
+    free(large);
+    free(biglist);
     /* carry the history over (merge of two sorted lists) */
     int a = 0;
     for (int k = 0; k < np; k++) {

@@ -211,7 +211,7 @@ class PolyhedraContactEngine : public GlobalEngine {
 			} else
 				++f;
 		}
-		nFilled = m;
+		nFilled = (int)mine.size();
 		counters[3] += std::chrono::duration<double>(clock::now() - t0).count();
 		counters[5] += 1;
 	}
@@ -225,7 +225,7 @@ class PolyhedraContactEngine : public GlobalEngine {
 		const int             a  = I->getId1(), b = I->getId2();
 		if (a < 0 || b < 0 || a >= n || b >= n || !B[a] || !B[b]) return;
 		InteractionContainer& IC = *scene->interactions;
-		if (IC.find(a, b).get() == I.get()) IC.erase(a, b, -1);
+		if (IC.find(a, b).get() == I.get()) IC.erase(a, b, I->linIx); // YADE asserts the linear index
 	}
 
 	void forgetInteractions()

@@ -372,6 +372,27 @@ class SceneContacts:
                        "wall_shear": ws, "wall_results": wr, "wall_touching": wt, "scalars": sc,
                        "friction": np.array(old.friction)})
 
+    def set_friction(self, angle, wall_angle=None):
+        """Set the friction angle (rad) of every polyhedron's and facet's
+        material (and of the walls', ``wall_angle``, default ``angle``), and
+        the kernel's mu = tan(angle) at once (YADE's setContactFriction does
+        the same to its interactions); shear histories above the new cap
+        are cut to it at the next step."""
+        wall_angle = angle if wall_angle is None else wall_angle
+        for b in self.O.bodies:
+            if b is None:
+                continue
+            kind = type(b.shape).__name__
+            if kind in ("Polyhedra", "Facet"):
+                b.material.frictionAngle = angle
+            elif kind == "Wall":
+                b.material.frictionAngle = wall_angle
+        mu, mu_wall = math.tan(angle), math.tan(min(angle, wall_angle))
+        if self.kernel is not None:
+            self.kernel.set_friction(mu, mu_wall)
+        law = list(self.e.law)
+        self.e.law = law[:2] + [mu, mu_wall]
+
     # ------------------------------------------------------------ what Python reads
     def contacts(self):
         """The kernel's touching contacts of the last step (without facet–facet

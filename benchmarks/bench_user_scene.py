@@ -1,0 +1,115 @@
+"""YADE's stock polyhedra contacts against PolyhedraContactEngine in a
+user's scene, side by side in one YADE process.
+
+    yade -j1 -n -x benchmarks/bench_user_scene.py [N_GRAINS] [STEPS] [OUT.json]
+
+The scene: N random polyhedra (``polyhedra_utils.polyhedra``, about 4 cm,
+``PolyhedraMat``) deposited under gravity into an open ``facetBox`` (on the
+engine, which is fast), then at rest. From that same state (positions,
+orientations, velocities restored before each), STEPS steps of:
+
+* ``stock``: ``InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Facet_Aabb()])``
+  and ``InteractionLoop`` with ``Ig2_Polyhedra_Polyhedra_PolyhedraGeom``,
+  ``Ig2_Facet_Polyhedra_PolyhedraGeom``, ``Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys``
+  and ``Law2_PolyhedraGeom_PolyhedraPhys_Volumetric`` (YADE's idiom);
+* ``engine fill 1``, ``engine fill 10``, ``engine fill 0``: the engine, with
+  ``O.interactions`` written every step, every 10 steps, never.
+
+Per variant: the whole step (wall time of ``O.run`` over the steps), the
+contact engines' own time (YADE's ``O.timingEnabled`` for the stock engines;
+the engine's counters), the touching contacts (mean of the first and last
+step) and the cost of a contact-step (contact time / steps / contacts).
+Prints one line ``RESULT {json}`` and writes it to OUT.json if given.
+"""
+import json
+import math
+import sys
+import time
+
+sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__import__("os").path.abspath(__file__)), ".."))
+from yade import geom, log, polyhedra_utils, utils  # noqa: E402
+from yade_scripts.yadeplugin.contacts import SCENES, PolyhedraContactEngine  # noqa: E402
+
+log.setLevel("Polyhedra_support.cpp", log.ERROR)
+N = int(sys.argv[1]) if len(sys.argv) > 1 else 200
+STEPS = int(sys.argv[2]) if len(sys.argv) > 2 else 200
+OUT = sys.argv[3] if len(sys.argv) > 3 else None
+d, young = 0.04, 2e8
+mat = PolyhedraMat(young=young, poisson=d * d, frictionAngle=math.radians(35), density=2650)
+O.materials.append(mat)
+per = max(2, int(math.ceil((N / 3.0) ** 0.5)))
+side = per * 1.25 * d
+O.bodies.append(geom.facetBox((0, 0, side), (side / 2, side / 2, side), wallMask=31, material=mat))
+for k in range(N):
+    i, j, layer = k % per, (k // per) % per, k // (per * per)
+    b = polyhedra_utils.polyhedra(mat, size=(d, d, d), seed=k + 1)
+    b.state.pos = ((i - (per - 1) / 2) * 1.25 * d, (j - (per - 1) / 2) * 1.25 * d, 0.75 * d + layer * 1.3 * d)
+    O.bodies.append(b)
+grains = [b.id for b in O.bodies if type(b.shape).__name__ == "Polyhedra"]
+m = min(O.bodies[i].state.mass for i in grains)
+O.dt = 0.1 * math.sqrt(m / (young / 2 * d * d))
+
+# deposit on the engine
+O.engines = [ForceResetter(), PolyhedraContactEngine(fillEvery=0, label="deposit"),
+             NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+t = time.time()
+O.run(int(0.5 / O.dt), True)
+deposit = {"steps": O.iter, "seconds": time.time() - t, "unbalanced": utils.unbalancedForce()}
+O.engines[1].clearInteractions()
+saved = [(b.id, tuple(b.state.pos), b.state.ori, tuple(b.state.vel), tuple(b.state.angVel)) for b in O.bodies]
+
+
+def restore():
+    for i, x, q, v, w in saved:
+        s = O.bodies[i].state
+        s.pos, s.ori, s.vel, s.angVel = x, q, v, w
+    O.interactions.clear()
+    O.forces.reset()
+
+
+def run(name, engines, contact_engines, count):
+    restore()
+    O.engines = engines
+    O.timingEnabled = True
+    O.step()                                 # first step: collider's initial sort, the engine's scan
+    for e in O.engines:
+        e.execTime = 0
+    c0 = count()
+    t0 = time.perf_counter()
+    O.run(STEPS, True)
+    wall = time.perf_counter() - t0
+    c1 = count()
+    contact = sum(e.execTime for e in O.engines if e.label in contact_engines) * 1e-9
+    O.timingEnabled = False
+    n = 0.5 * (c0 + c1)
+    return {"variant": name, "whole_step_us": 1e6 * wall / STEPS, "contact_us_per_step": 1e6 * contact / STEPS,
+            "contacts": n, "us_per_contact_step": 1e6 * contact / STEPS / n if n else float("nan")}
+
+
+res = {"n_grains": len(grains), "steps": STEPS, "dt": O.dt, "deposit": deposit, "variants": []}
+stock = [ForceResetter(),
+         InsertionSortCollider([Bo1_Polyhedra_Aabb(label="bo1p"), Bo1_Facet_Aabb(label="bo1f")], label="collider"),
+         InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom(), Ig2_Facet_Polyhedra_PolyhedraGeom()],
+                         [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
+                         [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()], label="loop"),
+         NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+res["variants"].append(run("stock", stock, {"collider", "loop"}, O.interactions.countReal))
+for fill in (1, 10, 0):
+    label = "fill%d" % fill
+    eng = [ForceResetter(), PolyhedraContactEngine(fillEvery=fill, label=label),
+           NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+    r = run("engine fill %d" % fill, eng, {label}, lambda: len(SCENES[label].contacts()["id1"]))
+    tm = SCENES[label].timing()
+    r["fill_us_per_fill"] = 1e6 * tm["fill"] / max(tm["fills"], 1)
+    r["fill_us_per_contact"] = r["fill_us_per_fill"] / r["contacts"] if r["contacts"] else float("nan")
+    res["variants"].append(r)
+base = res["variants"][0]
+for r in res["variants"][1:]:
+    r["contact_step_ratio"] = base["us_per_contact_step"] / r["us_per_contact_step"]
+    r["whole_step_ratio"] = base["whole_step_us"] / r["whole_step_us"]
+line = json.dumps(res)
+print("RESULT " + line, flush=True)
+if OUT:
+    with open(OUT, "w") as fh:
+        fh.write(line + "\n")
+__import__("os")._exit(0)
