@@ -26,7 +26,7 @@ import math
 import sys
 import time
 
-sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__import__("os").path.abspath(__file__)), ".."))
+sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__import__("os").path.abspath(sys.argv[0])), ".."))
 from yade import geom, log, polyhedra_utils, utils  # noqa: E402
 from yade_scripts.yadeplugin.contacts import SCENES, PolyhedraContactEngine  # noqa: E402
 

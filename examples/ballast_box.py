@@ -21,7 +21,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), ".."))   # the clone (yade runs the script with its own __file__)
 from yade import geom, polyhedra_utils, utils  # noqa: E402
 from yade_scripts.yadeplugin.contacts import PolyhedraContactEngine  # noqa: E402
 
@@ -37,7 +37,7 @@ O.materials.append([ballast, steel])
 
 # the box: 5 d wide, open at the top (wallMask 31: every side but z+), of the ballast's material
 side = 5 * d
-O.bodies.append(geom.facetBox((0, 0, side), (side / 2, side / 2, side), wallMask=31, material=ballast))
+boxIds = O.bodies.append(geom.facetBox((0, 0, side), (side / 2, side / 2, side), wallMask=31, material=ballast))
 
 # the grains, on a grid above the floor, each a random convex polyhedron
 perRow = 4
@@ -86,7 +86,7 @@ t0, z0 = O.time, None
 
 def load():
     """The sleeper's vertical load now: loadMin + (loadMax - loadMin) (1 - cos)/2."""
-    ph = (O.time - t0) / period
+    ph = max(0.0, (O.time - t0) / period)                 # before t0: loadMin (seating)
     F = loadMin + (loadMax - loadMin) * 0.5 * (1 - math.cos(2 * math.pi * ph))
     O.forces.addF(sid, (0, 0, -F))
 
@@ -94,8 +94,21 @@ def load():
 # seat the sleeper under loadMin, then cycle
 loader.dead = False
 t0 = O.time + 1e9                                          # hold loadMin while seating
-O.run(int(0.1 / O.dt), True)
+O.run(int(0.15 / O.dt), True)
+react = []                                                  # the box's upward reaction, step by step
+
+
+def reactions():
+    react.append(-sum(O.forces.f(i, True)[2] for i in boxIds))
+
+
+O.engines = O.engines[:3] + [PyRunner(command="reactions()", iterPeriod=1, label="reacting")] + O.engines[3:]
+O.run(int(0.05 / O.dt), True)
+O.engines = [e for e in O.engines if e.label != "reacting"]
 z0 = O.bodies[sid].state.pos[2]
+reaction = sum(react) / len(react)
+print(f"seated: box reaction {reaction:.4g} N, weight of ballast and sleeper and loadMin "
+      f"{weight() + O.bodies[sid].state.mass * 9.81 + loadMin:.4g} N")
 t0 = O.time
 rows = []
 for c in range(1, nCycles + 1):

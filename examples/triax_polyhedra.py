@@ -24,7 +24,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(sys.argv[0])), ".."))   # the clone (yade runs the script with its own __file__)
 from yade import plot, polyhedra_utils, utils  # noqa: E402
 from yade_scripts.yadeplugin.contacts import SCENES, PolyhedraContactEngine  # noqa: E402
 
@@ -123,14 +123,15 @@ O.dt = 0.2 * math.sqrt(m / (young / 2 * d * d))
 #######################################
 ###   APPLYING CONFINING PRESSURE   ###
 #######################################
-while O.iter < max_steps:
+reached = False
+while O.iter < max_steps and not reached:
     O.run(500, True)
     s = stresses()
     unb = utils.unbalancedForce()
     print("unbalanced force:", unb, " mean stress:", sum(s) / 3)
-    if unb < stabilityThreshold and all(abs(x - sigma0) / sigma0 < 0.01 for x in s):
-        break
-print("###      Isotropic state reached      ###  porosity", porosity())
+    reached = unb < stabilityThreshold and all(abs(x - sigma0) / sigma0 < 0.01 for x in s)
+print("###      Isotropic state %s      ###  porosity" % ("reached" if reached else "not reached (max_steps)"),
+      porosity())
 
 ###################################################
 ###   REACHING A SPECIFIED POROSITY PRECISELY   ###

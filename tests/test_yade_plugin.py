@@ -141,10 +141,14 @@ def test_a_plugin_that_reads_wrong_is_refused(prefix):
 
 
 @needs_yade
-def test_without_the_prefix_the_pyrunner_steps():
+def test_without_the_prefix_the_scene_loads_the_plugin_itself(prefix):
+    """YADE started without YADE_PREFIX (``yade triaxial.py`` typed by hand):
+    the scene loads this copy's ready build itself (yadeplugin.load), and its
+    first step passes the same start-up check. (A copy without a ready build
+    steps on the PyRunner and says why: tests/test_yade_scenes.py.)"""
     res = case("absent")
-    assert res["path"] == "pyrunner" and res["engine"] == "PyRunner" and res["calls"] == 12
-    assert "without YADE_PREFIX" in res["note"]
+    assert res["path"] == "plugin" and res["engine"] == "PolyhedraKernelEngine" and res["calls"] == 12
+    assert res["note"] == "its first step read and added exactly what YADE's Python sees"
 
 
 @needs_yade

@@ -12,7 +12,7 @@ refuse: the plugin reads every pose, then, before the start-up check, a
         the PyRunner path and keep it; the run is then the same, bit for
         bit, as a PyRunner run in which the body moved by that ulp before
         the kernel's first step.
-absent: YADE started without the plugin's prefix: the PyRunner path, and why.
+absent: YADE started without the plugin's prefix: the scene loads the plugin itself.
 error:  a body's position set to NaN: the plugin's step stops before adding
         forces and says why in the kernel's words.
 """
@@ -63,6 +63,8 @@ if mode == "refuse":
     out["touch_steps"] = kernel.touch_steps
 elif mode == "absent":
     built = small_box(O)
+    verdicts = []
+    check = lambda: verdicts.append(kernel.verify())  # noqa: E731
     kernel = step_path(O, built, True)
     O.run(STEPS, True)
     out.update(path=kernel.path, note=kernel.path_note, calls=kernel.calls,

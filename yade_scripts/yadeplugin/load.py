@@ -32,6 +32,9 @@ def load_library():
     if hasattr(wrapper, USER_CLASS):
         why = f"loaded by YADE from YADE_PREFIX={os.environ.get('YADE_PREFIX', '?')}"
         return _loaded.setdefault("why", why)
+    if hasattr(wrapper, "PolyhedraKernelEngine"):
+        raise PluginError(f"YADE loaded an older build of the plugin (YADE_PREFIX={os.environ.get('YADE_PREFIX')}), "
+                          "without PolyhedraContactEngine: python3 -m yade_scripts.yadeplugin build")
     st = status()
     if not st.get("ok"):
         raise PluginError(f"the YADE plugin is not ready ({st.get('why')}): python3 -m yade_scripts.yadeplugin build")
