@@ -18,7 +18,9 @@ orientations, velocities restored before each), STEPS steps of:
 Per variant: the whole step (wall time of ``O.run`` over the steps), the
 contact engines' own time (YADE's ``O.timingEnabled`` for the stock engines;
 the engine's counters), the touching contacts (mean of the first and last
-step) and the cost of a contact-step (contact time / steps / contacts).
+step; for the stock functors those with a positive penetrationVolume, as they
+keep an interaction real at zero volume while the bounds overlap) and the
+cost of a contact-step (contact time / steps / contacts).
 Prints one line ``RESULT {json}`` and writes it to OUT.json if given.
 """
 import json
@@ -93,7 +95,9 @@ stock = [ForceResetter(),
                          [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
                          [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()], label="loop"),
          NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
-res["variants"].append(run("stock", stock, {"collider", "loop"}, O.interactions.countReal))
+# YADE's stock functors keep an interaction real at zero volume while the bounds overlap: count the touching ones
+res["variants"].append(run("stock", stock, {"collider", "loop"},
+                           lambda: sum(1 for i in O.interactions if i.isReal and i.geom.penetrationVolume > 0)))
 for fill in (1, 10, 0):
     label = "fill%d" % fill
     eng = [ForceResetter(), PolyhedraContactEngine(fillEvery=fill, label=label),

@@ -20,14 +20,15 @@ A, KN = 0.02, 1e8          # cube side (m); k_n = E E / (E + E) with E = 2e8
 
 
 @pytest.fixture(scope="module")
-def res():
+def res(tmp_path_factory):
     from yade_scripts import yadeplugin
 
     if not yadeplugin.build()["ok"]:
         pytest.skip("the YADE plugin is not built here")
     env = {k: v for k, v in os.environ.items() if k != "YADE_PREFIX"}
     env["OMP_WAIT_POLICY"] = "PASSIVE"
-    out = subprocess.run([YADE, "-j1", "-n", "-x", os.path.join(ROOT, "tests", "yade_cases", "user_contacts.py"), ROOT],
+    out = subprocess.run([YADE, "-j1", "-n", "-x", os.path.join(ROOT, "tests", "yade_cases", "user_contacts.py"), ROOT,
+                          str(tmp_path_factory.mktemp("vtk"))],
                          cwd=ROOT, capture_output=True, text=True, timeout=600, env=env, stdin=subprocess.DEVNULL)
     lines = [x for x in out.stdout.splitlines() if x.startswith("RESULT ")]
     assert lines, out.stdout[-3000:] + out.stderr[-3000:]
@@ -122,6 +123,20 @@ def test_get_stress_equals_postproc_stress(res):
     theirs = np.array(r["getStress"])
     assert np.abs(ours).max() > 0
     np.testing.assert_allclose(-theirs, ours, rtol=0, atol=1e-12 * np.abs(ours).max())
+
+
+def test_vtk_exporter_writes_the_interactions(res):
+    """export.VTKExporter.exportInteractions on O.interactions filled by the
+    engine: one line cell per contact, with the normal force and volume the
+    kernel computed."""
+    r = res["stress"]
+    (path,) = r["vtk"]
+    text = open(path).read()
+    n = len(r["kernel"]["id1"])
+    assert f"LINES {n} {3 * n}" in text
+    fn = np.array(text.split("SCALARS forceN double 1\nLOOKUP_TABLE default\n")[1].split()[:n], float)
+    ours = np.linalg.norm(np.array(r["kernel"]["force_normal"]), axis=1)
+    np.testing.assert_allclose(np.sort(fn), np.sort(ours), rtol=1e-5)      # VTK writes %g
 
 
 def test_bodies_added_and_erased_mid_run(res):

@@ -2,14 +2,15 @@
 YADE_PREFIX: the script loads the plugin itself). Prints one line
 ``RESULT {json}`` with what tests/test_user_contacts.py checks.
 
-    yade -n -x user_contacts.py ROOT
+    yade -n -x user_contacts.py ROOT TMP          (TMP: a folder for the VTK file)
 
 facet:   a 2 cm cube 0.1 mm into a large facet (E = 2e8, so k_n = 1e8).
 tilted:  a rotated cube into a fixed Polyhedra slab tilted by 0.3 rad about
          x and 0.2 rad about y; its world vertices and the slab's plane.
 wall:    a rotated cube into a Wall of axis y, sense -1.
 stress:  12 random polyhedra dropped into a facetBox, 5000 steps (0.5 s);
-         getStress(V) and the kernel's contacts of the last step.
+         getStress(V) and the kernel's contacts of the last step; the
+         interactions exported by export.VTKExporter.exportInteractions.
 added:   two cubes sliding on a facet for 20 steps; at step 10 a third cube
          is added far away, then dropped on the facet; the sliding cubes'
          forces, with and without the addition.
@@ -19,8 +20,9 @@ import json
 import math
 import sys
 
-root = sys.argv[1]
+root, tmp = sys.argv[1], sys.argv[2]
 sys.path.insert(0, root)
+import os  # noqa: E402
 import numpy as np  # noqa: E402
 from yade import log, polyhedra_utils, utils, geom  # noqa: E402
 
@@ -120,9 +122,14 @@ engines("stress", gravity=(0, 0, -9.81), damping=0.5)
 O.run(5000, True)
 V = 0.1 * 0.1 * 0.1
 st = utils.getStress(V)
+from yade import export  # noqa: E402
+
+vtk = export.VTKExporter(os.path.join(tmp, "packing"))
+vtk.exportInteractions(what=dict(forceN="i.phys.normalForce.norm()", volume="i.geom.penetrationVolume"))
 out["stress"] = {"getStress": [[st[a, b] for b in range(3)] for a in range(3)], "volume": V,
                  "pos": {b.id: tuple(b.state.pos) for b in O.bodies}, "kernel": kernel_contacts("stress"),
-                 "count": O.interactions.countReal(), "unbalanced": utils.unbalancedForce()}
+                 "count": O.interactions.countReal(), "unbalanced": utils.unbalancedForce(),
+                 "vtk": sorted(os.path.join(tmp, f) for f in os.listdir(tmp) if f.endswith(".vtk"))}
 
 # ---------------------------------------------------------------- bodies added mid-run
 
@@ -177,6 +184,5 @@ except Exception as exc:  # noqa: BLE001
     refused["sphere"] = f"{type(exc).__name__}: {exc}"
 out["refused"] = refused
 print("RESULT " + json.dumps(out), flush=True)
-import os  # noqa: E402
 
 os._exit(0)
