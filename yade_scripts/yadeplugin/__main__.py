@@ -5,6 +5,7 @@ build   build and probe the plugin for the installed YADE unless done (exit 0
 status  one line: ready (and where), or why not; exit 0 ready, 1 not
 prefix  print the YADE_PREFIX of the ready plugin; exit 1 (reason on stderr) if none
 """
+import os
 import sys
 
 from . import build, status
@@ -31,6 +32,11 @@ def main(argv=None):
     if cmd == "build":
         st = build(quiet=False)
         print(f"yadeplugin: {'ready: ' + st['prefix'] if st['ok'] else 'not used, the scenes step on the PyRunner path: ' + st['why']}")
+        if st["ok"]:
+            root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+            print(f"yadeplugin: start YADE with it: YADE_PREFIX={st['prefix']} yade script.py\n"
+                  f"yadeplugin: or let a script load it (no YADE_PREFIX): PYTHONPATH={root} yade script.py, the script "
+                  "using yade_scripts.yadeplugin.contacts.PolyhedraContactEngine (examples/)")
         return 0
     if cmd in ("status", "prefix"):
         st = status()
