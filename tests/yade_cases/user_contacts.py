@@ -4,7 +4,8 @@ YADE_PREFIX: the script loads the plugin itself). Prints one line
 
     yade -n -x user_contacts.py ROOT TMP          (TMP: a folder for the VTK file)
 
-facet:   a 2 cm cube 0.1 mm into a large facet (E = 2e8, so k_n = 1e8).
+facet:   a 2 cm cube 0.1 mm into a large facet (E = 2e8, so k_n = 1e8);
+         O.interactions cleared after the first step, the second step's.
 tilted:  a rotated cube into a fixed Polyhedra slab tilted by 0.3 rad about
          x and 0.2 rad about y; its world vertices and the slab's plane.
 wall:    a rotated cube into a Wall of axis y, sense -1.
@@ -76,8 +77,11 @@ def kernel_contacts(label):
 # ---------------------------------------------------------------- facet
 m = new_scene()
 c0 = cube(m, (0.001, 0.002, A / 2 - 1e-4))
+O.bodies[c0].state.blockedDOFs = "xyzXYZ"       # held: both steps see the same overlap
 f0 = O.bodies.append(utils.facet([(-1, -1, 0), (1, -1, 0), (0, 1, 0)], material=m, fixed=True))
 engines("facet")
+O.step()
+O.interactions.clear()                     # a user's clear(): the next fill writes the contact again
 O.step()
 out["facet"] = {"force": tuple(O.forces.f(c0)), "torque": tuple(O.forces.t(c0)), "facet_force": tuple(O.forces.f(f0)),
                 "inter": [inter(i) for i in O.interactions], "count": O.interactions.countReal(),

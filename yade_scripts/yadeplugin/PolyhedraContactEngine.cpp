@@ -174,6 +174,14 @@ class PolyhedraContactEngine : public GlobalEngine {
 			const int id2 = ids[ci2[k]];
 			const int kind = ci1[k] >= 0 ? 0 : 1; // 0 pair, 1 wall
 			auto       f   = mine.find(key(id1, id2));
+			if (f != mine.end()) { // still in O.interactions? (O.interactions.clear() or an erase in Python drop it)
+				const shared_ptr<Interaction>& I  = f->second.I;
+				const int                      ix = I->linIx;
+				if (ix < 0 || ix >= (int)IC.size() || IC[ix].get() != I.get()) {
+					mine.erase(f);
+					f = mine.end();
+				}
+			}
 			if (f == mine.end()) {
 				shared_ptr<Interaction> I = IC.find(id1, id2);
 				if (!I) {
