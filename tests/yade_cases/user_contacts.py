@@ -6,8 +6,8 @@ YADE_PREFIX: the script loads the plugin itself). Prints one line
 
 facet:   a 2 cm cube 0.1 mm into a large facet (E = 2e8, so k_n = 1e8);
          O.interactions cleared after the first step, the second step's.
-tilted:  a rotated cube into a fixed Polyhedra slab tilted by 0.3 rad about
-         x and 0.2 rad about y; its world vertices and the slab's plane.
+tilted:  a rotated cube into a plane tilted by 0.3 rad about x and 0.2 rad
+         about y (contacts.plane_body); its world vertices, the slab's, the plane.
 wall:    a rotated cube into a Wall of axis y, sense -1.
 stress:  12 random polyhedra dropped into a facetBox, 5000 steps (0.5 s);
          getStress(V) and the kernel's contacts of the last step; the
@@ -27,7 +27,7 @@ import os  # noqa: E402
 import numpy as np  # noqa: E402
 from yade import log, polyhedra_utils, utils, geom  # noqa: E402
 
-from yade_scripts.yadeplugin.contacts import PolyhedraContactEngine, SCENES  # noqa: E402
+from yade_scripts.yadeplugin.contacts import PolyhedraContactEngine, SCENES, plane_body  # noqa: E402
 
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 log.setLevel("Shop", log.ERROR)
@@ -90,11 +90,9 @@ out["facet"] = {"force": tuple(O.forces.f(c0)), "torque": tuple(O.forces.t(c0)),
 # ---------------------------------------------------------------- tilted slab
 m = new_scene()
 q = Quaternion((1, 0, 0), 0.3) * Quaternion((0, 1, 0), 0.2)
-L, T = 0.5, 0.05
-slab = [(x, y, z) for x in (-L, L) for y in (-L, L) for z in (-T, T)]
-s0 = cube(m, (0, 0, 0), q, slab)
-O.bodies[s0].state.blockedDOFs = "xyzXYZ"
+T = 0.05
 nrm = q * Vector3(0, 0, 1)
+s0 = O.bodies.append(plane_body(tuple(nrm * T), tuple(nrm), 0.5, m, thickness=0.1))
 c1 = cube(m, tuple(nrm * (T + A / 2 - 3e-4)), Quaternion(Vector3(1, 2, 3).normalized(), 0.7))
 engines("tilted")
 before = world(c1), world(s0)             # the poses the engine reads (Newton moves the cube in the step)

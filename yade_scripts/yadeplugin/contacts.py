@@ -19,7 +19,7 @@ scene:
   face, on the side away from the polyhedra, posed from the facet's state;
 * ``Wall`` bodies (any axis; ``sense`` 1 or -1, or 0 with every polyhedron
   on one side): a half-space beyond the plane. A plane at an angle is a
-  large fixed ``Polyhedra`` slab, or two facets.
+  large fixed ``Polyhedra`` slab (:func:`plane_body`), or two facets.
 
 Bodies added or erased during the run are picked up at the next step (the
 engine notices, and this module's scan rebuilds the kernel's engine with the
@@ -113,6 +113,41 @@ def facet_prism(vertices, normal, thickness, side):
         nn = np.cross(pts[b] - pts[a], pts[d] - pts[a])
         out.append((a, b, d) if np.dot(nn, pts[a] - c) > 0 else (a, d, b))
     return pts, np.array(out, np.int64)
+
+
+def plane_corners(point, normal, extent, thickness):
+    """(8, 3) corners (m) of the slab that stands for a plane at an angle:
+    its top face, a square of half side ``extent`` centred on ``point``,
+    lies in the plane with outward normal ``normal``; it is ``thickness``
+    deep behind the plane.
+
+    Examples
+    --------
+    >>> c = plane_corners((0, 0, 1), (0, 0, 2), 3.0, 0.5)
+    >>> sorted(set(np.round(c[:, 2], 12).tolist())), float(np.abs(c[:, 0]).max())
+    ([0.5, 1.0], 3.0)
+    """
+    n = np.asarray(normal, float)
+    n = n / np.linalg.norm(n)
+    u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
+    u /= np.linalg.norm(u)
+    w = np.cross(n, u)
+    p = np.asarray(point, float)
+    return np.array([p + a * extent * u + b * extent * w - c * thickness * n
+                     for a in (-1, 1) for b in (-1, 1) for c in (0, 1)])
+
+
+def plane_body(point, normal, extent, material, thickness=None):
+    """A fixed ``Polyhedra`` body (append it to ``O.bodies``) for a plane at
+    an angle, which YADE's ``Wall`` (axis-aligned) cannot be: the slab of
+    :func:`plane_corners` (``thickness`` default ``extent / 10``). Its overlap
+    with a grain is exactly the grain's part beyond the plane while the grain
+    stays within ``extent`` of ``point`` and less than ``thickness`` deep."""
+    from yade import polyhedra_utils
+
+    thickness = extent / 10 if thickness is None else thickness
+    corners = plane_corners(point, normal, extent, thickness)
+    return polyhedra_utils.polyhedra(material, v=[tuple(c) for c in corners], fixed=True)
 
 
 class _Kernel(ContactEngine):
@@ -461,6 +496,12 @@ def PolyhedraContactEngine(fillEvery=1, label="polyhedraContacts", facetThicknes
         step). Raises :class:`load.PluginError` (one line) when the plugin
         is not built for this YADE, :class:`SceneError` for a periodic cell.
     """
+    if int(fillEvery) != fillEvery or fillEvery < 0:
+        raise ValueError(f"PolyhedraContactEngine: fillEvery must be a whole number of steps >= 0, got {fillEvery!r}")
+    if facetThickness is not None and not facetThickness > 0:
+        raise ValueError(f"PolyhedraContactEngine: facetThickness must be > 0 (m), got {facetThickness!r}")
+    if skin is not None and not skin > 0:
+        raise ValueError(f"PolyhedraContactEngine: skin must be > 0 (m), got {skin!r}")
     if O is None:
         from yade import O
     if O.periodic:
