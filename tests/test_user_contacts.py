@@ -83,6 +83,19 @@ def test_cube_on_a_facet(res):
     assert k["volume"][0] == i["volume"] and k["normal"][0] == list(i["normal"])
 
 
+def test_a_moving_facet(res):
+    """A facet rising at 1 m/s (1 um a step) under a held cube 0.1 mm above
+    it: no contact for the first 100 steps, then the overlap a^2 (z_f - 0.1 mm)
+    with z_f the facet's height the step read (the position before that
+    step's move)."""
+    r = res["moving"]
+    v = np.array(r["volumes"])
+    z = 1.0 * r["dt"] * np.arange(len(v))            # the facet's height read at each step
+    expected = A * A * np.maximum(z - 1e-4, 0)
+    np.testing.assert_allclose(v, expected, rtol=1e-9, atol=1e-12 * A ** 3)
+    assert v[150] > 0 and v[:100].max() == 0
+
+
 def test_cube_on_a_tilted_plane_against_halfspace_intersection(res):
     """A rotated cube into a plane tilted about two axes (a fixed slab,
     contacts.plane_body): the overlap volume equals scipy's

@@ -6,6 +6,7 @@ YADE_PREFIX: the script loads the plugin itself). Prints one line
 
 facet:   a 2 cm cube 0.1 mm into a large facet (E = 2e8, so k_n = 1e8);
          O.interactions cleared after the first step, the second step's.
+moving:  a facet rising at 1 m/s under a held cube 0.1 mm above it.
 tilted:  a rotated cube into a plane tilted by 0.3 rad about x and 0.2 rad
          about y (contacts.plane_body); its world vertices, the slab's, the plane.
 wall:    a rotated cube into a Wall of axis y, sense -1.
@@ -86,6 +87,19 @@ O.step()
 out["facet"] = {"force": tuple(O.forces.f(c0)), "torque": tuple(O.forces.t(c0)), "facet_force": tuple(O.forces.f(f0)),
                 "inter": [inter(i) for i in O.interactions], "count": O.interactions.countReal(),
                 "kernel": kernel_contacts("facet"), "error": O.engines[1].error}
+
+# ---------------------------------------------------------------- a moving facet
+m = new_scene()
+c3 = cube(m, (0, 0, A / 2 + 1e-4))               # 0.1 mm above the facet, held
+O.bodies[c3].state.blockedDOFs = "xyzXYZ"
+f3 = O.bodies.append(utils.facet([(-1, -1, 0), (1, -1, 0), (0, 1, 0)], material=m, fixed=True))
+O.bodies[f3].state.vel = (0, 0, 1.0)             # rising at 1 m/s: 1 um a step (dt = 1e-6)
+engines("moving")
+vols = []
+for k in range(300):
+    O.step()
+    vols.append(sum(i.geom.penetrationVolume for i in O.interactions))
+out["moving"] = {"volumes": vols, "dt": O.dt, "facet_z": O.bodies[f3].state.pos[2]}
 
 # ---------------------------------------------------------------- tilted slab
 m = new_scene()
