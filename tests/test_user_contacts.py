@@ -173,7 +173,12 @@ def test_bodies_added_and_erased_mid_run(res):
 
 
 def test_refused_scenes_say_why_in_one_line(res):
+    """A periodic cell, a Sphere, a YADE whose PolyhedraGeom is laid out
+    otherwise (no field where the plugin would write it), and a plugin built
+    from other sources: each refused with a one-line reason."""
     r = res["refused"]
     assert r["periodic"] is not None and "periodic cells are not supported" in r["periodic"]
     assert r["sphere"] is not None and "is a Sphere" in r["sphere"]
-    assert "\n" not in r["periodic"] and "\n" not in r["sphere"]
+    assert r["layout"] is not None and "PolyhedraGeom.normal is not where this plugin can write it" in r["layout"]
+    assert r["sources"] is not None and "built from other sources" in r["sources"]
+    assert all("\n" not in r[k] for k in ("periodic", "sphere", "layout", "sources"))

@@ -16,7 +16,8 @@ stress:  12 random polyhedra dropped into a facetBox, 5000 steps (0.5 s);
 added:   two cubes sliding on a facet for 20 steps; at step 10 a third cube
          is added far away, then dropped on the facet; the sliding cubes'
          forces, with and without the addition.
-refused: a periodic cell, and a Sphere in the scene (the one-line messages).
+refused: a periodic cell, a Sphere in the scene, a class layout other than
+         the plugin expects, a plugin of other sources (the one-line messages).
 """
 import json
 import math
@@ -198,6 +199,29 @@ try:
     refused["sphere"] = None
 except Exception as exc:  # noqa: BLE001
     refused["sphere"] = f"{type(exc).__name__}: {exc}"
+# another YADE's layout: a field not found where the plugin would write it
+from yade_scripts.yadeplugin import contacts as C, load as L  # noqa: E402
+
+
+class Elsewhere:
+    @staticmethod
+    def fieldOffsets(obj, size, value):
+        return []
+
+
+try:
+    C.field_offsets(Elsewhere, PolyhedraGeom(), 208, C.GEOM_FIELDS)
+    refused["layout"] = None
+except Exception as exc:  # noqa: BLE001
+    refused["layout"] = f"{type(exc).__name__}: {exc}"
+# a plugin built from other sources than this copy's
+ours, L.source_hash = L.source_hash, lambda: "0123456789ab"
+try:
+    L.engine_class()
+    refused["sources"] = None
+except Exception as exc:  # noqa: BLE001
+    refused["sources"] = f"{type(exc).__name__}: {exc}"
+L.source_hash = ours
 out["refused"] = refused
 print("RESULT " + json.dumps(out), flush=True)
 
