@@ -106,8 +106,7 @@ test-slurm: system venv kernel
 	$(SUDO) .ci/slurm-node install
 	$(PY) -m pytest -q -m slurm -s
 
-# The fast subset (no YADE, nothing slow): about 560 tests in 1 to 2 minutes on 2
-# quiet cores, for the edit-test loop.
+# The fast subset (no YADE, nothing slow), for the edit-test loop.
 test-fast: venv kernel
 	$(PY) -m pytest -q $(XDIST) -m "not yade and not slow"
 
@@ -164,7 +163,7 @@ results: venv
 
 # Speed against error: a sweep over kappa and I (yade_scripts.batch) around the
 # default preset, 3 seeds per point, S1 200 grains and S2 1000 spheres
-# (FRONT_PLAN=default, about 2.2 h on 2 cores; FRONT_PLAN=kernel is the sweep
+# (FRONT_PLAN=default, 1.9 core-hours by the cost model; FRONT_PLAN=kernel is the sweep
 # around the soft preset, FRONT_PLAN=quick the older 24-grain, one-seed one),
 # then the analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front

@@ -82,23 +82,6 @@ def test_make_front_runs_the_front_commands_default_plan():
     assert f"{runs} runs" in front
 
 
-def test_the_test_fast_duration_is_quoted_alike():
-    quoted = re.search(r"test-fast.*?in (\d+ to \d+ minutes)", text("README.md"), re.S).group(1)
-    assert quoted in makefile_recipe_comment("test-fast")
-
-
-def makefile_recipe_comment(target):
-    """The comment lines just above a Makefile target."""
-    lines = text("Makefile").split("\n")
-    i = next(k for k, line in enumerate(lines) if line.startswith(f"{target}:"))
-    out = []
-    for line in reversed(lines[:i]):
-        if not line.startswith("#"):
-            break
-        out.append(line)
-    return " ".join(reversed(out))
-
-
 PRESET_FACTS = {
     # preset: {sample: {parameter: value the docs state}}
     "default": {"polyhedra": {"n_particles": 1000, "kappa": 3000.0, "inertial_number": 5e-3, "safety": 0.45,
