@@ -31,13 +31,13 @@ Seven criteria, one interface (:class:`Classifier`):
   needed. Our band count, kept for the study's earlier numbers: it is not
   LMGC90's count (docs/lmgc90-contacts.md).
 * ``"lmgc90"`` (``--types lmgc90``): LMGC90's own count, its CpCundall
-  detection with today's default point stage (:func:`postproc.commonplane.lmgc90_points`),
+  detection with today's default point stage (:func:`postproc.lmgc90count.lmgc90_points`),
   with the alert distance as ``--tolerance`` in units of the smallest grain
   radius (default 0.1, what LMGC90's granular examples set);
   ``"lmgc90-planplan"``: the same detection with LMGC90's older point stage
   (planplan: 3 or 4 points, or none); ``"lmgc90-2009"``: planplan with the
   length-tolerant intersection it used before Clipper2
-  (:func:`postproc.commonplane.tolerant_intersection`: a point or a segment
+  (:func:`postproc.polygons.tolerant_intersection`: a point or a segment
   gives 1 or 2 points too), presumably the paper's route.
 
 :meth:`Classifier.classify` returns the class of every contact of a
@@ -53,11 +53,13 @@ import numpy as np
 from . import commonplane as cpl
 from . import contactpoints as cpm
 from . import footprint as fpm
+from . import lmgc90count as lmgc
+from . import lmgc90shape as lshape
 from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("points", "footprint", "angular", "commonplane") + cpl.LMGC90_ROUTES
+METHODS = ("points", "footprint", "angular", "commonplane") + lmgc.LMGC90_ROUTES
 DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
@@ -176,7 +178,7 @@ class Classifier:
     "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`),
     or the alert distance of the LMGC90 methods ("lmgc90", "lmgc90-planplan", "lmgc90-2009") in
     units of the smallest grain radius (of the shapes; default
-    :data:`postproc.commonplane.DEFAULT_ALERT`).
+    :data:`postproc.lmgc90count.DEFAULT_ALERT`).
     reference : how the "commonplane" method measures ref, the length its
     band is tau times: "vertex" (the default: the distance from the centre
     to the extreme vertex, LMGC90's older routine) or "normal" (that
@@ -227,7 +229,7 @@ class Classifier:
         self.recompute = recompute
         self.reference = cpl.check_reference(reference)
         default = {"commonplane": cpl.DEFAULT_NEIGHBOR,
-                   **{m: cpl.DEFAULT_ALERT for m in cpl.LMGC90_ROUTES}}.get(method, cpm.DEFAULT_ALPHA)
+                   **{m: lmgc.DEFAULT_ALERT for m in lmgc.LMGC90_ROUTES}}.get(method, cpm.DEFAULT_ALPHA)
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
@@ -242,12 +244,12 @@ class Classifier:
         """The criterion's parameter: alpha, t (units of d), theta (deg), tau,
         or the alert distance (units of the smallest grain radius)."""
         return {"points": self.tolerance, "footprint": self.threshold, "commonplane": self.tolerance,
-                **{m: self.tolerance for m in cpl.LMGC90_ROUTES}}.get(self.method, self.theta_deg)
+                **{m: self.tolerance for m in lmgc.LMGC90_ROUTES}}.get(self.method, self.theta_deg)
 
     @property
     def lmgc90_tables(self):
         if self._lmgc is None:
-            self._lmgc = cpl.lmgc90_tables(*self._shapes)
+            self._lmgc = lshape.lmgc90_tables(*self._shapes)
         return self._lmgc
 
     @property
@@ -309,7 +311,7 @@ class Classifier:
             return self._points_classes(snap, variants)
         if self.method == "commonplane":
             return self._commonplane_classes(snap, variants)
-        if self.method in cpl.LMGC90_ROUTES:
+        if self.method in lmgc.LMGC90_ROUTES:
             return self._lmgc90_classes(snap, variants)
         return self._footprint(snap, variants)
 
@@ -326,7 +328,7 @@ class Classifier:
         args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
 
         # one detection for the alert distance and the band test's half and double of it
-        count = lambda alerts: cpl.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
+        count = lambda alerts: lmgc.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
                                                         min_radius=r_min)
         return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
@@ -344,7 +346,7 @@ class Classifier:
         """The classes from a count of contact points: ``count(values)``
         returns, for each value of the parameter in ``values``, the dict of
         :func:`postproc.commonplane.contact_points` or
-        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs
+        :func:`postproc.lmgc90count.lmgc90_points` for the polyhedra pairs
         (one call, so that a count can share its work between the values);
         the variants at half and twice the parameter. Pairs without a point
         (LMGC90 makes no contact there) count as simple; their share is
@@ -529,8 +531,8 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
         fpm.check_threshold(threshold)
     if tolerance is not None and method == "commonplane":
         cpl.check_neighbor(tolerance, "--tolerance (commonplane: tau, the band in units of the radius)")
-    elif tolerance is not None and method in cpl.LMGC90_ROUTES:
-        cpl.check_alert(tolerance, f"--tolerance ({method}: the alert distance in units of the smallest grain radius)")
+    elif tolerance is not None and method in lmgc.LMGC90_ROUTES:
+        lmgc.check_alert(tolerance, f"--tolerance ({method}: the alert distance in units of the smallest grain radius)")
     elif tolerance is not None:
         cpm.check_alpha(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):

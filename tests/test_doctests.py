@@ -13,7 +13,8 @@ import pytest
 #: the analysis library's modules whose public API is documented in numpydoc
 NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
                                             "strain", "statistics", "analysis", "axes", "periodic", "contactset",
-                                            "contacttypes", "contactpoints", "commonplane", "footprint",
+                                            "contacttypes", "contactpoints", "commonplane", "polygons",
+                                            "lmgc90shape", "lmgc90count", "footprint",
                                             "classify")) + tuple(f"yade_scripts.{m}" for m in (
     "runlock", "runstate", "checkpoint", "attempt", "pool", "task", "archive", "slurm"))
 #: the core modules whose every public function shows a runnable example

@@ -14,7 +14,7 @@ LAYERS = [
     ("base", {"errors", "schema", "axes", "statistics", "periodic", "provenance", "staging"}),
     ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
-                 "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
+                 "contactpoints", "polygons", "commonplane", "lmgc90shape", "lmgc90count", "facetilt", "footprint", "classify", "pertype", "slab"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
