@@ -10,12 +10,15 @@ import argparse
 import os
 import sys
 
+from .classify import CRITERIA, DEFAULT_METHOD
 from .errors import InputError
 from .many import analyze_many
 from .pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 from .schema import DumpReader
 from .synthetic import write_synthetic_dump
 from .vtk import export_vtk
+from .study.claim6 import DEFAULT_CRITERIA as CLAIM6_CRITERIA
+from .study.leaning import DEFAULT_COUNTS as LEANING_COUNTS
 from .study.report import build_report
 
 
@@ -43,18 +46,8 @@ def main(argv=None):
     an.add_argument("--atoms", help="LAMMPS dump custom (id x y z) with the positions, "
                                     "for --format lammps-local")
     an.add_argument("--bins", type=int, default=18, help="theta bins on [0, 90 deg] (default 18)")
-    an.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
-                                        "lmgc90-planplan", "lmgc90-2009"), default="points",
-                    help="contact-type criterion (polyhedra): a count of contact points from the "
-                         "overlap (default), the overlap's footprint, the angular one, our common-plane "
-                         "band count, or LMGC90's own count (its CpCundall detection with today's point "
-                         "stage, lmgc90, or the older planplan stage, lmgc90-planplan, or planplan with "
-                         "the length-tolerant intersection it used before Clipper2, lmgc90-2009)")
-    an.add_argument("--tolerance", type=float, default=None,
-                    help="points criterion: alpha, the distance tolerance in units of the overlap's "
-                         "mean thickness V/area (default 0.1); lmgc90, lmgc90-planplan, lmgc90-2009: the alert "
-                         "distance in units of the smallest grain radius (default 0.1); commonplane: tau, the band in "
-                         "units of the centre-to-extreme-vertex distance (default 0.1)")
+    an.add_argument("--types", choices=tuple(CRITERIA), default=DEFAULT_METHOD, help=_types_help())
+    an.add_argument("--tolerance", type=float, default=None, help=_tolerance_help())
     an.add_argument("--threshold", type=float, default=None,
                     help="footprint threshold in units of the pair size d (default 0.1)")
     an.add_argument("--theta", type=float, default=None,
@@ -99,8 +92,8 @@ def main(argv=None):
     lb = sub.add_parser("leaning-blocks", help="how the scatter of claim 6's leanings scales with the number of "
                                                "grains, from blocks of each packing (several studies)")
     lb.add_argument("study", nargs="+", help="study folders of 'make study', any numbers of grains")
-    lb.add_argument("--types", nargs="+", default=["points", "lmgc90"],
-                    help="the counts whose analyses are used (default points lmgc90)")
+    lb.add_argument("--types", nargs="+", default=list(LEANING_COUNTS),
+                    help=f"the counts whose analyses are used (default {' '.join(LEANING_COUNTS)})")
     lb.add_argument("--grids", nargs="+", type=int, default=[1, 2, 3, 4],
                     help="blocks per axis, 1 (the whole packing) included (default 1 2 3 4)")
     lb.add_argument("--min-grains", type=float, default=25.0,
@@ -125,10 +118,10 @@ def main(argv=None):
                                                 "(and, with --tolerance, the leanings' stability)")
     c6.add_argument("study", help="study folder written by 'make study' (holds manifest.json); the analyses and "
                                   "claim6.md go to STUDY/claim6")
-    c6.add_argument("--types", nargs="+", default=["points", "commonplane"],
-                    help="the criteria, as for analyze --types (default points commonplane)")
+    c6.add_argument("--types", nargs="+", default=list(CLAIM6_CRITERIA),
+                    help=f"the criteria, as for analyze --types (default {' '.join(CLAIM6_CRITERIA)})")
     c6.add_argument("--tolerance", nargs="+", type=float, default=[None],
-                    help="the criterion's tolerance (points: alpha; commonplane: tau); default its own")
+                    help="the criterion's tolerance, as for analyze --tolerance; default its own")
     lm = sub.add_parser("lmgc90-agreement", help="our counts of contact points against LMGC90's compiled code, "
                                                  "on the committed packing fixtures")
     lm.add_argument("--out", default="runs/lmgc90",
@@ -175,11 +168,9 @@ def main(argv=None):
     vt = sub.add_parser("export-vtk", help="VTK files (particles, contacts) per snapshot for ParaView")
     vt.add_argument("path", help="RUN.h5 dump")
     vt.add_argument("outdir", help="output folder")
-    vt.add_argument("--types", choices=("points", "footprint", "angular", "commonplane", "lmgc90",
-                                        "lmgc90-planplan", "lmgc90-2009"), default="points",
-                    help="contact-type criterion (default points)")
-    vt.add_argument("--tolerance", type=float, default=None, help="points tolerance alpha (units of V/area), commonplane tau, or the lmgc90 "
-                         "alert distance (units of the smallest grain radius)")
+    vt.add_argument("--types", choices=tuple(CRITERIA), default=DEFAULT_METHOD,
+                    help=f"contact-type criterion, as for analyze (default {DEFAULT_METHOD})")
+    vt.add_argument("--tolerance", type=float, default=None, help=_tolerance_help())
     vt.add_argument("--threshold", type=float, default=None, help="footprint threshold, units of d")
     vt.add_argument("--theta", type=float, default=None, help="angular tolerance, degrees")
     vt.add_argument("--snapshots", type=int, nargs="+", help="snapshot indices (default all; -1 = last)")
@@ -405,6 +396,23 @@ def main(argv=None):
           + (f"; {len(problems)} bad snapshot(s), see {args.out}/errors.txt" if problems else ""),
           file=sys.stderr)
     return 1 if problems else 0
+
+
+def _types_help():
+    """analyze --types' help, from the registry of criteria."""
+    return "contact-type criterion (polyhedra): " + "; ".join(
+        f"{c.name}, {c.description}" for c in CRITERIA.values())
+
+
+def _tolerance_help():
+    """--tolerance's help: what it is for each criterion that takes it, from
+    the registry (criteria with the same parameter named together)."""
+    by = {}
+    for c in CRITERIA.values():
+        if c.option == "--tolerance":
+            by.setdefault((c.parameter, c.default), []).append(c.name)
+    return "; ".join(f"{', '.join(names)}: {parameter} (default {default:g})"
+                     for (parameter, default), names in by.items())
 
 
 def _analyze_many(args, options):

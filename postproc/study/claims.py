@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..classify import CRITERIA
 from ..statistics import (Estimate, difference, leaning_words, plateau_estimate, seed_scatter, seeds_needed,
                           seeds_to_decide, steady_indices)
 
@@ -271,17 +272,10 @@ def _criterion_text(df, tag=""):
     """How the contacts of a summary were typed, with the parameter used."""
     method = df["ct_method"].iloc[0] if "ct_method" in df else None
     factor = BAND.get(tag, 1.0)
-    if method == "footprint":
-        return f"footprint criterion, threshold {factor * df['ct_threshold'].iloc[0]:g} d"
-    if method == "points":
-        return f"contact-point count, tolerance {factor * df['ct_threshold'].iloc[0]:g} V/area"
-    if method == "commonplane":
-        return f"the earlier band count on a common plane, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
-    if method in ("lmgc90", "lmgc90-planplan", "lmgc90-2009"):
-        stage = {"lmgc90": "today's point stage", "lmgc90-planplan": "its older planplan point stage",
-                 "lmgc90-2009": "planplan with its older length-tolerant intersection"}[method]
-        return (f"LMGC90's own count ({stage}), alert distance {factor * df['ct_threshold'].iloc[0]:g} x the "
-                f"smallest grain radius")
+    c = CRITERIA.get(method)
+    if c is not None:
+        value = df["ct_theta_deg" if c.option == "--theta" else "ct_threshold"].iloc[0]
+        return c.reading.format(factor * value)
     if "ct_theta_deg" in df:
         return f"angular criterion, tolerance {factor * df['ct_theta_deg'].iloc[0]:g} deg"
     return None

@@ -29,6 +29,7 @@ import shutil
 
 import pandas as pd
 
+from ..classify import CRITERIA
 from ..errors import InputError, read_json_object
 from .manifest import read_manifest
 
@@ -54,8 +55,6 @@ ROWS = (
      ("(2/5)(a+a_l+a_n+a_t)", "q/p plateau")),
 )
 CLAIM6 = ("face–face contacts strong and axial; vertex–face and edge–edge weak and lateral")
-COUNT_NAMES = {"points": "our contact-point count", "commonplane": "LMGC90's common-plane count",
-               "footprint": "the footprint count", "angular": "the angular criterion"}
 
 
 def _clean(value):
@@ -285,7 +284,7 @@ def claims_table(results):
                 w = [_word(band[f].get(f"{k}_shift")) for f in (0.5, 2) if f in band]
                 words.append(f"{k} {'/'.join(w)}" if w else "")
             test = ("; under ½ and 2 × its parameter: " + ", ".join(w for w in words if w)) if any(words) else ""
-            name = COUNT_NAMES.get(r["count"], r["count"])
+            name = CRITERIA[r["count"]].label if r["count"] in CRITERIA else r["count"]
             lines.append(f"| 6 | {CLAIM6} ({name}) | {pub6} | leanings (negative: lateral) VF {r['VF']} "
                          f"{leaning_word(r['VF'])}, EE {r['EE']} {leaning_word(r['EE'])}{test} | {r['verdict']} |")
     else:
