@@ -394,7 +394,7 @@ def test_agreement_command_needs_its_fixtures(tmp_path, capsys):
     test_packing_pairs above.)"""
     from postproc.cli import main
 
-    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "lmgc90-agreement", "--fixtures", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "no packing-*.npz fixture" in capsys.readouterr().err
-    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path / "none"), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "lmgc90-agreement", "--fixtures", str(tmp_path / "none"), "--out", str(tmp_path / "o")]) == 2
     assert capsys.readouterr().err.count("\n") == 1 and not (tmp_path / "o").exists()

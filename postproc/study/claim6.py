@@ -1,7 +1,7 @@
 """Claim 6 (face-face contacts strong and axial, vertex-face and edge-edge
 weak and lateral) on one study, decided with each contact-type criterion.
 
-    postproc claim6-criteria STUDY [--types points commonplane] [--tolerance T ...]
+    postproc investigate claim6-criteria STUDY [--types points commonplane] [--tolerance T ...]
 
 (:func:`write_claim6`.)
 

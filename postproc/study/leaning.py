@@ -1,7 +1,7 @@
 """Does the scatter of claim 6's leanings fall as N^(-1/2)? Block averaging
 inside the packings of one or more studies.
 
-    postproc leaning-blocks STUDY [STUDY ...] [--types points lmgc90] \
+    postproc investigate leaning-blocks STUDY [STUDY ...] [--types points lmgc90] \
         [--grids 1 2 3 4] [--min-grains 25] [--out runs/leaning-blocks]
 
 (:func:`write_blocks`; ``make size-front`` runs it on its three studies.)

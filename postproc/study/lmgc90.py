@@ -1,6 +1,6 @@
 """Our counts against LMGC90's compiled code, on the committed fixtures.
 
-    postproc lmgc90-agreement [--out runs/lmgc90] [--fixtures tests/data/lmgc90]
+    postproc investigate lmgc90-agreement [--out runs/lmgc90] [--fixtures tests/data/lmgc90]
 
 (:func:`write_agreement`.) For every packing fixture of tests/data/lmgc90
 (``packing-*.npz``: a snapshot of a 1000-grain
