@@ -22,6 +22,7 @@ from . import footprint as fpm, plots
 from .analysis import add_strains, analyze_snapshot, group_labels_of
 from .axes import axis_vector
 from .classify import CRITERIA, DEFAULT_METHOD, check_options, classifier_for
+from .columns import LEAD
 from .errors import InputError
 from .lammpsdump import read_text_dump, sniff
 from .networks import force_pdf
@@ -236,9 +237,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     ref = reference_index(stages)
     add_strains(rows, np.array(lengths), lengths[ref], e)
     df = pd.DataFrame(rows)
-    lead = ["step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l",
-            "a_n", "a_t", "sff", "sff_residual", "z", "n_contacts"]
-    df = df[lead + [c for c in df.columns if c not in lead]]
+    df = df[list(LEAD) + [c for c in df.columns if c not in LEAD]]      # the schema's leading columns first
 
     label = os.path.basename(path)
     parent = os.path.dirname(os.path.abspath(out)) or "."

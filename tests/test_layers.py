@@ -15,7 +15,7 @@ LAYERS = [
     ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
                  "contactpoints", "polygons", "commonplane", "lmgc90shape", "lmgc90count", "facetilt", "footprint", "classify", "pertype", "slab"}),
-    ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
+    ("analysis", {"columns", "analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
                "study.claim6", "study.lmgc90", "study.manifest", "study.alinvestigation",

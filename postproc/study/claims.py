@@ -44,16 +44,27 @@ LEANINGS = ("VF", "EE")
 NO_LEANING = 0.03
 BAND = {"lo": 0.5, "hi": 2.0}   # the criterion's parameter halved, doubled (summary columns *_lo, *_hi)
 
-CLAIMS = (
-    "q/p of polyhedra is higher than that of spheres throughout shear.",
-    "Branch-vector fabric anisotropy a is lower for polyhedra than for spheres.",
-    "a_l is negligible for spheres, not for polyhedra.",
-    "a_n and, much more, a_t are higher for polyhedra.",
-    "q/p ~ (2/5)(a + a_l + a_n + a_t) for both, all along the shear.",
-    "Face-face contacts sit in strong chains along the major principal stress; "
-    "vertex-face and edge-edge contacts carry weak forces and lean toward the minor "
-    "principal direction.",
+#: the six claims: (the claim as the paper states it, its short form in the
+#: README's claims table, the comparison-table quantities that table quotes;
+#: claim 6 quotes its leanings instead); results.py builds the table from it
+TABLE = (
+    ("q/p of polyhedra is higher than that of spheres throughout shear.",
+     "q/p of polyhedra above that of spheres throughout shear", ("q/p plateau",)),
+    ("Branch-vector fabric anisotropy a is lower for polyhedra than for spheres.",
+     "branch-vector anisotropy a lower for polyhedra", ("a",)),
+    ("a_l is negligible for spheres, not for polyhedra.",
+     "a_l negligible for spheres, not for polyhedra", ("a_l",)),
+    ("a_n and, much more, a_t are higher for polyhedra.",
+     "a_n and, much more, a_t higher for polyhedra", ("a_n + a_t", "a_t")),
+    ("q/p ~ (2/5)(a + a_l + a_n + a_t) for both, all along the shear.",
+     "q/p ≈ (2/5)(a + a_l + a_n + a_t) for both, all along the shear", ("(2/5)(a+a_l+a_n+a_t)", "q/p plateau")),
+    ("Face-face contacts sit in strong chains along the major principal stress; "
+     "vertex-face and edge-edge contacts carry weak forces and lean toward the minor "
+     "principal direction.",
+     "face–face contacts strong and axial; vertex–face and edge–edge weak and lateral", ()),
 )
+#: the claims as the paper states them, claim k at k - 1
+CLAIMS = tuple(sentence for sentence, _, _ in TABLE)
 
 
 def plateau(frames, column):
