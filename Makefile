@@ -170,7 +170,7 @@ FRONT ?= runs/front
 FRONT_PLAN ?= default
 front: system venv kernel $(SHAPES_LIB)
 	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
-	$(PY) -m postproc.cli analysis-front --out $(FRONT)-analysis
+	$(PY) -m postproc.cli investigate analysis-front --out $(FRONT)-analysis
 
 # The size front: the default study at 200, 1000 and 5000 grains per sample
 # (presets small, default, intermediate; 3 + 3 seeds each, about 4.7
@@ -183,8 +183,8 @@ size-front: system venv kernel $(SHAPES_LIB)
 	$(MAKE) study PRESET=small STUDY=runs/small
 	$(MAKE) study PRESET=default STUDY=runs/study
 	$(MAKE) study PRESET=intermediate STUDY=runs/intermediate
-	$(PY) -m postproc.cli size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
-	$(PY) -m postproc.cli leaning-blocks runs/small runs/study runs/intermediate --out $(SIZE_FRONT)/blocks
+	$(PY) -m postproc.cli investigate size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
+	$(PY) -m postproc.cli investigate leaning-blocks runs/small runs/study runs/intermediate --out $(SIZE_FRONT)/blocks
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

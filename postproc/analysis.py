@@ -12,6 +12,7 @@ from .angular import AngularFunctions, angular_functions, fit_harmonics
 from .axes import axis_vector
 from .contactset import ContactSet, resolve
 from .classify import AngularTables
+from .columns import COMPONENTS, GROUPS
 from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, ShapeTables
 from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
@@ -22,8 +23,6 @@ from .schema import WALL_ORDER, Snapshot
 from .strain import box_strains
 from .stress import contact_stress, invariants, relative_difference, wall_stress
 
-GROUPS = ("simple", "double", "triple")
-_COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _IDX = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "yz": (1, 2), "xz": (0, 2), "xy": (0, 1)}
 
 
@@ -91,7 +90,7 @@ def wall_forces_from_contacts(cs: ContactSet):
 
 def _stress_columns(prefix, sigma, axis):
     inv = invariants(sigma, axis)
-    row = {f"{prefix}{c}": float(sigma[_IDX[c]]) for c in _COMPONENTS}
+    row = {f"{prefix}{c}": float(sigma[_IDX[c]]) for c in COMPONENTS}
     row.update({
         f"{prefix}sigma_1": inv["principal"][0], f"{prefix}sigma_2": inv["principal"][1],
         f"{prefix}sigma_3": inv["principal"][2],
@@ -282,7 +281,8 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     Returns
     -------
     SnapshotResult
-        The ``summary.csv`` row: identification, the stress components,
+        The ``summary.csv`` row (every column declared, with its unit and
+        meaning, in :data:`postproc.columns.COLUMNS`): identification, the stress components,
         principal values (Pa) and directions of the three forms, p, q =
         (sigma_1 - sigma_3)/3, q/p, q_axial/p, sin phi = 3q/(2p + q), the
         relative differences between the forms; a, a_l, a_n, a_t (and

@@ -54,7 +54,7 @@ def _make_folder_of(out):
 
 
 def _parser():
-    from .meshimport import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
+    from .hullreduce import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
 
     ap = argparse.ArgumentParser(prog="python -m shapes", description="ballast-like polyhedra libraries")
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -182,7 +182,8 @@ def _import(args):
     import numpy as np
 
     from .library import LibraryError, write_library
-    from .meshimport import Budget, import_paths, library_datasets, mixed_units
+    from .hullreduce import Budget
+    from .meshimport import import_paths, library_datasets, mixed_units
     from .report import budget_text, write_report
 
     try:

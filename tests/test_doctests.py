@@ -13,8 +13,9 @@ import pytest
 #: the analysis library's modules whose public API is documented in numpydoc
 NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
                                             "strain", "statistics", "analysis", "axes", "periodic", "contactset",
-                                            "contacttypes", "contactpoints", "commonplane", "footprint",
-                                            "classify")) + tuple(f"yade_scripts.{m}" for m in (
+                                            "contacttypes", "contactpoints", "commonplane", "polygons",
+                                            "lmgc90shape", "lmgc90count", "footprint",
+                                            "classify", "columns")) + tuple(f"yade_scripts.{m}" for m in (
     "runlock", "runstate", "checkpoint", "attempt", "pool", "task", "archive", "slurm"))
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
@@ -78,9 +79,9 @@ SHAPES_ENTRY_POINTS = tuple(f"shapes.{name}" for name in (
     "library.ShapeLibrary", "library.write_library", "engine.ContactEngine",
     "generate.Recipe", "generate.generate_shape", "generate.generate_library",
     "match.generate_like", "match.stretch_to", "match.smoothed_bootstrap",
-    "meshimport.Budget", "meshimport.ImportedGrain", "meshimport.read_mesh", "meshimport.merge_vertices",
-    "meshimport.components", "meshimport.mesh_volume", "meshimport.check_closed", "meshimport.distance_to_convex",
-    "meshimport.hausdorff_to_convex", "meshimport.thin_points", "meshimport.reduce_hull", "meshimport.import_mesh",
+    "hullreduce.Budget", "meshimport.ImportedGrain", "meshimport.read_mesh", "meshimport.merge_vertices",
+    "meshimport.components", "meshimport.mesh_volume", "meshimport.check_closed", "hullreduce.distance_to_convex",
+    "hullreduce.hausdorff_to_convex", "hullreduce.thin_points", "hullreduce.reduce_hull", "meshimport.import_mesh",
     "meshimport.mesh_files", "meshimport.import_paths",
     "descriptors.grain_descriptors", "descriptors.library_descriptors", "descriptors.dihedral_angles",
     "descriptors.principal_extents", "descriptors.library_edge_angles", "descriptors.compare",

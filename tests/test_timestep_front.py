@@ -56,11 +56,11 @@ def test_the_command_on_a_folder_of_the_plan(tmp_path, monkeypatch, capsys):
     plan = {"plan": "timestep", "polyhedra": [[f"dt{s:g}-s{k}", {"safety": s, "seed": k}]
                                               for k in SEEDS for s in SAFETIES]}
     (tmp_path / "front-plan.json").write_text(json.dumps(plan))
-    assert main(["timestep-front", str(tmp_path)]) == 0
+    assert main(["investigate", "timestep-front", str(tmp_path)]) == 0
     assert len(pd.read_csv(tmp_path / "timestep-runs.csv")) == 12
     assert set(pd.read_csv(tmp_path / "timestep.csv")["safety"]) == set(SAFETIES)
     assert (tmp_path / "timestep.md").read_text() in capsys.readouterr().out
-    assert main(["timestep-front", str(tmp_path / "none")]) == 2
+    assert main(["investigate", "timestep-front", str(tmp_path / "none")]) == 2
     assert "not a readable plan" in capsys.readouterr().err
 
 

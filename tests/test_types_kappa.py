@@ -44,7 +44,7 @@ def kernel_dump(tmp_path_factory):
 def kappa_table(kernel_dump, tmp_path_factory):
     """``postproc contact-types-kappa`` on the dump (both shear snapshots)."""
     out = tmp_path_factory.mktemp("ctk")
-    assert main(["contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     return out
 
 
@@ -64,16 +64,16 @@ def test_commonplane_reference_command(kernel_dump, kappa_table, tmp_path, capsy
     """The band from the extreme vertex is the common-plane count the
     analysis uses: its proportions are contact-types-kappa's, exactly."""
     out = tmp_path / "cpref"
-    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     tab = pd.read_csv(out / "commonplane_reference.csv").set_index("reference")
     assert sorted(tab.index) == ["normal", "vertex"] and (tab["snapshots"] == 2).all()
     cp = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion").loc["commonplane"]
     for col in [g + s for g in GROUPS for s in ("", "_lo", "_hi")] + ["move", "contacts"]:
         assert tab.loc["vertex", col] == pytest.approx(cp[col], abs=1e-12), col
     assert "| normal | 1 |" in capsys.readouterr().out
-    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
     assert "no shear snapshot with eps_1 >= 0.5" in capsys.readouterr().err
-    assert main(["commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
 
 
 def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
@@ -84,7 +84,7 @@ def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
     from yade_scripts import facepair_tilt
 
     out = tmp_path / "fp"
-    assert main(["facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     rows = pd.read_csv(out / "facepair_tilt.csv.gz")
     tab = pd.read_csv(out / "facepair_tilt.csv")
     ctk = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion")

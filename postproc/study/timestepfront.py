@@ -2,7 +2,7 @@
 with dt = safety x the critical step, safety 0.3 (the default), 0.45, 0.6, 0.9.
 
     python -m yade_scripts.timestep_front [--out runs/timestep] [--jobs 2]
-    postproc timestep-front OUT
+    postproc investigate timestep-front OUT
 
 The first runs the ``timestep`` plan of :mod:`yade_scripts.front` (200
 polyhedra, the default preset, 3 seeds; finished runs are not run again)
