@@ -162,8 +162,11 @@ def _build(args):
     seconds = time.perf_counter() - t0
     lib = ShapeLibrary(args.out)
     st = write_report(lib, report, rejections, seconds)
+    from .blaspin import openblas_core
+
     msg = (f"shapes: {args.n} shapes -> {args.out} in {seconds:.1f} s; mean vertices "
-           f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}")
+           f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}; "
+           f"OpenBLAS kernels {openblas_core() or 'unknown'}")
     if args.like:
         from .report import LABELS
 
@@ -275,4 +278,7 @@ def _report(args):
 
 
 if __name__ == "__main__":
+    from .blaspin import pin
+
+    pin(sys.argv[1:])          # the same library on every CPU of a kind (shapes/blaspin.py)
     sys.exit(main())
