@@ -74,7 +74,13 @@ _NUMBER = re.compile(r"[-+ ]?(?:\d+\.\d*|\.\d+)(?:[DdEe][-+]?\d{1,3}|[-+]\d{3})?
 
 
 class LmgcFileError(InputError):
-    """An LMGC90 file that cannot be read: one line naming the file and line."""
+    """An LMGC90 file that cannot be read: one line naming the file and line.
+
+    Attributes
+    ----------
+    args : tuple
+        The message, ``"PATH:LINE: what is wrong"``.
+    """
 
 
 def _fail(path, line, what):
@@ -678,7 +684,17 @@ def quaternion_of(frame):
 
 # ------------------------------------------------------------------ conversion
 def output_pairs(run_dir):
-    """The (n, DOF.OUT.n, Vloc_Rloc.OUT.n) triples of a run's OUTBOX, by n.
+    """The output files of a run, paired by their number n.
+
+    Parameters
+    ----------
+    run_dir : str
+        The run's folder (holding ``OUTBOX/``).
+
+    Returns
+    -------
+    list of tuple
+        (n, path of DOF.OUT.n, path of Vloc_Rloc.OUT.n), by increasing n.
 
     Raises
     ------
@@ -905,7 +921,18 @@ def _pairs(vl, index, wall_ids, vpath):
 
 def main(argv=None):
     """``python -m postproc.lmgc90files RUN_DIR OUT.h5``: convert, then verify
-    the dump. Returns the exit status (0, or 2 with one line on stderr)."""
+    the dump.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0, or 2 with one line on stderr.
+    """
     import argparse
 
     from .schema import DumpFormatError, verify_dump
