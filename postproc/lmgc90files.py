@@ -18,9 +18,11 @@ can analyse a run of their own with ``postproc``.
   the velocity ``V(1..3)`` and the inertia frame ``a``, ``b``, ``g``
   (columns alpha, beta, gamma of the rotation local -> global);
 * ``OUTBOX/Vloc_Rloc.OUT.n`` (``write_out_Vloc_Rloc`` of the contact
-  modules, ``PRPRx``, ``PRPLx``, ``SPSPx``, ``SPPLx``, ``SPPRx``, ``PRSPx``):
+  modules, ``PRPRx``, ``PRPLx``, ``SPSPx``, ``SPPLx``, ``SPPRx``; their rows are
+  found by their labels, which differ in order and spelling between them):
   per interaction its candidate and antagonist bodies, status, the local
-  reaction ``rlt/H``, ``rln/H``, ``rls/H``, the relative velocity, ``gapTT``,
+  reaction ``rlt/H``, ``rln/H``, ``rls/H``, the relative velocity, ``gapTT``
+  (``gTT`` for spheres),
   the point ``coo1..3`` and the local frame ``t``, ``n``, ``s``.
 
 Conventions (read from LMGC90's ``injj_PRPRx``): the reaction r = rlt t +
@@ -68,7 +70,7 @@ from .schema import KIND_POLYHEDRON, KIND_SPHERE, WALL_ORDER, DumpWriter
 FRAME_TOL = 1e-6     # relative: the 7-8 digits LMGC90's and pre's text formats hold
 CONTACT_KINDS = {     # interaction: (candidate contactor, antagonist contactor)
     "PRPRx": ("POLYR", "POLYR"), "PRPLx": ("POLYR", "PLANx"), "SPSPx": ("SPHER", "SPHER"),
-    "SPPLx": ("SPHER", "PLANx"), "SPPRx": ("SPHER", "POLYR"), "PRSPx": ("POLYR", "SPHER"),
+    "SPPLx": ("SPHER", "PLANx"), "SPPRx": ("SPHER", "POLYR"),
 }
 _NUMBER = re.compile(r"[-+ ]?(?:\d+\.\d*|\.\d+)(?:[DdEe][-+]?\d{1,3}|[-+]\d{3})?")
 
@@ -418,9 +420,6 @@ def read_dof(path):
             "V": np.array(V), "omega": np.array(W), "frame": np.array(F)}
 
 
-_VLOC_ROWS = ("rl", "vl", "gap", "coo", "t", "n", "s")
-
-
 def read_vloc_rloc(path):
     """Read one ``Vloc_Rloc.OUT.n``: every interaction.
 
@@ -467,40 +466,45 @@ def read_vloc_rloc(path):
         if k + 1 >= n or not lines[k + 1].strip().startswith("cdbdy"):
             _fail(path, min(k + 2, n), f"interaction {w[2]} lacks its 'cdbdy ...' column line (truncated?)")
         ids = lines[k + 2].split() if k + 2 < n else []
-        if len(ids) != 11 or ids[0] != "RBDY3" or ids[6] != "RBDY3":
-            _fail(path, k + 3, f"expected 'RBDY3 n {CONTACT_KINDS[kind][0]} n ver behav RBDY3 n "
+        j2 = next((i for i in range(1, len(ids)) if ids[i] == "RBDY3"), -1)
+        if len(ids) < 9 or ids[0] != "RBDY3" or j2 < 4 or len(ids) < j2 + 5 or not ids[1].isdigit() \
+                or not ids[j2 + 1].isdigit():
+            _fail(path, k + 3, f"expected 'RBDY3 n {CONTACT_KINDS[kind][0]} n [ver] behav RBDY3 n "
                                f"{CONTACT_KINDS[kind][1]} n status', found {(lines[k + 2] if k + 2 < n else '').strip()!r}")
-        if (ids[2], ids[8]) != CONTACT_KINDS[kind]:
-            _fail(path, k + 3, f"{kind} between {ids[2]} and {ids[8]}: expected {CONTACT_KINDS[kind]}")
-        rows = {}
-        for off, name, want in ((3, "rl", ("rlt/H", "rln/H", "rls/H")), (4, "vl", ("vlt", "vln", "vls")),
-                                (5, "gap", ("gapTT",)), (6, "coo", ("coo1", "coo2", "coo3")),
-                                (7, "t", ("t(1)", "t(2)", "t(3)")), (8, "n", ("n(1)", "n(2)", "n(3)")),
-                                (9, "s", ("s(1)", "s(2)", "s(3)"))):
-            j = k + off
-            if j >= n or not lines[j].strip():
-                _fail(path, min(j + 1, n), f"interaction {w[2]} ({kind}, from line {k + 1}) ends before its "
-                                           f"{'/'.join(want)} row (truncated?)")
-            d = labelled(lines[j], path, j + 1)
-            if name == "rl" and any(x in d for x in ("rlt", "rln", "rls")):
-                _fail(path, j + 1, "reactions written as impulses (rln without /H): divide by the time step "
-                                   "H, which this file does not hold; not read")
-            missing = [x for x in want if x not in d]
-            if missing:
-                _fail(path, j + 1, f"interaction {w[2]}: expected {', '.join(want)}, found "
-                                   f"{lines[j].strip()[:60]!r}")
-            rows[name] = [d[x] for x in want]
-        j = k + 10
-        while j < n and lines[j].strip():          # internal variables (comment and values), if any
+        if (ids[2], ids[j2 + 2]) != CONTACT_KINDS[kind]:
+            _fail(path, k + 3, f"{kind} between {ids[2]} and {ids[j2 + 2]}: expected {CONTACT_KINDS[kind]}")
+        j = k + 3
+        d, where = {}, {}
+        while j < n and lines[j].strip():
+            got = labelled(lines[j], path, j + 1)
+            d.update(got)
+            where.update(dict.fromkeys(got, j))
             j += 1
         if j >= n:
             _fail(path, n, f"interaction {w[2]} ({kind}, from line {k + 1}) has no closing blank line (truncated?)")
+        if any(x in d for x in ("rlt", "rln", "rls")):
+            _fail(path, k + 4, "reactions written as impulses (rln without /H): divide by the time step "
+                               "H, which this file does not hold; not read")
+        d.setdefault("gapTT", d.get("gTT"))
+        rows = {}
+        for name, want in (("rl", ("rlt/H", "rln/H", "rls/H")), ("vl", ("vlt", "vln", "vls")), ("gap", ("gapTT",)),
+                           ("coo", ("coo1", "coo2", "coo3")), ("t", ("t(1)", "t(2)", "t(3)")),
+                           ("n", ("n(1)", "n(2)", "n(3)")), ("s", ("s(1)", "s(2)", "s(3)"))):
+            missing = [x for x in want if d.get(x) is None]
+            seen = [where[x] for x in want if x in where]
+            if missing and seen:         # the row is there, a field of it unreadable
+                _fail(path, seen[0] + 1, f"interaction {w[2]}: expected {', '.join(want)}, found "
+                                         f"{lines[seen[0]].strip()[:60]!r}")
+            if missing:
+                _fail(path, j + 1, f"interaction {w[2]} ({kind}, from line {k + 1}) ends before its "
+                                   f"{'/'.join(want)} row (truncated?)")
+            rows[name] = [d[x] for x in want]
         out["kind"].append(kind)
         out["icdan"].append(int(w[2]))
         out["cd"].append(int(ids[1]))
-        out["an"].append(int(ids[7]))
-        out["behav"].append(ids[5])
-        out["status"].append(ids[10])
+        out["an"].append(int(ids[j2 + 1]))
+        out["behav"].append(ids[j2 - 1])
+        out["status"].append(ids[j2 + 4])
         out["rl"].append(rows["rl"])
         out["vl"].append(rows["vl"])
         out["gap"].append(rows["gap"][0])

@@ -5,7 +5,10 @@ LMGC90's text output every 100 steps from step 400 (DATBOX/, OUTBOX/ in the curr
 folder) and, at the end, LMGC90's own reactions, centres and POLYR vertices
 from chipy in reactions.json.
 
-    python tests/lmgc90_tiny_run.py [STEPS]     (run in the folder to fill)
+    python tests/lmgc90_tiny_run.py [STEPS] [--spheres]    (run in the folder to fill)
+
+``--spheres``: eight SPHER grains of radii 0.9 R to 1.04 R instead
+(interactions SPSPx and SPPLx).
 """
 import json
 import os
@@ -20,8 +23,9 @@ L, R, T, DT = 0.03, 0.005, 0.002, 1e-4     # m box side, grain radius, wall half
 WRITE_FROM = 400                            # the grains touch the floor at about step 250
 
 
-def scene(pre):
-    """Write DATBOX/ for the eight grains in the walled box."""
+def scene(pre, spheres=False):
+    """Write DATBOX/ for the eight grains in the walled box (eight SPHER
+    grains of radius R instead with ``spheres``)."""
     os.makedirs("DATBOX", exist_ok=True)
     bodies, mats, mods = pre.avatars(), pre.materials(), pre.models()
     svs, tacts = pre.see_tables(), pre.tact_behavs()
@@ -38,11 +42,15 @@ def scene(pre):
         for iy in range(2):
             for iz in range(2):
                 c = [0.0075 + 0.015 * ix, 0.0075 + 0.015 * iy, 0.0055 + 0.011 * iz]
-                b = pre.rigidPolyhedron(radius=R, center=c, generation_type="random" if k % 2 else "regular",
-                                        nb_vertices=8 if k % 2 == 0 else 12, model=mod, material=grain,
-                                        color="BLUEx")
-                b.rotate(description="axis", alpha=float(rng.uniform(0, 0.3)), axis=list(rng.normal(size=3)),
-                         center=c)
+                if spheres:
+                    b = pre.rigidSphere(r=R * (0.9 + 0.02 * k), center=[c[0], c[1], c[2] + 0.001 * iz],
+                                        model=mod, material=grain, color="BLUEx")
+                else:
+                    b = pre.rigidPolyhedron(radius=R, center=c, generation_type="random" if k % 2 else "regular",
+                                            nb_vertices=8 if k % 2 == 0 else 12, model=mod, material=grain,
+                                            color="BLUEx")
+                    b.rotate(description="axis", alpha=float(rng.uniform(0, 0.3)), axis=list(rng.normal(size=3)),
+                             center=c)
                 bodies += b
                 k += 1
     h = L / 2
@@ -58,19 +66,21 @@ def scene(pre):
     lpw = pre.tact_behav(name="iqsc1", law="IQS_CLB", fric=0.0)
     tacts += lpp
     tacts += lpw
-    for an, col, law in (("POLYR", "BLUEx", lpp), ("PLANx", "WALLx", lpw)):
-        svs += pre.see_table(CorpsCandidat="RBDY3", candidat="POLYR", colorCandidat="BLUEx",
+    cd = "SPHER" if spheres else "POLYR"
+    for an, col, law in ((cd, "BLUEx", lpp), ("PLANx", "WALLx", lpw)):
+        svs += pre.see_table(CorpsCandidat="RBDY3", candidat=cd, colorCandidat="BLUEx",
                              CorpsAntagoniste="RBDY3", antagoniste=an, colorAntagoniste=col, behav=law,
                              alert=0.1 * R)
     pre.writeDatbox(3, mats, mods, bodies, tacts, svs, gravy=np.array([0.0, 0.0, -9.81]))
 
 
-def run(chipy, steps):
+def run(chipy, steps, spheres=False):
     chipy.checkDirectories()
     chipy.utilities_DisableLogMes()
     chipy.SetDimension(3)
     chipy.nlgs_3D_DiagonalResolution()
-    chipy.PRPRx_UseCpCundallDetection(50)
+    if not spheres:
+        chipy.PRPRx_UseCpCundallDetection(50)
     chipy.TimeEvolution_SetTimeStep(DT)
     chipy.Integrator_InitTheta(0.5)
     chipy.ReadDatbox(deformable=False)
@@ -93,7 +103,8 @@ def run(chipy, steps):
            "reac": [list(chipy.RBDY3_GetBodyVector("Reac_", i + 1)) for i in range(nb)],
            "coor": [list(chipy.RBDY3_GetBodyVector("Coor_", i + 1)) for i in range(nb)],
            "vlocy": [list(chipy.RBDY3_GetBodyVector("V____", i + 1)) for i in range(nb)],
-           "vertices": [np.asarray(chipy.POLYR_GetVertex(i + 1)).tolist() for i in range(chipy.POLYR_GetNbPOLYR())]}
+           "vertices": [] if spheres else [np.asarray(chipy.POLYR_GetVertex(i + 1)).tolist()
+                                           for i in range(chipy.POLYR_GetNbPOLYR())]}
     with open("reactions.json", "w") as fh:
         json.dump(out, fh)
     chipy.Finalize()
@@ -101,5 +112,6 @@ def run(chipy, steps):
 
 if __name__ == "__main__":
     chipy, pre = import_pylmgc90()
-    scene(pre)
-    run(chipy, int(sys.argv[1]) if len(sys.argv) > 1 else 800)
+    args = [a for a in sys.argv[1:] if a != "--spheres"]
+    scene(pre, spheres="--spheres" in sys.argv)
+    run(chipy, int(args[0]) if args else 800, spheres="--spheres" in sys.argv)

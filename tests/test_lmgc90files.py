@@ -28,8 +28,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEXT = 1e-6      # relative precision of LMGC90's D14.7 text fields (7 significant digits, with margin)
 
 
-@pytest.fixture(scope="module")
-def run(tmp_path_factory):
+def _tiny_run(tmp_path_factory, *flags):
     """(run folder, converted dump, chipy's end-of-run record)."""
     from lmgc90.build import LMGC90BuildError, pylmgc90_path
 
@@ -38,12 +37,35 @@ def run(tmp_path_factory):
     except LMGC90BuildError as exc:
         pytest.skip(f"LMGC90 is not built ({exc})")
     folder = tmp_path_factory.mktemp("lmgc90run")
-    subprocess.run([sys.executable, os.path.join(ROOT, "tests", "lmgc90_tiny_run.py")], cwd=folder, check=True,
-                   capture_output=True, timeout=600)
+    subprocess.run([sys.executable, os.path.join(ROOT, "tests", "lmgc90_tiny_run.py"), *flags], cwd=folder,
+                   check=True, capture_output=True, timeout=600)
     out = str(folder / "run.h5")
     assert convert(str(folder), out) == 5                 # steps 400, 500, ... 800
     with open(folder / "reactions.json") as fh:
         return folder, out, json.load(fh)
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    """The eight POLYR grains."""
+    return _tiny_run(tmp_path_factory)
+
+
+@pytest.fixture(scope="module")
+def sphere_run(tmp_path_factory):
+    """Eight SPHER grains (SPSPx and SPPLx interactions)."""
+    return _tiny_run(tmp_path_factory, "--spheres")
+
+
+def _resultants(snap, n_bodies):
+    """(B, 3) N: each body's resultant of the dump's point forces (rows by
+    RBDY3 number - 1)."""
+    out = np.zeros((n_bodies, 3))
+    f = snap.points["force_normal"] + snap.points["force_tangential"]
+    row = snap.points["contact"]
+    np.add.at(out, snap.id2[row] - 1, f)
+    np.add.at(out, snap.id1[row] - 1, -f)
+    return out
 
 
 def _last(out):
@@ -77,11 +99,7 @@ def test_forces_on_every_body_are_lmgc90_s_reactions(run):
     _, out, rec = run
     snap, _ = _last(out)
     reac = np.array(rec["reac"])[:, :3]
-    mine = np.zeros_like(reac)
-    f = snap.points["force_normal"] + snap.points["force_tangential"]
-    row = snap.points["contact"]
-    np.add.at(mine, snap.id2[row] - 1, f)
-    np.add.at(mine, snap.id1[row] - 1, -f)
+    mine = _resultants(snap, len(reac))
     assert np.abs(reac).max() > 1e-3                       # the grains' weights, about 5e-3 N
     np.testing.assert_allclose(mine, reac, rtol=0, atol=TEXT * np.abs(reac).max())
     # walls/force is the force on each wall
@@ -134,6 +152,21 @@ def test_the_grains_vertices_are_lmgc90_s(run):
         vol, c, inertia = mesh_mass_properties(verts[snap.shape_index[k]], tris[snap.shape_index[k]])
         assert np.linalg.norm(c) < 10 * TEXT * d and vol == pytest.approx(snap.volumes[k], rel=1e-12)
         assert np.abs(inertia - np.diag(np.diag(inertia))).max() < 10 * TEXT * np.trace(inertia)
+
+
+def test_a_sphere_run_converts_with_lmgc90_s_reactions(sphere_run):
+    folder, out, rec = sphere_run
+    assert verify_dump(out).checksums
+    snap, shapes = _last(out)
+    assert shapes is None and set(snap.body_kind.tolist()) == {0}
+    vl = read_vloc_rloc(os.path.join(folder, "OUTBOX", "Vloc_Rloc.OUT.5"))
+    assert set(vl["kind"].tolist()) == {"SPSPx", "SPPLx"}
+    reac = np.array(rec["reac"])[:, :3]
+    assert np.abs(reac).max() > 1e-3
+    np.testing.assert_allclose(_resultants(snap, len(reac)), reac, rtol=0, atol=TEXT * np.abs(reac).max())
+    np.testing.assert_allclose(snap.positions, np.array(rec["coor"])[snap.body_ids - 1, :3], rtol=0,
+                               atol=TEXT * 0.03)
+    np.testing.assert_allclose(snap.sizes, 2 * 0.005 * (0.9 + 0.02 * np.arange(8)), rtol=TEXT)
 
 
 def test_postproc_analyses_the_dump_and_reads_the_cd_types(run, tmp_path):
