@@ -15,7 +15,7 @@ NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coord
                                             "strain", "statistics", "analysis", "axes", "periodic", "contactset",
                                             "contacttypes", "contactpoints", "commonplane", "polygons",
                                             "lmgc90shape", "lmgc90count", "footprint",
-                                            "classify", "columns")) + tuple(f"yade_scripts.{m}" for m in (
+                                            "classify", "columns", "cdpoints", "lmgc90files")) + tuple(f"yade_scripts.{m}" for m in (
     "runlock", "runstate", "checkpoint", "attempt", "pool", "task", "archive", "slurm"))
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
