@@ -10,6 +10,7 @@ import numpy as np
 
 from .angular import AngularFunctions, angular_functions, fit_harmonics
 from .axes import axis_vector
+from .cdpoints import cd_type_columns
 from .contactset import ContactSet, resolve
 from .classify import AngularTables
 from .columns import COMPONENTS, GROUPS
@@ -366,6 +367,11 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
         cols, labels, extents = contact_type_columns(snap, cs, sel, classifier, p, s_m, e)
         row.update(cols)
         row["z_points"] = row["z"] * row["ct_points_per_contact"]
+    if snap.points is not None:        # a CD dump: its types read off the contact points
+        try:
+            row.update(cd_type_columns(snap, e))
+        except InputError:             # no pair carries a force: the CD columns stay empty
+            pass
     typed = "ct_method" in row
     fn = cs.normal_force[sel]
     nets = network_statistics(fn, branch, force, e,

@@ -3,7 +3,8 @@
 ``postproc --help`` lists a user's commands first: ``analyze`` (a dump or
 contact table), ``report`` (a study's report), ``results`` (a study's
 results file and the README's table), ``compare-results`` (a study against
-the committed results), ``export-vtk`` (ParaView files), then ``synthetic``
+the committed results), ``export-vtk`` (ParaView files), ``import-lmgc90``
+(an LMGC90 run's own output files as a dump), then ``synthetic``
 (a test dump) and ``investigate``: the study's one-off investigations
 (``postproc investigate --help`` lists them; docs/postproc.md), each once a
 top-level command whose old spelling still runs, with a one-line note.
@@ -463,6 +464,21 @@ def _timestep_front(args):
     return 0
 
 
+def _import_lmgc90_arguments(im):
+    im.add_argument("run_dir", help="an LMGC90 run's folder, holding DATBOX/ and OUTBOX/ (DOF.OUT.n, Vloc_Rloc.OUT.n)")
+    im.add_argument("out", help="the dump to write (must not exist); then: postproc analyze OUT --out DIR")
+
+
+def _import_lmgc90(args):
+    from .lmgc90files import convert
+    from .schema import verify_dump
+
+    n = convert(args.run_dir, args.out, progress=lambda line: print(line, file=sys.stderr))
+    check = verify_dump(args.out)
+    print(f"{args.out}: {n} snapshots from {args.run_dir} (verified: {check.n_snapshots} snapshots)")
+    return 0
+
+
 #: a user's commands, first in ``postproc --help``
 USER_COMMANDS = (
     Command("analyze", "stress, fabric and force anisotropies of a dump or contact table",
@@ -473,6 +489,8 @@ USER_COMMANDS = (
     Command("compare-results", "a study's results against the committed ones (the README's table): the same, "
                                "or what differs", _compare_arguments, _compare_results),
     Command("export-vtk", "VTK files (particles, contacts) per snapshot for ParaView", _vtk_arguments, _export_vtk),
+    Command("import-lmgc90", "an LMGC90 run's own output files (DATBOX/, OUTBOX/) as a contact dump, every CD "
+                             "contact point kept", _import_lmgc90_arguments, _import_lmgc90),
 )
 #: the other top-level commands, after the user's
 TOOLS = (

@@ -170,6 +170,29 @@ def _declare():
     add("ct_l2_median", "1", "median smallest footprint extent L2/d of the polyhedra pairs")
     add("ct_points_per_contact", "1", "mean contact points per contact (1 simple, 2 double, 3 triple)")
     add("z_points", "1", "z counting a contact as 1, 2 or 3 points (simple, double, triple)")
+    # contact types read off the contact points of a CD dump (postproc.cdpoints; schema version 3)
+    add("cd_pairs", "1", "CD: force-bearing particle pairs (at least one point carrying a force)")
+    add("cd_points", "1", "CD: contact points of the snapshot (every LMGC90 interaction)")
+    add("cd_points_carrying", "1", "CD: contact points carrying a normal force above the round-off floor")
+    add("cd_force_floor", "N", "CD: the floor P eps max f_n below which a point carries no force")
+    add("cd_pairs_all", "1", "CD: particle pairs with at least one point within the alert distance")
+    for g in GROUPS:
+        add(f"cd_alert_frac_{g}_all", "1", f"CD: proportion of {g} pairs among every pair with a point, "
+                                           "counting every point within the alert distance")
+    for count, how in (("alert", "every point within the alert distance"), ("force", "the force-carrying points")):
+        for g in GROUPS:
+            add(f"cd_{count}_frac_{g}", "1", f"CD: proportion of {g} pairs among the force-bearing pairs, "
+                                             f"counting {how}", label=f"CD {g} contacts ({count})")
+            add(f"cd_{count}_fratio_{g}", "1", f"CD: mean f_n of the {g} pairs over the mean f_n ({how})")
+            add(f"cd_{count}_fshare_{g}", "1", f"CD: share of the summed f_n carried by the {g} pairs ({how})")
+            add(f"cd_{count}_fabric_{g}", "1", f"CD: signed branch fabric of the {g} pairs, positive towards "
+                                               f"the axis ({how})", "Eq. 6")
+            add(f"cd_{count}_fabric_{g}_se", "1", f"standard error of cd_{count}_fabric_{g}")
+        for g in GROUPS:
+            add(f"cd_{count}_qp_{g}", "1", f"CD: share of q_axial/p carried by the {g} pairs ({how})", "Eq. 2")
+        for n in NETWORKS:
+            add(f"cd_{count}_{n}_frac_triple", "1", f"CD: proportion of triple pairs in the {n} network ({how})")
+    add("cd_points_per_pair", "1", "CD: mean force-carrying points of a force-bearing pair")
     # the strong and weak networks
     for n, what in NETWORKS.items():
         add(f"{n}_fraction", "1", f"share of the force-bearing contacts in {what}")

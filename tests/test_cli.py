@@ -221,7 +221,7 @@ STUDY_COMMANDS = ("size-front", "leaning-blocks", "size-at-strain", "analysis-fr
                   "contact-types-kappa", "commonplane-reference", "facepair-tilt",
                   "timestep-front", "random-types", "shape-front")
 #: a user's commands, in the order postproc --help lists them
-USER = ("analyze", "report", "results", "compare-results", "export-vtk")
+USER = ("analyze", "report", "results", "compare-results", "export-vtk", "import-lmgc90")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)
@@ -247,7 +247,7 @@ def test_the_help_lists_a_users_commands_first_and_the_investigations_in_their_g
     with pytest.raises(SystemExit):
         main(["--help"])
     top = _listed(capsys.readouterr().out, "commands")
-    assert tuple(top[:5]) == USER and top[5:] == ["synthetic", "investigate"]
+    assert tuple(top[:len(USER)]) == USER and top[len(USER):] == ["synthetic", "investigate"]
     with pytest.raises(SystemExit):
         main(["investigate", "--help"])
     inner = _listed(capsys.readouterr().out, "investigations")
@@ -281,7 +281,7 @@ def test_one_error_handler_for_every_command():
     main_fn = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "main")
     assert not [n for n in ast.walk(main_fn) if isinstance(n, ast.If) and "cmd" in ast.unparse(n.test)]
     names = [c.name for c in cli.USER_COMMANDS + cli.TOOLS + cli.INVESTIGATIONS]
-    assert len(names) == len(set(names)) == 19
+    assert len(names) == len(set(names)) == 20
 
 
 def test_a_command_is_one_entry(monkeypatch, capsys):
@@ -300,7 +300,7 @@ def test_a_command_is_one_entry(monkeypatch, capsys):
     monkeypatch.setattr(cli, "USER_COMMANDS", cli.USER_COMMANDS + (extra,))
     with pytest.raises(SystemExit):
         main(["--help"])
-    assert _listed(capsys.readouterr().out, "commands")[5] == "import-test"
+    assert _listed(capsys.readouterr().out, "commands")[len(USER)] == "import-test"
     assert main(["import-test", "--value", "3"]) == 0 and capsys.readouterr().out == "value 3\n"
     assert main(["import-test", "--value", "-1"]) == 2
     assert capsys.readouterr().err == "postproc: error: --value must be >= 0, got -1\n"

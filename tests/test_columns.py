@@ -14,6 +14,7 @@ from postproc.schema import DumpWriter
 from postproc.synthetic import write_synthetic_dump
 from builders import write_snapshot
 from test_footprint_types import kernel_snapshot
+from test_schema_points import lattice_points
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -22,7 +23,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 def summaries(tmp_path_factory):
     """{name: summary columns} of a polyhedra dump of kernel contact sets
     (one isotropic, two shear snapshots) analysed by the point count and by
-    LMGC90's, and of a synthetic spheres dump."""
+    LMGC90's, of the same sets as a CD dump (contact points), and of a
+    synthetic spheres dump."""
     tmp = tmp_path_factory.mktemp("columns")
     path = str(tmp / "run.h5")
     with DumpWriter(path, "polyhedra", {}) as w:
@@ -41,6 +43,18 @@ def summaries(tmp_path_factory):
         folder = str(tmp / types)
         analyze_path(path, folder, AnalysisOptions(types=types, figures=False), progress=False)
         out[types] = list(pd.read_csv(os.path.join(folder, "summary.csv")).columns)
+    cd = str(tmp / "cd.h5")                  # a CD dump: the same sets with their contacts as points
+    with DumpWriter(cd, "polyhedra", {}) as w:
+        for k in range(3):
+            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
+            if k == 0:
+                w.write_shapes(verts, tris, faces)
+            snap.volumes = np.ones(len(snap.body_ids))
+            snap.masses = np.ones(len(snap.body_ids))
+            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear",
+                           wall_forces=np.full((6, 3), 0.5), points=lattice_points(snap))
+    analyze_path(cd, str(tmp / "cd"), AnalysisOptions(figures=False), progress=False)
+    out["cd"] = list(pd.read_csv(os.path.join(tmp / "cd", "summary.csv")).columns)
     spheres = str(tmp / "spheres.h5")
     write_synthetic_dump(spheres, 2000, 3, (0.3, 0.1, 0.5, 0.2), seed=1)
     analyze_path(spheres, str(tmp / "s"), AnalysisOptions(figures=False), progress=False)
@@ -56,6 +70,7 @@ def test_the_analysis_writes_only_declared_columns_in_their_order(summaries):
         rest = [c for c in cols if c not in LEAD]
         assert rest == [c for c in COLUMNS if c in cols and c not in LEAD], name
     assert "ct_alert_m" in summaries["lmgc90"] and "ct_fp_missing" in summaries["points"]
+    assert "cd_force_frac_triple" in summaries["cd"] and "cd_force_frac_triple" not in summaries["points"]
 
 
 def test_every_declared_column_is_written_by_some_analysis(summaries):

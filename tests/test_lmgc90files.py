@@ -182,6 +182,25 @@ def test_postproc_analyses_the_dump_and_reads_the_cd_types(run, tmp_path):
     assert sum(fr) == pytest.approx(1.0, abs=1e-12) and row["cd_pairs"] > 0
 
 
+def test_postproc_import_lmgc90_converts_a_run_and_refuses_a_bad_one_in_one_line(run, tmp_path, capsys):
+    from postproc.cli import main
+
+    folder, out, _ = run
+    mine = tmp_path / "mine.h5"
+    assert main(["import-lmgc90", str(folder), str(mine)]) == 0
+    said = capsys.readouterr().out
+    with DumpReader(out) as a, DumpReader(str(mine)) as b:
+        assert len(a) == len(b) and f"{len(b)} snapshots" in said
+        last_a, last_b = a.read(len(a) - 1), b.read(len(b) - 1)
+        assert np.array_equal(last_a.force, last_b.force) and np.array_equal(last_a.points["gap"], last_b.points["gap"])
+    broken = _copy(run, tmp_path)
+    os.remove(broken / "DATBOX" / "BODIES.DAT")
+    assert main(["import-lmgc90", str(broken), str(tmp_path / "no.h5")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("postproc: error:") and "BODIES.DAT" in err and "\n" not in err
+    assert not (tmp_path / "no.h5").exists()
+
+
 # -------------------------------------------------------------- refusals
 def _copy(run, tmp_path):
     folder = tmp_path / "copy"
