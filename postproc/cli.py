@@ -155,7 +155,7 @@ def main(argv=None):
     cr.add_argument("--every", type=int, default=1, help="every n-th of those snapshots (default 1)")
     cr.add_argument("--tau", type=float, default=0.1, help="the band tau, units of ref (default 0.1)")
     fp = sub.add_parser("facepair-tilt", help="the face-pair tilt against the overlap thickness of kernel S1 "
-                                              "dumps (python -m yade_scripts.facepair_tilt runs its plan first)")
+                                              "dumps (python -m yade_scripts.campaign.facepair_sweep runs its plan first)")
     fp.add_argument("out", help="output folder: facepair_tilt.csv(.gz), .md and the figure")
     fp.add_argument("dump", nargs="+", help="kernel S1 dumps (RUN.h5), one per kappa and seed")
     fp.add_argument("--from-eps1", type=float, default=0.1,
@@ -167,7 +167,7 @@ def main(argv=None):
                     help="the shape library (default runs/shapes/library.h5, make shapes)")
     rt.add_argument("--pairs", type=int, default=100_000, help="random contacts classified (default 100000)")
     ts = sub.add_parser("timestep-front", help="the time step's cost and error, paired by seed, from the "
-                                               "runs of the timestep plan (python -m yade_scripts.timestep_front)")
+                                               "runs of the timestep plan (python -m yade_scripts.campaign.timestep_sweep)")
     ts.add_argument("out", help="the front's folder (front-plan.json, the analysed runs); timestep.csv and .md "
                                 "are written there")
     ts.add_argument("--reference", type=float, default=0.3,

@@ -1,4 +1,4 @@
-"""Placing polyhedra with their exact shapes (yade_scripts.sample.place_exact,
+"""Placing polyhedra with their exact shapes (yade_scripts.scene.sample.place_exact,
 shapes.overlap.OrientedGrains): no two grains overlap, the solid fraction
 asked for is the one in the box, and the cheap proof of separation never
 calls an overlapping pair apart."""
@@ -9,7 +9,7 @@ import pytest
 
 from shapes import overlap
 from shapes.generate import generate_library
-from yade_scripts import sample
+from yade_scripts.scene import sample
 
 
 @pytest.fixture(scope="module")

@@ -36,7 +36,8 @@ import os
 import shutil
 from dataclasses import dataclass
 
-from .runlock import RunBusy
+from . import checkpoint
+from .runlock import RunBusy, describe, holds, lock_path, run_holder
 
 EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_BUSY, EXIT_TERM = 0, 2, 3, 4, 75
 #: a run that crashed and left a checkpoint is started again this many times
@@ -188,8 +189,6 @@ def checkpoint_position(dump):
     >>> checkpoint_position("/nonexistent/run.h5") is None
     True
     """
-    from . import checkpoint
-
     for path in checkpoint.candidates(RunFiles(dump).checkpoint):
         try:
             h = checkpoint.header(path)
@@ -764,8 +763,6 @@ def state_of(dump):
     >>> state_of("/nonexistent/run.h5")
     RunState(state='not started', detail='not started', step=None, holder=None)
     """
-    from .runlock import describe, holds, lock_path, run_holder
-
     kind, why = dump_condition(dump)
     if kind == "complete":
         return RunState("complete", "complete")

@@ -10,7 +10,7 @@ their current area. Snapshots of every contact go to an HDF5 dump
 fraction, time step, costs, the host) to OUT.info.json, where OUT is the dump
 name without .h5 (run.h5 by default).
 
-This file is a template: ``python -m yade_scripts.generate`` copies it into a
+This file is a template: ``python -m yade_scripts.campaign.generate`` copies it into a
 run folder with the parameters below set from a preset, next to ``pkg/`` (a
 copy of this repository's packages ``yade_scripts``, ``shapes`` and
 ``postproc``, imported under their own names) and, for polyhedra,
@@ -18,21 +18,21 @@ shapes.h5. Run it there with
 
     yade -x triaxial.py            (or OMP_WAIT_POLICY=PASSIVE yade -j2 -x triaxial.py:
                                     the polyhedra kernel then uses 2 threads)
-    python -m yade_scripts.batch FOLDER --jobs 2    (every line of table.txt; or yade-batch)
+    python -m yade_scripts.launch.batch FOLDER --jobs 2    (every line of table.txt; or yade-batch)
 
 A table line (``YADE_BATCH=table.txt:LINE``, as yade-batch sets it)
 overrides any parameter by its name; the parameters are checked first
-(yade_scripts/parameters.py). The loading program (servo, shear, when to
-take snapshots and stop) is yade_scripts/loading.py. Checkpoints and resume
-(yade_scripts/attempt.py): every ``checkpoint_seconds`` of wall time, and
+(yade_scripts/scene/parameters.py). The loading program (servo, shear, when to
+take snapshots and stop) is yade_scripts/scene/loading.py. Checkpoints and resume
+(yade_scripts/runs/attempt.py): every ``checkpoint_seconds`` of wall time, and
 when the process receives SIGTERM (what SLURM and most schedulers send
 before a kill), the run writes OUT.ckpt atomically, keeping the previous one
 as OUT.ckpt.prev. Run the same command again in the folder and it resumes
 from the newest usable checkpoint, appending to the same dump
-(``resume=False`` starts afresh). Exit codes (yade_scripts/runstate.py): 0
+(``resume=False`` starts afresh). Exit codes (yade_scripts/runs/runstate.py): 0
 done (or already complete), 2 invalid parameters, 3 stopped on a blow-up or
 max_steps (message printed, snapshots kept), 4 another process is writing
-the run (its lock, yade_scripts/runlock.py: nothing touched), 75 checkpoint written after
+the run (its lock, yade_scripts/runs/runlock.py: nothing touched), 75 checkpoint written after
 SIGTERM (run again to resume), anything else a crash (run again to resume
 from the last periodic checkpoint).
 """
@@ -46,7 +46,7 @@ import numpy as np
 from yade import log, polyhedra_utils, utils
 
 # ------------------------------------------------------------ parameters
-# --- parameters (generated from yade_scripts/parameters.py) ---
+# --- parameters (generated from yade_scripts/scene/parameters.py) ---
 readParamsFromTable(
     sample='polyhedra',              # "polyhedra" (S1) or "spheres" (S2)
     n_particles=1000,                # number of particles
@@ -106,13 +106,14 @@ sys.path.insert(0, os.path.join(HERE, "pkg"))      # this run's copy of the repo
 from postproc.schema import DumpFormatError, DumpWriter  # noqa: E402
 from shapes import sizes  # noqa: E402
 from shapes.library import ShapeLibrary  # noqa: E402
-from yade_scripts import host, loading, servo, timestep, yadedump  # noqa: E402
-from yade_scripts import sample as sampling  # noqa: E402
-from yade_scripts.attempt import Attempt, Progress, leave, remove_scratch_at_exit  # noqa: E402
-from yade_scripts.noremote import close_servers  # noqa: E402
-from yade_scripts.parameters import DEFAULTS, ConfigError, check  # noqa: E402
-from yade_scripts.runlock import RunBusy  # noqa: E402
-from yade_scripts.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
+from yade_scripts.runs import host  # noqa: E402
+from yade_scripts.scene import loading, servo, timestep, yadedump  # noqa: E402
+from yade_scripts.scene import sample as sampling  # noqa: E402
+from yade_scripts.runs.attempt import Attempt, Progress, leave, remove_scratch_at_exit  # noqa: E402
+from yade_scripts.runs.noremote import close_servers  # noqa: E402
+from yade_scripts.scene.parameters import DEFAULTS, ConfigError, check  # noqa: E402
+from yade_scripts.runs.runlock import RunBusy  # noqa: E402
+from yade_scripts.runs.runstate import EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM  # noqa: E402
 
 SCRATCH = remove_scratch_at_exit(O.tmpFilename())   # YADE's scratch /tmp/yade-XXXXXX, which it leaves behind
 
@@ -260,7 +261,7 @@ if KERNEL:
     # compiled kernel (kernel_contacts.py): no collider, no InteractionLoop.
     # It steps inside YADE's C++ loop (the PolyhedraKernelEngine plugin,
     # where YADE was started with its YADE_PREFIX), else from a PyRunner.
-    from yade_scripts.kernel_contacts import KernelContacts, KernelError  # noqa: E402
+    from yade_scripts.scene.kernel_contacts import KernelContacts, KernelError  # noqa: E402
 
     # the library's grains (d = 1) scaled to each particle, in the library's order
     shape_v = [lib[int(s_k)][0] * d_k for s_k, d_k in zip(shape_of, d)]
@@ -278,7 +279,7 @@ if KERNEL:
     ]
     run.scene_saving = kernel.portable          # checkpoints hold the PyRunner form: they resume on either path
 elif POLY:
-    from yade_scripts.tangential import TangentialLaw  # noqa: E402
+    from yade_scripts.scene.tangential import TangentialLaw  # noqa: E402
 
     tangential_law = TangentialLaw(O, Vector3, kt_of)
     O.engines = [
@@ -358,7 +359,7 @@ def wall_forces():
 
 def set_wall_velocities(vel):
     """Give the six walls the velocities ``vel`` (6, 3) m/s, in the dump's
-    wall order (:func:`yade_scripts.servo.wall_velocities`)."""
+    wall order (:func:`yade_scripts.scene.servo.wall_velocities`)."""
     for s, v in zip(wall_states, vel.tolist()):
         s.vel = v
 
@@ -482,13 +483,13 @@ progress = Progress(report_seconds)
 
 def control():
     """The controller, run by a PyRunner every step: the loading program
-    (:class:`yade_scripts.loading.TriaxialLoading`) from the wall stresses
+    (:class:`yade_scripts.scene.loading.TriaxialLoading`) from the wall stresses
     (compaction to the isotropic state, its snapshot and the switch to
     shear; then shear, its snapshots and the end), the log row every
     ``log_every`` steps, the blow-up and ``max_steps`` checks every
     ``check_every`` steps, and the progress line. It first lets a due
     checkpoint end the run after this step
-    (:meth:`yade_scripts.attempt.Attempt.end_of_step`) and, on the plugin
+    (:meth:`yade_scripts.runs.attempt.Attempt.end_of_step`) and, on the plugin
     path, stops the run on an error of the kernel's step."""
     run.end_of_step()
     if KERNEL and kernel.path == "plugin":
