@@ -78,8 +78,11 @@ def test_the_bare_scene_is_the_default_preset():
     block = text[text.index(BLOCK_START):text.index(BLOCK_END)]
     assert block == render_block(DEFAULTS)
     assert resolve("default", "polyhedra") == DEFAULTS
+    # read by the scene's body, or by its controller from the scene's parameters (p["name"])
     body = text[text.index(BLOCK_END):]
-    unused = [q.name for q in PARAMETERS if not re.search(rf"\b{q.name}\b", body)]
+    controller = open(os.path.join(os.path.dirname(__file__), "..", "yade_scripts", "scene", "controller.py")).read()
+    unused = [q.name for q in PARAMETERS if not re.search(rf"\b{q.name}\b", body)
+              and f'p["{q.name}"]' not in controller and f"p['{q.name}']" not in controller]
     assert not unused, f"parameters the scene never reads: {unused}"
 
 

@@ -29,7 +29,7 @@ LAYERS = [
               "runs.attempt"}),
     ("plugin", {"yadeplugin", "yadeplugin.__main__"}),
     ("scene", {"scene", "scene.parameters", "scene.servo", "scene.loading", "scene.timestep", "scene.sample",
-               "scene.tangential", "scene.yadedump", "scene.kernel_contacts",
+               "scene.grains", "scene.tangential", "scene.yadedump", "scene.kernel_contacts", "scene.controller",
                "scene.triaxial"}),
     ("probe", {"yadeplugin.scene", "yadeplugin.probe_scene"}),
     ("launch", {"launch", "launch.batch", "launch.pool", "launch.resources", "launch.slurm", "launch.task"}),

@@ -1,7 +1,9 @@
 """The triaxial scene and its parts: ``triaxial.py`` (the script YADE runs,
 copied into every run folder), its parameters
 (:mod:`~yade_scripts.scene.parameters`), its grains and bodies
-(:mod:`~yade_scripts.scene.sample`), the wall servo and the loading program
+(:mod:`~yade_scripts.scene.grains`, :mod:`~yade_scripts.scene.sample`), the
+controller its ``PyRunner`` calls every step
+(:mod:`~yade_scripts.scene.controller`), the wall servo and the loading program
 (:mod:`~yade_scripts.scene.servo`, :mod:`~yade_scripts.scene.loading`), the
 time step (:mod:`~yade_scripts.scene.timestep`), the contact laws
 (:mod:`~yade_scripts.scene.tangential`,
