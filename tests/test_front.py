@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from postproc.study.front import (add_errors, analysis_front, cost_model, fit_rigid_quasistatic, fit_table,
-                            monotone, pareto, point_table)
+                                  monotone, pareto, point_table)
 
 
 def test_pareto_and_errors_on_a_known_table():

@@ -15,7 +15,7 @@ from yade_scripts.runs import runlock
 from yade_scripts.launch.pool import Job, hold_runs
 from yade_scripts.runs.runlock import RunBusy, RunLock, holder, inherited, lock_path
 from yade_scripts.runs.runstate import (KILLED, end_attempt, judge, mark_requeued, read_attempts, reclaim_killed,
-                                   start_attempt, state_of, task_requeues)
+                                        start_attempt, state_of, task_requeues)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 

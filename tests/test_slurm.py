@@ -18,7 +18,7 @@ import pytest
 from yade_scripts.campaign.generate import main as generate_main
 from yade_scripts.campaign.presets import resolve
 from yade_scripts.launch.slurm import (COMPACTION_STEPS, CONTACTS_PER_GRAIN, PLACEMENT_FACTOR, SHEAR_STEPS,
-                                US_PER_CONTACT_STEP, estimate, shear_step_factor)
+                                       US_PER_CONTACT_STEP, estimate, shear_step_factor)
 
 #: the reference run's 1/dt over the expected 1/dt of 1000 grains drawn from
 #: the library (its dt 3.953 us, the library's limit 3.276 us = 1/(1.11 x the

@@ -76,8 +76,8 @@ from .. import yadeplugin
 from ..runs import noremote
 from ..runs.runlock import RunBusy, RunLock, describe, lock_path
 from ..runs.runstate import (EXIT_TERM, MAX_RESUMES, DumpUnreadable, RunFiles, Verdict, checkpoint_position, clear_attempt,
-                       dump_condition, end_attempt,
-                       has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
+                             dump_condition, end_attempt,
+                             has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
 from ..scene.parameters import ConfigError
 
 #: a running job is widened only after this many seconds (its SIGTERM

@@ -73,7 +73,7 @@ import sys
 
 from ..runs.runlock import RunBusy, RunLock, describe, lock_path
 from ..runs.runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, SET_ASIDE, DumpUnreadable, complete,
-                       dump_condition, has_checkpoint, mark_requeued, now_utc, set_aside, state_of, task_requeues)
+                             dump_condition, has_checkpoint, mark_requeued, now_utc, set_aside, state_of, task_requeues)
 from ..scene.parameters import ConfigError
 from .batch import dump_of, table_lines
 from .pool import Job, run_pool
