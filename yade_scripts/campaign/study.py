@@ -247,12 +247,12 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     archive : str, optional
         An archive of analysed runs (:mod:`yade_scripts.campaign.archive`): a seed
         whose dump is not complete here and that the archive holds usable
-        (:func:`yade_scripts.campaign.archive.archived`) is not run; its status is
+        (:func:`yade_scripts.campaign.archive_store.archived`) is not run; its status is
         :data:`ARCHIVED`. Each run that completes here is then analysed at
         once, on the first free core (``after_first`` of
         :func:`yade_scripts.launch.pool.run_pool`), and added to the archive.
         An archive holding a run of another analysis version, other
-        parameters or another shape library (:func:`yade_scripts.campaign.archive.conflicts`)
+        parameters or another shape library (:func:`yade_scripts.campaign.archive_store.conflicts`)
         is refused before anything runs: ConfigError naming those runs.
     set_aside : bool, optional
         Rename a run folder of other parameters ``.old-K`` and start it
@@ -382,7 +382,7 @@ def describe_plan(plan):
 def _from_archive(archive, table, dumps, counts):
     """The dumps of the runs of the run folder ``table`` (their
     dumps ``dumps``) that the archive ``archive`` holds usable and whose dump
-    is not complete here (:func:`yade_scripts.campaign.archive.archived`), a set;
+    is not complete here (:func:`yade_scripts.campaign.archive_store.archived`), a set;
     each archived run not usable is named, and runs again."""
     if not archive:
         return set()
@@ -403,7 +403,7 @@ def _from_archive(archive, table, dumps, counts):
 
 def _refusal(archive, clash):
     """The one line of a study refused for the archive's runs ``clash``
-    (:func:`yade_scripts.campaign.archive.conflicts`' lines)."""
+    (:func:`yade_scripts.campaign.archive_store.conflicts`' lines)."""
     names = ", ".join(line.split(" archived but not used")[0] for line in clash[:3])
     return (f"the archive {archive} holds {len(clash)} run(s) of another analysis version, other parameters or "
             f"another shape library ({names}{', ...' if len(clash) > 3 else ''}); nothing run, nothing replaced: "
@@ -412,7 +412,7 @@ def _refusal(archive, clash):
 
 
 def _conflicts(archive, table, counts):
-    """:func:`yade_scripts.campaign.archive.conflicts` for the study's ``counts``
+    """:func:`yade_scripts.campaign.archive_store.conflicts` for the study's ``counts``
     (None: :data:`postproc.study.counts.EXTRA_COUNTS`); [] without an archive."""
     from postproc.study.counts import EXTRA_COUNTS
 
@@ -420,7 +420,7 @@ def _conflicts(archive, table, counts):
 
 
 def _archived(archive, table, counts):
-    """:func:`yade_scripts.campaign.archive.archived` for the study's ``counts``
+    """:func:`yade_scripts.campaign.archive_store.archived` for the study's ``counts``
     (None: :data:`postproc.study.counts.EXTRA_COUNTS`)."""
     from postproc.study.counts import EXTRA_COUNTS
 
@@ -470,7 +470,7 @@ def analyse_one(dump, counts=None, figures=True):
 
 def archive_one(dump, archive):
     """Add the analysed runs of ``dump``'s run folder to the archive
-    ``archive`` (:func:`yade_scripts.campaign.archive.save`), what ``--analyse DUMP
+    ``archive`` (:func:`yade_scripts.campaign.archive_store.save`), what ``--analyse DUMP
     --archive DEST`` does after the analyses; 0, or 1 when ``dump``'s run
     is not in the archive afterwards (the reason printed in one line)."""
     try:
@@ -597,7 +597,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     {(sample, label): [exit code of each attempt]}
     (default: each run's record, :func:`run_exits`) goes into the manifest
     when a run was resumed. A run of status :data:`ARCHIVED` is read from
-    the archive ``archive`` (:func:`yade_scripts.campaign.archive.archived`): its
+    the archive ``archive`` (:func:`yade_scripts.campaign.archive_store.archived`): its
     analyses are not made again, its manifest entry is "ok" with an
     ``archived`` record and a note."""
     lock = report_lock(out)
