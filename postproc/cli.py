@@ -520,11 +520,11 @@ INVESTIGATIONS = (
     Command("commonplane-reference", "the common-plane count with its band measured from the extreme vertex and "
                                      "along the normal", _cpref_arguments, _commonplane_reference),
     Command("facepair-tilt", "the face-pair tilt against the overlap thickness of kernel S1 dumps (python -m "
-                             "yade_scripts.facepair_tilt runs its plan first)", _facepair_arguments, _facepair_tilt),
+                             "yade_scripts.campaign.facepair_sweep runs its plan first)", _facepair_arguments, _facepair_tilt),
     Command("random-types", "the pair types of random contacts between library grains (the geometric chance), "
                             "angular criterion at theta/2, theta, 2 theta", _random_arguments, _random_types),
     Command("timestep-front", "the time step's cost and error, paired by seed, from the runs of the timestep "
-                              "plan (python -m yade_scripts.timestep_front)", _timestep_arguments, _timestep_front),
+                              "plan (python -m yade_scripts.campaign.timestep_sweep)", _timestep_arguments, _timestep_front),
 )
 
 

@@ -184,7 +184,7 @@ def test_claim6_criteria_command(tiny_study, capsys):
 
 
 def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, capsys):
-    """``python -m yade_scripts.study --counts``: each S1 dump analysed once
+    """``python -m yade_scripts.campaign.study --counts``: each S1 dump analysed once
     more per count given (here the 2009 route), the manifest listing them
     and the report reading claim 6 by each; a second pass with one more
     count makes only the missing analysis; the pool's command after a run
@@ -192,7 +192,7 @@ def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, capsys):
     one, is refused in one line before anything runs."""
     import shutil
 
-    from yade_scripts import study as st
+    from yade_scripts.campaign import study as st
 
     out = tmp_path / "study"
     (out / "polyhedra").mkdir(parents=True)

@@ -4,7 +4,7 @@ A figure such as "about 7 minutes", "0.22 core-hours" or "1.7 ms" in README.md, 
 Makefile's comments or a page of docs/ (the dated page docs/measurements.md apart, which *is* the source) must
 be listed in :data:`QUOTES` with where it comes from:
 
-* :class:`Model`: computed here from the cost model (``yade_scripts.slurm.estimate``)
+* :class:`Model`: computed here from the cost model (``yade_scripts.launch.slurm.estimate``)
   or the presets, and equal to the quote at the quote's own precision;
 * :class:`Measured`: a dated record on docs/measurements.md (the anchor text must be
   there, in a section that carries a date), and the measured value(s) typed beside it
@@ -76,8 +76,8 @@ Source = Union[Model, Measured, Setting, External, Transcript, NotADuration]
 
 
 def core_hours(preset, sample, kernel_path="plugin", **overrides):
-    from yade_scripts.presets import resolve
-    from yade_scripts.slurm import estimate
+    from yade_scripts.campaign.presets import resolve
+    from yade_scripts.launch.slurm import estimate
     return estimate(resolve(preset, sample, overrides or None), kernel_path)["core_hours"]
 
 
@@ -86,16 +86,16 @@ def seed_pair(preset):
 
 
 def front_core_hours(plan="default"):
-    from yade_scripts.front import PLANS
-    from yade_scripts.presets import resolve
-    from yade_scripts.slurm import estimate
+    from yade_scripts.campaign.sweeps import PLANS
+    from yade_scripts.campaign.presets import resolve
+    from yade_scripts.launch.slurm import estimate
     p = PLANS[plan]
     return sum(estimate(resolve(p["preset"], sample, {**p.get("common", {}), **overrides}))["core_hours"]
                for sample in ("polyhedra", "spheres") for _, overrides in p[sample])
 
 
 def front_runs(plan="default"):
-    from yade_scripts.front import PLANS
+    from yade_scripts.campaign.sweeps import PLANS
     return sum(len(PLANS[plan][s]) for s in ("polyhedra", "spheres"))
 
 

@@ -65,10 +65,10 @@ def test_the_command_on_a_folder_of_the_plan(tmp_path, monkeypatch, capsys):
 
 
 def test_the_driver_answers_help(capsys):
-    """``python -m yade_scripts.timestep_front`` (runs the plan, then this
+    """``python -m yade_scripts.campaign.timestep_sweep`` (runs the plan, then this
     table) answers --help without running anything."""
-    from yade_scripts import timestep_front
+    from yade_scripts.campaign import timestep_sweep as timestep_front
 
     with pytest.raises(SystemExit) as exc:
         timestep_front.main(["--help"])
-    assert exc.value.code == 0 and "usage: python -m yade_scripts.timestep_front" in capsys.readouterr().out
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.campaign.timestep_sweep" in capsys.readouterr().out

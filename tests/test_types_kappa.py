@@ -81,7 +81,7 @@ def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
     whose triple shares are the two criteria's FF share (the same labels
     as contact-types-kappa's triple), the random contacts' row, the figure;
     the driver that runs the plan first answers --help."""
-    from yade_scripts import facepair_tilt
+    from yade_scripts.campaign import facepair_sweep as facepair_tilt
 
     out = tmp_path / "fp"
     assert main(["investigate", "facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
@@ -96,4 +96,4 @@ def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
     assert (out / "facepair-tilt.png").stat().st_size > 0
     with pytest.raises(SystemExit) as exc:
         facepair_tilt.main(["--help"])
-    assert exc.value.code == 0 and "usage: python -m yade_scripts.facepair_tilt" in capsys.readouterr().out
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.campaign.facepair_sweep" in capsys.readouterr().out

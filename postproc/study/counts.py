@@ -21,7 +21,7 @@ doubled (the ``*_lo``/``*_hi`` columns of
 :func:`postproc.study.claims.band_test` decides the band test.
 
 Outputs go next to the primary analysis: ``<analysis>-<count>/summary.csv``.
-A study can be given other counts (``python -m yade_scripts.study --counts
+A study can be given other counts (``python -m yade_scripts.campaign.study --counts
 lmgc90 lmgc90-2009``, ``make study COUNTS="lmgc90 lmgc90-2009"``,
 :func:`check_counts`); on a finished study only the missing analyses are
 made, and its report then reads claim 6 by each.

@@ -1,6 +1,6 @@
 """The study: run S1 and S2, analyse every dump, write the report.
 
-    python -m yade_scripts.study --preset default --out runs/study [--ensemble N]
+    python -m yade_scripts.campaign.study --preset default --out runs/study [--ensemble N]
 
 One seed (default): each sample gets its run folder (``OUT/polyhedra``,
 ``OUT/spheres``) and both run side by side, YADE's lines relayed with the
@@ -11,8 +11,8 @@ stock contacts (which crashed with several threads), run on one thread. ``--ense
 gets ``OUT/<sample>-ensemble`` with a table of seeds 1..N, and the seeds of
 both samples run in one schedule on ``--jobs`` cores (longest first, no
 core idle at the end; ``OUT/schedule.json`` holds its attempts and idle
-core-time). Both go through :mod:`yade_scripts.pool`, the one loop that
-runs, resumes and records every run (:mod:`yade_scripts.runstate`). Complete
+core-time). Both go through :mod:`yade_scripts.launch.pool`, the one loop that
+runs, resumes and records every run (:mod:`yade_scripts.runs.runstate`). Complete
 dumps are never run again, so a rerun only does what is missing; a folder
 made with other parameters is refused (renamed ``.old-K`` and started
 afresh only with ``--set-aside``). ``--dry-run`` (ensembles) says what a
@@ -42,22 +42,24 @@ import argparse
 import functools
 import json
 import os
-import re
 import shutil
 import sys
 
+from ..launch.batch import dump_of, read_table, table_lines
+from ..launch.pool import Job, run_pool
+from ..launch.resources import check_memory, memory_mb
+from ..launch.slurm import ON_A_NODE, estimate, queue_detail, queue_states
+from ..runs.runlock import RunBusy, RunLock, describe
+from ..runs.runstate import EXIT_BUSY, EXIT_TERM, complete, read_attempts, state_of
+from ..scene.parameters import SAMPLES, changed
+from .archive_store import archived, conflicts, save
 from .generate import DEFAULT_LIBRARY, generate, parse_overrides, write_seed_table
-from .parameters import SAMPLES, changed
 from .presets import ConfigError, resolve
-from .resources import check_memory, memory_mb
-from .runlock import RunBusy, RunLock, describe
-from .runstate import EXIT_BUSY, EXIT_TERM, complete, read_attempts
+from .runfolders import SET_ASIDE, analysis_folder, line_dump, run_folders, whole  # noqa: F401 (names of the study)
 
 
-#: the status of a run taken from an archive of analysed runs (:mod:`yade_scripts.archive`)
+#: the status of a run taken from an archive of analysed runs (:mod:`yade_scripts.campaign.archive`)
 ARCHIVED = "archived"
-#: a run folder set aside because its parameters changed (FOLDER.old-K)
-SET_ASIDE = re.compile(r"\.old-\d+$")
 #: the lock on a folder's manifest and report (:func:`report_lock`)
 REPORT_LOCK = "report.lock"
 #: seconds between two tries of a report lock the study waits for: under
@@ -74,7 +76,7 @@ def finished(folder):
 
 def _set_aside_if_changed(folder, preset, sample, overrides, set_aside=False):
     """A run folder made with other parameters (its params.json against the
-    preset's, :func:`yade_scripts.parameters.changed`) is never reused: with
+    preset's, :func:`yade_scripts.scene.parameters.changed`) is never reused: with
     ``set_aside`` it is renamed FOLDER.old-K, so that the run is generated
     afresh; without, ConfigError (one line naming the folder, the changed
     parameters and the way out), and nothing is renamed."""
@@ -114,14 +116,14 @@ def _need_yade():
 def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, counts=None, figures=True,
                 set_aside=False):
     """Run one seed of each sample side by side: the study of ``python -m
-    yade_scripts.study`` with one seed (``--ensemble 1``).
+    yade_scripts.campaign.study`` with one seed (``--ensemble 1``).
 
     Each sample's run folder ``OUT/<sample>`` is generated when it is not
-    there (:func:`yade_scripts.generate.generate`); one made with other
+    there (:func:`yade_scripts.campaign.generate.generate`); one made with other
     parameters is refused (ConfigError, nothing renamed) or, with
     ``set_aside``, first set aside as ``OUT/<sample>.old-K``; one that
     holds a complete dump and its ``run.info.json`` is not run again. The
-    others run at once through :func:`yade_scripts.pool.run_pool`, each on
+    others run at once through :func:`yade_scripts.launch.pool.run_pool`, each on
     its own threads (polyhedra on the compiled kernel: every core of the
     machine; otherwise one), every scene line relayed with the sample in
     front and kept in the folder's ``yade.log``; a crashed run is resumed
@@ -134,12 +136,12 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     out : str
         The study's folder.
     preset : str
-        A preset of :data:`yade_scripts.presets.PRESETS`.
+        A preset of :data:`yade_scripts.campaign.presets.PRESETS`.
     overrides : dict, optional
         name -> value (or its text), applied to both samples.
     library : str, optional
         The polyhedra's shape library (default
-        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+        :data:`yade_scripts.campaign.generate.DEFAULT_LIBRARY`).
     samples : sequence of str
         The samples to run (default both, S1 and S2).
     counts : sequence of str, optional
@@ -152,13 +154,13 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     -------
     dict
         sample -> status: 0 done (now or already), else the exit code or
-        the reason (:func:`yade_scripts.pool.run_pool`).
+        the reason (:func:`yade_scripts.launch.pool.run_pool`).
 
     Raises
     ------
     ConfigError
         No ``yade`` on the PATH, or invalid parameters.
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another process writes one of the runs; nothing was touched.
 
     Examples
@@ -170,7 +172,7 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
 
     >>> import os, tempfile
     >>> from postproc.schema import DumpWriter
-    >>> from yade_scripts.generate import generate
+    >>> from yade_scripts.campaign.generate import generate
     >>> out = tempfile.mkdtemp()
     >>> _ = generate(os.path.join(out, "spheres"), "tiny", "spheres")
     >>> DumpWriter(os.path.join(out, "spheres", "run.h5"), "spheres", {}).close()
@@ -179,8 +181,6 @@ def run_samples(out, preset, overrides=None, library=None, samples=SAMPLES, coun
     [spheres] already complete in .../spheres, not run again
     {'spheres': 0}
     """
-    from .pool import Job, run_pool
-
     _need_yade()
     jobs = []
     if not set_aside:                  # every sample's folder checked before any is touched
@@ -211,8 +211,8 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     parameters is refused (ConfigError, nothing renamed) or, with
     ``set_aside``, first set aside as ``.old-K``; one with the same
     parameters gets its table written again, for another n). Every seed of
-    every sample is a job of :func:`yade_scripts.pool.run_pool` on ``jobs``
-    cores: longest first by :func:`yade_scripts.slurm.estimate`, the seeds
+    every sample is a job of :func:`yade_scripts.launch.pool.run_pool` on ``jobs``
+    cores: longest first by :func:`yade_scripts.launch.slurm.estimate`, the seeds
     of both samples interleaved, a freed core given to a running polyhedra
     run on the kernel once none waits; complete dumps are not run again,
     and each complete dump is analysed on a free core
@@ -224,14 +224,14 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     out : str
         The study's folder.
     preset : str
-        A preset of :data:`yade_scripts.presets.PRESETS`.
+        A preset of :data:`yade_scripts.campaign.presets.PRESETS`.
     n : int
         Seeds per sample (1..n).
     overrides : dict, optional
         name -> value (or its text), applied to both samples.
     library : str, optional
         The polyhedra's shape library (default
-        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+        :data:`yade_scripts.campaign.generate.DEFAULT_LIBRARY`).
     jobs : int
         Cores of the schedule.
     samples : sequence of str
@@ -245,14 +245,14 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     figures : bool, optional
         Draw the analyses' figures (default; False: numbers only).
     archive : str, optional
-        An archive of analysed runs (:mod:`yade_scripts.archive`): a seed
+        An archive of analysed runs (:mod:`yade_scripts.campaign.archive`): a seed
         whose dump is not complete here and that the archive holds usable
-        (:func:`yade_scripts.archive.archived`) is not run; its status is
+        (:func:`yade_scripts.campaign.archive_store.archived`) is not run; its status is
         :data:`ARCHIVED`. Each run that completes here is then analysed at
         once, on the first free core (``after_first`` of
-        :func:`yade_scripts.pool.run_pool`), and added to the archive.
+        :func:`yade_scripts.launch.pool.run_pool`), and added to the archive.
         An archive holding a run of another analysis version, other
-        parameters or another shape library (:func:`yade_scripts.archive.conflicts`)
+        parameters or another shape library (:func:`yade_scripts.campaign.archive_store.conflicts`)
         is refused before anything runs: ConfigError naming those runs.
     set_aside : bool, optional
         Rename a run folder of other parameters ``.old-K`` and start it
@@ -263,19 +263,15 @@ def run_ensemble(out, preset, n, overrides=None, library=None, jobs=2, samples=S
     dict
         sample -> [(label "seed K", dump path, status)], status 0 complete,
         :data:`ARCHIVED` taken from the archive, else the exit code or the
-        reason (:func:`yade_scripts.pool.run_pool`).
+        reason (:func:`yade_scripts.launch.pool.run_pool`).
 
     Raises
     ------
     ConfigError
         No ``yade`` on the PATH, or invalid parameters.
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another process writes one of the runs; nothing was touched.
     """
-    from .batch import dump_of, read_table
-    from .pool import Job, run_pool
-    from .slurm import estimate
-
     pool, rows, kept, clash = [], {}, set(), []
     if not set_aside:                  # every sample's folder checked before any is touched
         for s in samples:
@@ -343,8 +339,6 @@ def plan_ensemble(out, preset, n, overrides=None, library=None, samples=SAMPLES,
     """
     import tempfile
 
-    from .batch import dump_of, read_table
-
     plan = {}
     with tempfile.TemporaryDirectory(prefix="study-dry-run-") as tmp:
         for s in samples:
@@ -388,7 +382,7 @@ def describe_plan(plan):
 def _from_archive(archive, table, dumps, counts):
     """The dumps of the runs of the run folder ``table`` (their
     dumps ``dumps``) that the archive ``archive`` holds usable and whose dump
-    is not complete here (:func:`yade_scripts.archive.archived`), a set;
+    is not complete here (:func:`yade_scripts.campaign.archive_store.archived`), a set;
     each archived run not usable is named, and runs again."""
     if not archive:
         return set()
@@ -409,54 +403,42 @@ def _from_archive(archive, table, dumps, counts):
 
 def _refusal(archive, clash):
     """The one line of a study refused for the archive's runs ``clash``
-    (:func:`yade_scripts.archive.conflicts`' lines)."""
+    (:func:`yade_scripts.campaign.archive_store.conflicts`' lines)."""
     names = ", ".join(line.split(" archived but not used")[0] for line in clash[:3])
     return (f"the archive {archive} holds {len(clash)} run(s) of another analysis version, other parameters or "
             f"another shape library ({names}{', ...' if len(clash) > 3 else ''}); nothing run, nothing replaced: "
             "name a new archive (ARCHIVE=NEW_DIR), or read this one with the code that made it "
-            "(python -m yade_scripts.archive collect-at-commit ARCHIVE OUT, docs/study.md)")
+            "(python -m yade_scripts.campaign.archive collect-at-commit ARCHIVE OUT, docs/study.md)")
 
 
 def _conflicts(archive, table, counts):
-    """:func:`yade_scripts.archive.conflicts` for the study's ``counts``
+    """:func:`yade_scripts.campaign.archive_store.conflicts` for the study's ``counts``
     (None: :data:`postproc.study.counts.EXTRA_COUNTS`); [] without an archive."""
     from postproc.study.counts import EXTRA_COUNTS
-
-    from .archive import conflicts
 
     return conflicts(archive, table, counts=EXTRA_COUNTS if counts is None else counts) if archive else []
 
 
 def _archived(archive, table, counts):
-    """:func:`yade_scripts.archive.archived` for the study's ``counts``
+    """:func:`yade_scripts.campaign.archive_store.archived` for the study's ``counts``
     (None: :data:`postproc.study.counts.EXTRA_COUNTS`)."""
     from postproc.study.counts import EXTRA_COUNTS
-
-    from .archive import archived
 
     return archived(archive, table, counts=EXTRA_COUNTS if counts is None else counts)
 
 
-def analysis_folder(dump):
-    """The analysis folder of a run's dump: ``analysis/`` beside ``run.h5``,
-    else ``analysis-<stem>/`` beside ``<stem>.h5``."""
-    stem = os.path.splitext(dump)[0]
-    name = "analysis" if os.path.basename(stem) == "run" else "analysis-" + os.path.basename(stem)
-    return os.path.join(os.path.dirname(dump), name)
-
-
 def analyse_after(job, counts=None, figures=True, archive=None):
-    """The pool's work after a complete run (:func:`yade_scripts.pool.run_pool`'s
-    ``after``): ``python -m yade_scripts.study --analyse DUMP [--counts
+    """The pool's work after a complete run (:func:`yade_scripts.launch.pool.run_pool`'s
+    ``after``): ``python -m yade_scripts.campaign.study --analyse DUMP [--counts
     ...]``, the analyses the study makes of it, done while other runs still
     go; the study's own pass then keeps them (:func:`analyse_dump`).
     ``counts``: the other contact counts (default
     :data:`postproc.study.counts.EXTRA_COUNTS`; an empty sequence: none);
     ``figures=False``: ``--no-figures``; ``archive``: ``--archive DEST``,
-    the run then kept in that archive (:mod:`yade_scripts.archive`)."""
+    the run then kept in that archive (:mod:`yade_scripts.campaign.archive`)."""
     more = (([] if counts is None else ["--counts", *counts]) + ([] if figures else ["--no-figures"])
             + ([] if archive is None else ["--archive", os.path.abspath(archive)]))
-    return [sys.executable, "-m", "yade_scripts.study", "--analyse", os.path.abspath(job.dump), *more]
+    return [sys.executable, "-m", "yade_scripts.campaign.study", "--analyse", os.path.abspath(job.dump), *more]
 
 
 def analyse_one(dump, counts=None, figures=True):
@@ -488,11 +470,9 @@ def analyse_one(dump, counts=None, figures=True):
 
 def archive_one(dump, archive):
     """Add the analysed runs of ``dump``'s run folder to the archive
-    ``archive`` (:func:`yade_scripts.archive.save`), what ``--analyse DUMP
+    ``archive`` (:func:`yade_scripts.campaign.archive_store.save`), what ``--analyse DUMP
     --archive DEST`` does after the analyses; 0, or 1 when ``dump``'s run
     is not in the archive afterwards (the reason printed in one line)."""
-    from .archive import save
-
     try:
         saved, skipped = save(os.path.dirname(os.path.abspath(dump)), archive,
                               echo=lambda m: print(m, flush=True))
@@ -508,23 +488,9 @@ def archive_one(dump, archive):
 
 def run_exits(dump):
     """The exit codes of the recorded attempts of the run writing ``dump``
-    (:func:`yade_scripts.runstate.read_attempts`), stops asked for left
+    (:func:`yade_scripts.runs.runstate.read_attempts`), stops asked for left
     out; [] when none is recorded."""
     return [a.get("exit") for a in read_attempts(dump) if not a.get("requested")]
-
-
-def whole(dump):
-    """None when the complete dump ``dump`` adds up (every snapshot it says
-    it has, each matching what was recorded when it was written:
-    :meth:`postproc.schema.DumpReader.verify`), else the one line why."""
-    from postproc.schema import DumpFormatError, DumpReader
-
-    try:
-        with DumpReader(dump) as r:
-            r.verify()
-    except DumpFormatError as exc:
-        return str(exc)
-    return None
 
 
 def analyse_dump(dump, analysis, errors=True, figures=True):
@@ -591,7 +557,7 @@ def report_lock(out, wait=False):
     out : str
         The study or run folder.
     wait : bool, optional
-        False (default): raise :class:`yade_scripts.runlock.RunBusy`
+        False (default): raise :class:`yade_scripts.runs.runlock.RunBusy`
         (one line, naming the holder) when another process holds it;
         True: wait for it, saying so once (a study that has run for
         hours does not give up its report for a ``--collect``).
@@ -613,7 +579,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     """Analyse every dump of ``runs`` = {sample: [(label, dump, status)]},
     write OUT/manifest.json and the report; returns the list of failures.
     Holds OUT's report lock (:func:`report_lock`) meanwhile, or raises
-    :class:`yade_scripts.runlock.RunBusy` before analysing or writing
+    :class:`yade_scripts.runs.runlock.RunBusy` before analysing or writing
     anything when another process holds it (its callers, the study's end
     and ``--collect``, take it first, over a wider span).
     Each usable S1 dump is also analysed with the other contact counts
@@ -631,7 +597,7 @@ def analyse_and_report(out, runs, attempts=None, unfinished=None, counts=None, f
     {(sample, label): [exit code of each attempt]}
     (default: each run's record, :func:`run_exits`) goes into the manifest
     when a run was resumed. A run of status :data:`ARCHIVED` is read from
-    the archive ``archive`` (:func:`yade_scripts.archive.archived`): its
+    the archive ``archive`` (:func:`yade_scripts.campaign.archive_store.archived`): its
     analyses are not made again, its manifest entry is "ok" with an
     ``archived`` record and a note."""
     lock = report_lock(out)
@@ -737,20 +703,10 @@ def unusable_samples(out):
     return [s for s, rs in manifest.items() if not any(r["status"] in ("ok", "partial") for r in rs)]
 
 
-def run_folders(folder):
-    """The generated run folders (with a ``table.txt``): ``folder`` itself,
-    else those one level below it but for the ones set aside
-    (:data:`SET_ASIDE`); [] when there are none."""
-    if os.path.exists(os.path.join(folder, "table.txt")):
-        return [folder]
-    return sorted(os.path.join(folder, d) for d in os.listdir(folder)
-                  if os.path.exists(os.path.join(folder, d, "table.txt")) and not SET_ASIDE.search(d))
-
-
 def collect(folder, counts=None, figures=True, archive=None):
     """Analyse and report whatever has finished in the generated run folders
     at or below ``folder``, and say what every other line is: ``python -m
-    yade_scripts.study --collect DIR``, e.g. after a SLURM array.
+    yade_scripts.campaign.study --collect DIR``, e.g. after a SLURM array.
 
     The run folders are ``folder`` itself or those one level below it,
     each with a ``table.txt`` (but for the folders set aside as
@@ -759,11 +715,11 @@ def collect(folder, counts=None, figures=True, archive=None):
     to the table, as the study and sweeps do. A line that is not finished
     is named with its state: pending or running in SLURM (``squeue`` of
     the jobs recorded for the folder,
-    :func:`yade_scripts.slurm.queue_states`), running (a process holds its
-    lock, :mod:`yade_scripts.runlock`: a task, a study or a scene, on any
+    :func:`yade_scripts.launch.slurm.queue_states`), running (a process holds its
+    lock, :mod:`yade_scripts.runs.runlock`: a task, a study or a scene, on any
     node that shares the folder), resumable at step N, failed (why),
     unfinished, not started, an invalid line
-    (:func:`yade_scripts.batch.table_lines`: named, never blocking the
+    (:func:`yade_scripts.launch.batch.table_lines`: named, never blocking the
     other lines or arrays), or a complete dump that does not add up
     (refused, never analysed). Pending and running lines are never in the
     resubmit command. Writes ``FOLDER/manifest.json`` (every line of every
@@ -781,7 +737,7 @@ def collect(folder, counts=None, figures=True, archive=None):
         Draw the analyses' and the report's figures (default; False:
         numbers only).
     archive : str, optional
-        An archive of analysed runs (:mod:`yade_scripts.archive`): a line
+        An archive of analysed runs (:mod:`yade_scripts.campaign.archive`): a line
         whose dump is not complete here and that the archive holds usable
         is taken from it, not listed as unfinished.
 
@@ -797,7 +753,7 @@ def collect(folder, counts=None, figures=True, archive=None):
     resubmit : dict
         table folder -> the command that runs its unfinished lines again
         (``sbatch --array=...`` where the folder has a ``slurm.sh``, else
-        ``python -m yade_scripts.batch ... --only ...``).
+        ``python -m yade_scripts.launch.batch ... --only ...``).
 
     Raises
     ------
@@ -811,7 +767,7 @@ def collect(folder, counts=None, figures=True, archive=None):
     Examples
     --------
     >>> import os, tempfile
-    >>> from yade_scripts.generate import generate
+    >>> from yade_scripts.campaign.generate import generate
     >>> out = os.path.join(tempfile.mkdtemp(), "t1")
     >>> _ = generate(out, "tiny", "spheres", seeds=[1])
     >>> runs, pending, failed, resubmit = collect(out)
@@ -819,7 +775,7 @@ def collect(folder, counts=None, figures=True, archive=None):
     >>> runs, pending, failed
     ({}, ['spheres-seed1 (not started)'], [])
     >>> resubmit[out]
-    'python -m yade_scripts.batch .../t1 --only spheres-seed1'
+    'python -m yade_scripts.launch.batch .../t1 --only spheres-seed1'
     >>> sorted(os.listdir(out))
     ['manifest.json', 'params.json', 'pkg', 'report', 'report.lock', 'table.txt', 'triaxial.py']
     """
@@ -837,11 +793,6 @@ def collect(folder, counts=None, figures=True, archive=None):
 
 def _collect(folder, tables, counts, figures, archive):
     """:func:`collect`'s work on its run folders ``tables``, the report lock held."""
-    from .archive import line_dump
-    from .batch import table_lines
-    from .runstate import state_of
-    from .slurm import ON_A_NODE, queue_detail, queue_states
-
     runs, others, pending, resubmit = {}, {}, [], {}
     for t in tables:
         prefix = f"{os.path.basename(t)} " if len(tables) > 1 else ""
@@ -894,7 +845,7 @@ def _collect(folder, tables, counts, figures, archive):
         def command(ls):
             if os.path.exists(slurm_sh):
                 return f"sbatch --array={','.join(str(x.task) for x in ls)} {slurm_sh}"
-            return f"python -m yade_scripts.batch {os.path.abspath(t)} --only {' '.join(x.description for x in ls)}"
+            return f"python -m yade_scripts.launch.batch {os.path.abspath(t)} --only {' '.join(x.description for x in ls)}"
 
         if todo:
             resubmit[t] = command(todo)
@@ -926,11 +877,11 @@ def _collect(folder, tables, counts, figures, archive):
 
 
 def main(argv=None):
-    """``python -m yade_scripts.study``: the study (:func:`run_samples` or
+    """``python -m yade_scripts.campaign.study``: the study (:func:`run_samples` or
     :func:`run_ensemble`, then :func:`analyse_and_report`), ``--collect
     DIR`` (:func:`collect`) or ``--analyse DUMP`` (:func:`analyse_one`).
     The options and the memory the runs need at once
-    (:func:`yade_scripts.resources.check_memory`) are checked before the
+    (:func:`yade_scripts.launch.resources.check_memory`) are checked before the
     folder is made; the study then holds its folder's lock
     (``OUT/study.lock``).
 
@@ -949,7 +900,7 @@ def main(argv=None):
         its manifest and report; 75 stopped (SIGTERM,
         Ctrl-C: run the same command again to resume).
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.study", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.study", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
     ap.add_argument("--out", help="study folder (required unless --collect)")
     ap.add_argument("--collect", metavar="DIR",
@@ -970,7 +921,7 @@ def main(argv=None):
                          "each S1 dump analysed once more per count: default lmgc90; e.g. --counts lmgc90 "
                          "lmgc90-2009; none: --counts with nothing after it")
     ap.add_argument("--archive", metavar="DEST",
-                    help="an archive of analysed runs (python -m yade_scripts.archive STUDY DEST): seeds it "
+                    help="an archive of analysed runs (python -m yade_scripts.campaign.archive STUDY DEST): seeds it "
                          "holds are not run, their archived analyses are used (ensembles and --collect)")
     ap.add_argument("--set-aside", action="store_true",
                     help="rename a run folder of other parameters FOLDER.old-K and start it afresh "
@@ -992,7 +943,7 @@ def main(argv=None):
             return 2
     if args.archive and not os.path.isdir(args.archive):
         print(f"study: error: --archive {args.archive}: no such folder (make it, empty, to start an archive; "
-              f"python -m yade_scripts.archive STUDY DEST adds a study's analysed runs to one)", file=sys.stderr)
+              f"python -m yade_scripts.campaign.archive STUDY DEST adds a study's analysed runs to one)", file=sys.stderr)
         return 2
     if args.archive and not (args.collect or args.analyse) and args.ensemble < 2:
         print("study: error: --archive reads the seeds of an ensemble (--ensemble N >= 2) or a --collect",

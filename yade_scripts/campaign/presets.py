@@ -38,7 +38,7 @@
              their taller box): the large end of the size
              front, e.g. ``make study PRESET=intermediate`` (3 + 3 seeds on
              2 cores) or ``ENSEMBLE=16 JOBS=16`` on one 16-core node
-             (yade_scripts.slurm.estimate gives the core-hours).
+             (yade_scripts.launch.slurm.estimate gives the core-hours).
 ``paper``    the published samples (36 933 polyhedra, 19 998 spheres) at
              kappa = 1e4, I = 1e-3, I_c = 1e-2, prepared like the default
              (polyhedra compacted at 0.5, spheres frictionless, with the
@@ -47,13 +47,13 @@
              default, for a cluster (a SLURM array: generate --slurm); not
              run here.
 
-Every key is a parameter of :mod:`yade_scripts.parameters` (names, types,
+Every key is a parameter of :mod:`yade_scripts.scene.parameters` (names, types,
 ranges, units, defaults); a preset lists only what it changes from the
 defaults, which are the default preset's polyhedra sample.
 """
 from __future__ import annotations
 
-from .parameters import SAMPLES, ConfigError, check
+from ..scene.parameters import SAMPLES, ConfigError, check
 
 # What a sample changes from the parameter table's defaults (those of the
 # default preset's polyhedra) before any preset: the spheres step at 0.3 of
@@ -139,9 +139,9 @@ def resolve(preset, sample, overrides=None):
     Returns
     -------
     dict
-        Every scene parameter (:mod:`yade_scripts.parameters`), checked by
+        Every scene parameter (:mod:`yade_scripts.scene.parameters`), checked by
         name, type and range; raises
-        :class:`~yade_scripts.parameters.ConfigError` (one line) otherwise.
+        :class:`~yade_scripts.scene.parameters.ConfigError` (one line) otherwise.
 
     Examples
     --------
@@ -151,7 +151,7 @@ def resolve(preset, sample, overrides=None):
     >>> resolve("default", "cubes")
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: sample must be one of ('polyhedra', 'spheres'), got 'cubes'
+    yade_scripts.scene.parameters.ConfigError: sample must be one of ('polyhedra', 'spheres'), got 'cubes'
     """
     if preset not in PRESETS:
         raise ConfigError(f"unknown preset {preset!r}; choose one of {sorted(PRESETS)}")

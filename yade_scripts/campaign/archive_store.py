@@ -1,59 +1,30 @@
-"""A study's analysed runs kept without their dumps, to carry a long study from host to host.
+"""The archive's records: a study's analysed runs kept without their dumps
+(what they are and how ``make study ARCHIVE=DEST`` reads them:
+:mod:`yade_scripts.campaign.archive`, the command).
 
-    python -m yade_scripts.archive STUDY DEST
-    python -m yade_scripts.archive collect DEST OUT [--library LIB]
-    python -m yade_scripts.archive collect-at-commit DEST OUT
-
-A 5000-grain study runs for many hours, longer than a host may be kept: a
-new host starts with none of the old one's run folders. The archive keeps,
-of every run of STUDY that is complete, adds up and is analysed under
-today's analysis version (:data:`postproc.provenance.ANALYSIS_VERSION`),
-what the report reads (the analysis folders' numbers: ``*.csv``,
-``*.json``, ``*.txt``; no figures, no dump) and its record
-``<stem>.archived.json``: the dump's name, size, snapshot count and SHA-256,
-the analysis version and, as provenance, the analysis code's hash
-(:func:`postproc.provenance.code_hash`), the
-SHA-256 of every file kept, and when. DEST mirrors STUDY's run folders
-(``DEST/<run folder>/``, each with ``archive.json``: its parameters and a
-fingerprint of its shape library's content), so it is small (about 0.4 MB
-a 5000-grain S1 seed) and can be committed.
-
-``make study ... ARCHIVE=DEST`` (``python -m yade_scripts.study --archive
-DEST``) then runs only the seeds DEST does not hold: an archived seed is
-used as it is (:func:`archived`) when its run folder has the same
-parameters and shape library, its files are those recorded and its
-analysis version is today's (:func:`postproc.provenance.version_of`: a
-record older than the version reads its code hash through
-:data:`postproc.provenance.HISTORICAL_CODE_VERSIONS`), and it is never
-run again, so no seed is counted twice. An archived record is never
-deleted or replaced by another version's: a study that meets one of
-another version, other parameters or another shape library refuses before
-it runs anything (:func:`conflicts`); write to a new archive, or read the
-old one with the code that made it. A record of the same version whose
-files are damaged is named and its seed runs again. A seed whose complete dump is on this host is analysed from it,
-as always. ``--collect DIR --archive DEST`` reads it the same way. ``collect DEST OUT`` generates the study's run folders in
-OUT from the archive's records (:func:`study_folders`) and collects them
-with the archive, on a host that has none of them; ``collect-at-commit``
-does it with the code of the commit that made the archive
-(:mod:`yade_scripts.archive_commit`), for an archive of another analysis
-version. Runs
-carried over this way come from other hosts: each repeats step for step
-only on its own host's CPU (docs/measurements.md, "Preparation"), and the
-statistics over seeds are what they share.
+:func:`save` adds a study's complete, analysed runs to an archive;
+:func:`archived` and :func:`conflicts` judge an archive's records against a
+run folder for the study (which seeds it holds, which refuse);
+:func:`study_folders` generates a study's run folders from the records;
+:func:`library_fingerprint` names a shape library by its content.
 """
 from __future__ import annotations
 
-import argparse
 import datetime
 import hashlib
 import json
 import os
 import shutil
-import sys
 
 from postproc.staging import staging_dir
 
-from .parameters import ConfigError
+from ..launch.batch import table_lines
+from ..runs.runlock import RunLock, describe
+from ..runs.runstate import complete
+from ..scene.parameters import ConfigError
+from .generate import DEFAULT_LIBRARY, generate
+from .presets import resolve
+from .runfolders import analysis_folder, line_dump, run_folders, whole
 
 #: the analysis files kept: the numbers the report reads, not the figures
 KEPT_SUFFIXES = (".csv", ".json", ".txt")
@@ -94,37 +65,9 @@ def sha256_of(path, chunk=1 << 22):
     return h.hexdigest()
 
 
-def line_dump(table, line):
-    """The dump of run line ``line`` of the run folder ``table``: in the
-    line's own folder ``<description>/`` when there is one (a SLURM array
-    task's), else next to the table.
-
-    Parameters
-    ----------
-    table : str
-        The generated run folder (its ``table.txt``).
-    line : yade_scripts.batch.TableLine
-        A run line of its table.
-
-    Returns
-    -------
-    str
-        The dump's path (:func:`yade_scripts.batch.dump_of`, moved into
-        ``table/<description>/`` when that folder exists); it may not
-        exist.
-    """
-    from .batch import dump_of
-
-    own = os.path.join(table, line.description)
-    return (os.path.join(own, os.path.basename(dump_of(table, line.row))) if os.path.isdir(own)
-            else dump_of(table, line.row))
-
-
 def _analysis_folders(dump):
     """{name: folder} of a dump's analyses: "" its primary one, COUNT its
     analysis with that contact count (:func:`postproc.study.counts.count_folder`)."""
-    from .study import analysis_folder
-
     primary = analysis_folder(dump)
     out = {"": primary}
     parent, base = os.path.split(primary)
@@ -258,8 +201,6 @@ def save(study, dest, echo=print):
         ``study`` holds no run folder, or one of its run folders is
         archived in ``dest`` with other parameters or another shape library.
     """
-    from .study import run_folders
-
     if not os.path.isdir(study) or not run_folders(study):
         raise ConfigError(f"{study}: no generated run folder (table.txt) in it or one level below")
     os.makedirs(dest, exist_ok=True)
@@ -272,8 +213,6 @@ def save(study, dest, echo=print):
 
 def _lock(dest, echo):
     """The archive's lock (:data:`LOCK`), held; waits for another holder."""
-    from .runlock import RunLock, describe
-
     lock = RunLock(os.path.join(dest, LOCK), "archive", subject=f"the archive {dest}")
     return lock.acquire_waiting(LOCK_WAIT_SECONDS, lambda holder: echo(
         f"[archive] waiting for {describe(holder)} to finish adding to {dest}"))
@@ -283,10 +222,6 @@ def _save(study, dest, echo):
     """:func:`save`'s work, the archive's lock held."""
     from postproc.provenance import ANALYSIS_VERSION, code_hash, is_today
     from postproc.schema import DumpReader
-
-    from .batch import table_lines
-    from .runstate import complete
-    from .study import run_folders, whole
 
     saved, skipped = [], []
     for table in run_folders(study):
@@ -509,7 +444,7 @@ def study_folders(dest, out, library=None):
     """Generate in ``out`` the run folders of the archive ``dest``'s study,
     as the study made them (each archived folder's preset, sample, other
     parameters and seeds, from its ``archive.json`` and run records), so
-    that ``python -m yade_scripts.study --collect OUT --archive DEST``
+    that ``python -m yade_scripts.campaign.study --collect OUT --archive DEST``
     reads the archive on a host that has none of the study's folders.
 
     Parameters
@@ -520,7 +455,7 @@ def study_folders(dest, out, library=None):
         The study folder to make (it must not hold these run folders yet).
     library : str, optional
         The polyhedra's shape library (default
-        :data:`yade_scripts.generate.DEFAULT_LIBRARY`, ``make shapes``); its
+        :data:`yade_scripts.campaign.generate.DEFAULT_LIBRARY`, ``make shapes``); its
         content must be the archived one's (:func:`library_fingerprint`).
 
     Returns
@@ -535,9 +470,6 @@ def study_folders(dest, out, library=None):
         be read, or a generated folder's parameters or shape library differ
         from the archived ones (named; nothing else is checked then).
     """
-    from .generate import DEFAULT_LIBRARY, generate
-    from .presets import resolve
-
     names = sorted(n for n in os.listdir(dest) if os.path.isfile(os.path.join(dest, n, FOLDER_RECORD))) \
         if os.path.isdir(dest) else []
     if not names:
@@ -610,75 +542,3 @@ def _write_json(path, data):
         json.dump(data, fh, indent=1, sort_keys=True)
         fh.write("\n")
     os.replace(tmp, path)
-
-
-def main(argv=None):
-    """``python -m yade_scripts.archive STUDY DEST``: :func:`save`; exit 0
-    when it ran (each run kept or skipped is named), 2 for a bad STUDY or
-    DEST (one line).
-
-    Parameters
-    ----------
-    argv : list of str, optional
-        The command line's arguments (default: ``sys.argv[1:]``).
-
-    Returns
-    -------
-    int
-        The exit code: 0 when :func:`save` ran (each run skipped on
-        stdout, the count on stderr); 2 when it refused (ConfigError) or a
-        file could not be read or written (OSError), one line on stderr.
-        (A bad command line exits 2 through argparse.)
-    """
-    argv = sys.argv[1:] if argv is None else list(argv)
-    if argv[:1] in (["collect"], ["collect-at-commit"]):
-        return _collect_main(argv)
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.archive", description=__doc__.splitlines()[0])
-    ap.add_argument("study", help="the study folder (or one generated run folder)")
-    ap.add_argument("dest", help="the archive's folder, e.g. reference_data/<study name>")
-    args = ap.parse_args(argv)
-    try:
-        saved, skipped = save(args.study, args.dest)
-    except (ConfigError, OSError) as exc:
-        print(f"archive: error: {exc}", file=sys.stderr)
-        return 2
-    for line in skipped:
-        print(f"[archive] {line}", flush=True)
-    print(f"archive: {len(saved)} run(s) added to {args.dest}, {len(skipped)} not", file=sys.stderr)
-    return 0
-
-
-def _collect_main(argv):
-    """``collect ARCHIVE OUT [--library LIB]``: the archive's study folders
-    (:func:`study_folders`) collected with today's code; ``collect-at-commit
-    ARCHIVE OUT``: with the code of the commit that made the archive
-    (:mod:`yade_scripts.archive_commit`). Exit 0, 2 with one line when
-    refused, else the collect's exit code."""
-    ap = argparse.ArgumentParser(prog=f"python -m yade_scripts.archive {argv[0]}")
-    ap.add_argument("archive")
-    ap.add_argument("out", help="a new folder")
-    if argv[0] == "collect":
-        ap.add_argument("--library", help="the shape library the study ran on (default runs/shapes/library.h5)")
-    args = ap.parse_args(argv[1:])
-    try:
-        if argv[0] == "collect-at-commit":
-            from .archive_commit import collect_at_commit
-
-            collect_at_commit(args.archive, args.out)
-            return 0
-        if os.path.exists(args.out) and os.listdir(args.out):
-            raise ConfigError(f"{args.out}: exists and is not empty; give a new folder")
-        study_folders(args.archive, args.out, args.library)
-    except (ConfigError, OSError) as exc:
-        print(f"archive: error: {exc}", file=sys.stderr)
-        return 2
-    from .study import main as study_main
-
-    counts = sorted({c for n in os.listdir(args.archive) if os.path.isdir(os.path.join(args.archive, n))
-                     for f in os.listdir(os.path.join(args.archive, n)) if f.endswith(RUN_RECORD)
-                     for c in (_read_json(os.path.join(args.archive, n, f)) or {}).get("counts", [])})
-    return study_main(["--collect", args.out, "--archive", args.archive, "--no-figures", "--counts", *counts])
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,6 +1,6 @@
-"""Generate a run folder: ``python -m yade_scripts.generate``.
+"""Generate a run folder: ``python -m yade_scripts.campaign.generate``.
 
-    python -m yade_scripts.generate --preset tiny --sample polyhedra --out runs/t1 \
+    python -m yade_scripts.campaign.generate --preset tiny --sample polyhedra --out runs/t1 \
         [--set kappa=3000 --set seed=4] [--seeds 1 2 3] [--library LIB.h5]
 
 The folder holds everything the run needs, so it can be moved or rerun:
@@ -13,10 +13,10 @@ The folder holds everything the run needs, so it can be moved or rerun:
     table.txt     a yade-batch table (one line per seed, or the one run)
 
 Run it with ``cd FOLDER && yade -x triaxial.py`` or, every line of the
-table, ``python -m yade_scripts.batch FOLDER --jobs 2`` (or
+table, ``python -m yade_scripts.launch.batch FOLDER --jobs 2`` (or
 ``yade-batch -j 2 table.txt triaxial.py``). With ``--slurm`` also
 ``slurm.sh``, a SLURM job array with one task per table line
-(:mod:`yade_scripts.slurm`): ``sbatch FOLDER/slurm.sh`` from any folder.
+(:mod:`yade_scripts.launch.slurm`): ``sbatch FOLDER/slurm.sh`` from any folder.
 """
 from __future__ import annotations
 
@@ -26,12 +26,16 @@ import os
 import shutil
 import sys
 
-from . import slurm, yadeplugin
-from .parameters import SAMPLES, ConfigError, scene_with_block
+from .. import yadeplugin
+from ..launch import slurm
+from ..launch.batch import read_table
+from ..scene.parameters import SAMPLES, ConfigError, scene_with_block
 from .presets import resolve
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+ROOT = os.path.dirname(os.path.dirname(HERE))
+#: the scene's template, copied into every run folder as ``triaxial.py``
+SCENE = os.path.join(ROOT, "yade_scripts", "scene", "triaxial.py")
 #: the packages a run folder gets a copy of, under their own names, in its
 #: ``pkg/`` (the scene puts ``pkg/`` first on its sys.path): the scene's own
 #: modules, the shapes and the contact kernel (its C source included), the
@@ -42,8 +46,8 @@ DEFAULT_LIBRARY = os.path.join(ROOT, "runs", "shapes", "library.h5")
 
 def render_scene(params):
     """triaxial.py with its parameter block set to the checked ``params``
-    (:func:`yade_scripts.parameters.render_block`)."""
-    with open(os.path.join(HERE, "triaxial.py")) as fh:
+    (:func:`yade_scripts.scene.parameters.render_block`)."""
+    with open(SCENE) as fh:
         return scene_with_block(fh.read(), params)
 
 
@@ -59,7 +63,7 @@ def parse_overrides(items):
     -------
     dict
         name -> value text, both stripped; the values are checked later
-        (:func:`yade_scripts.parameters.coerce`).
+        (:func:`yade_scripts.scene.parameters.coerce`).
 
     Raises
     ------
@@ -93,7 +97,7 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
     polyhedra, the shape library under the name of the ``library``
     parameter (``shapes.h5``). Nothing is run: ``cd out && yade -x
     triaxial.py`` runs the scene's own parameters,
-    ``python -m yade_scripts.batch out`` every line of the table.
+    ``python -m yade_scripts.launch.batch out`` every line of the table.
 
     Parameters
     ----------
@@ -101,13 +105,13 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
         The folder to make (its parents too); it must not hold a
         ``triaxial.py`` already.
     preset : str
-        A preset of :data:`yade_scripts.presets.PRESETS` ("tiny", "default"
+        A preset of :data:`yade_scripts.campaign.presets.PRESETS` ("tiny", "default"
         ...).
     sample : {"polyhedra", "spheres"}
         S1 or S2.
     overrides : dict, optional
         name -> value (or its text, as ``--set`` gives it), applied last
-        (:func:`yade_scripts.presets.resolve`).
+        (:func:`yade_scripts.campaign.presets.resolve`).
     seeds : list of int, optional
         One table line per seed (default: the resolved ``seed``, 1 unless
         overridden).
@@ -147,7 +151,7 @@ def generate(out, preset, sample, overrides=None, seeds=None, library=None):
     >>> generate(out, "tiny", "spheres")
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: .../t1 already holds a run; choose another --out
+    yade_scripts.scene.parameters.ConfigError: .../t1 already holds a run; choose another --out
     """
     params = resolve(preset, sample, overrides)
     if os.path.exists(os.path.join(out, "triaxial.py")):
@@ -191,9 +195,9 @@ def write_seed_table(out, sample, seeds):
 
 
 def main(argv=None):
-    """``python -m yade_scripts.generate``: make a run folder
+    """``python -m yade_scripts.campaign.generate``: make a run folder
     (:func:`generate`) and, with ``--slurm``, its SLURM array script
-    (:func:`yade_scripts.slurm.write_slurm`); prints how to run it.
+    (:func:`yade_scripts.launch.slurm.write_slurm`); prints how to run it.
 
     Parameters
     ----------
@@ -205,7 +209,7 @@ def main(argv=None):
     int
         The exit code: 0 made, 2 refused (one line on stderr).
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.generate", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.generate", description=__doc__.splitlines()[0])
     ap.add_argument("--preset", default="default")
     ap.add_argument("--sample", required=True, choices=SAMPLES)
     ap.add_argument("--out", required=True)
@@ -221,8 +225,6 @@ def main(argv=None):
             slurm.check_options(**slurm.options_of(args))
         p = generate(args.out, args.preset, args.sample, parse_overrides(args.set), args.seeds, args.library)
         if args.slurm:
-            from .batch import read_table
-
             script = slurm.write_slurm(args.out, **slurm.options_of(args))
             print(f"generate: {script}: {len(read_table(args.out))} array task(s), about "
                   f"{slurm.estimate(p)['core_hours']:.3g} core-hours each; submit from any folder with: "

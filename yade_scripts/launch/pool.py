@@ -7,20 +7,20 @@ A job is one run (:class:`Job`): a line of a generated run folder's
 ``table.txt`` (``YADE_BATCH=table.txt:LINE yade -jT -n -x triaxial.py``, as
 yade-batch runs it) or the folder's own scene (``line=None``). Every way of
 running runs goes through here: the study's single seeds
-(:func:`yade_scripts.study.run_samples`) and ensembles, sweeps
-(:func:`yade_scripts.batch.run_batch`) and SLURM array tasks
-(:mod:`yade_scripts.task`).
+(:func:`yade_scripts.campaign.study.run_samples`) and ensembles, sweeps
+(:func:`yade_scripts.launch.batch.run_batch`) and SLURM array tasks
+(:mod:`yade_scripts.launch.task`).
 
 * **Every attempt kept.** Each attempt appends to the job's log (a header
   line ``==== attempt K ...`` first) and to the run's record
   ``STEM.attempts.json`` (start, end, threads, exit, what the rule made of
-  it; :mod:`yade_scripts.runstate`).
-* **One rule after each attempt** (:func:`yade_scripts.runstate.judge`):
+  it; :mod:`yade_scripts.runs.runstate`).
+* **One rule after each attempt** (:func:`yade_scripts.runs.runstate.judge`):
   done, resumed (a crash that left a checkpoint, up to
-  :data:`~yade_scripts.runstate.MAX_RESUMES` times; a stop that was asked
+  :data:`~yade_scripts.runs.runstate.MAX_RESUMES` times; a stop that was asked
   for) or failed (a blow-up, exit 3, is never retried).
 * **Longest first.** Jobs start in decreasing order of their estimated
-  core-seconds (:func:`yade_scripts.slurm.estimate`): the longest
+  core-seconds (:func:`yade_scripts.launch.slurm.estimate`): the longest
   processing time rule (Graham 1969), which on identical cores finishes
   within 4/3 of the best possible makespan. Jobs of equal cost keep their
   order (a sweep's table order).
@@ -43,7 +43,7 @@ running runs goes through here: the study's single seeds
   analyses of the finished runs fill the cores that the last runs leave
   idle, and the pool ends when they have (``after_first``: on the first
   free core, before the waiting runs, for a study that keeps its
-  finished runs as it goes, :mod:`yade_scripts.archive`). Its output goes to
+  finished runs as it goes, :mod:`yade_scripts.campaign.archive`). Its output goes to
   ``STEM.after.log``; a failure is reported and loses nothing (the caller
   can do the work again).
 * ``stopping()`` (e.g. a SLURM task's SIGTERM): every running job gets
@@ -72,12 +72,13 @@ import threading
 import time
 from dataclasses import dataclass, field
 
-from . import noremote, yadeplugin
-from .parameters import ConfigError
-from .runlock import RunBusy, RunLock, describe, lock_path
-from .runstate import (EXIT_TERM, MAX_RESUMES, DumpUnreadable, RunFiles, Verdict, checkpoint_position, clear_attempt,
-                       dump_condition, end_attempt,
-                       has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
+from .. import yadeplugin
+from ..runs import noremote
+from ..runs.runlock import RunBusy, RunLock, describe, lock_path
+from ..runs.runstate import (EXIT_TERM, MAX_RESUMES, DumpUnreadable, RunFiles, Verdict, checkpoint_position, clear_attempt,
+                             dump_condition, end_attempt,
+                             has_checkpoint, judge, now_utc, reclaim_killed, start_attempt)
+from ..scene.parameters import ConfigError
 
 #: a running job is widened only after this many seconds (its SIGTERM
 #: handler is installed well before: YADE starts in a few seconds)
@@ -141,9 +142,9 @@ class Job:
         The run's name (a table line's ``description``); unique in a pool.
     dump : str
         The dump the run writes (``STEM.h5``; its companions,
-        :class:`~yade_scripts.runstate.RunFiles`, beside it).
+        :class:`~yade_scripts.runs.runstate.RunFiles`, beside it).
     cost : float
-        Estimated core-seconds (:func:`yade_scripts.slurm.estimate`): the
+        Estimated core-seconds (:func:`yade_scripts.launch.slurm.estimate`): the
         larger, the earlier the job starts.
     widen : bool
         True when more threads speed it up (polyhedra on the compiled
@@ -168,7 +169,7 @@ class Job:
     exits : list of int
         After the pool: the exit code of each attempt, stops asked for
         left out.
-    verdict : yade_scripts.runstate.Verdict or None
+    verdict : yade_scripts.runs.runstate.Verdict or None
         After the pool: the rule's word on its last attempt (None when it
         did not run).
     name : str
@@ -398,7 +399,7 @@ class _Running:
 def _launch(job, threads, yade, number, note, own_session=False, lock=None):
     """Start an attempt: the header line in the job's log, then YADE (in a
     session of its own when ``own_session``), told that we hold its run's
-    ``lock`` (:func:`yade_scripts.runlock.inherited`)."""
+    ``lock`` (:func:`yade_scripts.runs.runlock.inherited`)."""
     env = yade_env(job.folder)
     if lock is not None:
         env.update(lock.environment())
@@ -454,7 +455,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     in the job's folder (with ``YADE_BATCH=TABLE:LINE`` for a table line),
     its output appended to the job's log, and is recorded in the run's
     ``STEM.attempts.json``; after it ends,
-    :func:`yade_scripts.runstate.judge` decides: done, resumed or failed.
+    :func:`yade_scripts.runs.runstate.judge` decides: done, resumed or failed.
 
     Parameters
     ----------
@@ -482,7 +483,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
         SLURM job id).
     max_resumes : int
         Crashes of a run started again at most
-        (:data:`~yade_scripts.runstate.MAX_RESUMES`).
+        (:data:`~yade_scripts.runs.runstate.MAX_RESUMES`).
     after : callable, optional
         job -> command (argv list) or None: the work after each complete
         job, run on a free core (its output in ``STEM.after.log``).
@@ -490,7 +491,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
         False (default): the work after runs waits until no run waits;
         True: it takes the first free core, before any waiting run (a study
         longer than its host, whose finished runs are to be analysed and
-        kept while it goes: :mod:`yade_scripts.archive`).
+        kept while it goes: :mod:`yade_scripts.campaign.archive`).
 
     Returns
     -------
@@ -510,7 +511,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     ------
     ConfigError
         ``cores < 1``, or no ``yade`` executable.
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another process holds the lock of one of the runs (one line naming
         it); nothing was touched.
 
@@ -533,7 +534,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     {'a': 0, 'b': 'no complete dump'}
     >>> jobs[1].exits, jobs[1].verdict.action
     ([0], 'failed')
-    >>> from yade_scripts.runstate import read_attempts
+    >>> from yade_scripts.runs.runstate import read_attempts
     >>> [(r["attempt"], r["exit"], r["action"]) for r in read_attempts(os.path.join(d, "b.h5"))]
     [(1, 0, 'failed')]
     """
@@ -550,9 +551,9 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
 
 
 def hold_runs(jobs, what="launcher"):
-    """Take the lock of every job's run (:mod:`yade_scripts.runlock`), all
+    """Take the lock of every job's run (:mod:`yade_scripts.runs.runlock`), all
     or none: returns {description: RunLock}; raises
-    :class:`~yade_scripts.runlock.RunBusy` (one line naming the holder) when
+    :class:`~yade_scripts.runs.runlock.RunBusy` (one line naming the holder) when
     another process holds one, having released those it took and touched
     nothing. A stale lock (its holder died) is taken over, and the lock's
     ``took_over`` says so (:func:`run_pool` reports it).
@@ -568,13 +569,13 @@ def hold_runs(jobs, what="launcher"):
     Returns
     -------
     dict
-        description (str) -> the held :class:`~yade_scripts.runlock.RunLock`
+        description (str) -> the held :class:`~yade_scripts.runs.runlock.RunLock`
         (its ``took_over`` is the stale holder's record, or None); give
         them back with :func:`release_runs`.
 
     Raises
     ------
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another live process holds one of the locks (one line naming it);
         the locks taken before it are released.
     ConfigError
@@ -602,7 +603,7 @@ def release_runs(locks):
     Parameters
     ----------
     locks : dict
-        description -> :class:`~yade_scripts.runlock.RunLock`.
+        description -> :class:`~yade_scripts.runs.runlock.RunLock`.
 
     Returns
     -------

@@ -2,10 +2,10 @@
 against the overlap thickness, at kappa = 300, 1000, 3000 and 10 000: the
 runs and their analysis in one command.
 
-    python -m yade_scripts.facepair_tilt [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
+    python -m yade_scripts.campaign.facepair_sweep [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
         [--figure docs/figures/facepair-tilt.png]
 
-Runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on the default
+Runs the ``facepair`` plan of :mod:`yade_scripts.campaign.sweeps` (S1 on the default
 preset, 200 grains, I = 5e-3, sheared to eps_1 = 0.15, seeds 1-3; a seed
 starts from the same grains and positions at every kappa; finished runs are
 not run again), then analyses its dumps with
@@ -19,7 +19,7 @@ import argparse
 import os
 import sys
 
-from yade_scripts.front import PLANS, run_front
+from yade_scripts.campaign.sweeps import PLANS, run_front
 
 
 def main(argv=None):
@@ -37,7 +37,7 @@ def main(argv=None):
     """
     from postproc.study.facepair import write_facepair
 
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.facepair_tilt", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.facepair_sweep", description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="runs/facepair")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--from-eps1", type=float, default=0.1)

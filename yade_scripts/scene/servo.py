@@ -89,7 +89,7 @@ def servo_rates(stress, target, max_rate, gain, integral=None, dt=0.0, tau=np.in
     gain : float
         Dimensionless proportional gain (the scene lowers it so that one
         step changes the stress by at most a fifth of the error:
-        :meth:`yade_scripts.loading.TriaxialLoading.stable_gain`).
+        :meth:`yade_scripts.scene.loading.TriaxialLoading.stable_gain`).
     integral : numpy.ndarray, shape (3,), optional
         The integral term J, updated in place.
     dt : float

@@ -1,6 +1,6 @@
 """Will the runs fit this machine's memory? Checked before any YADE starts,
 with a one-line refusal (the grains' fit in their box is a parameter check,
-:func:`yade_scripts.parameters.check`).
+:func:`yade_scripts.scene.parameters.check`).
 
 Peak memory of one YADE process (VmHWM) of the default S1, measured here: 331
 MB at 1000 grains and 560 MB at 5000 (kernel on one thread, in shear), so
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import os
 
-from .parameters import ConfigError
+from ..scene.parameters import ConfigError
 
 #: peak resident memory of one run, MB: base + per grain x N
 MEMORY_BASE_MB = 274.0
@@ -28,7 +28,7 @@ def memory_mb(params):
     Parameters
     ----------
     params : dict
-        A run's parameters (:func:`yade_scripts.presets.resolve`); only
+        A run's parameters (:func:`yade_scripts.campaign.presets.resolve`); only
         ``n_particles`` is read.
 
     Returns
@@ -38,7 +38,7 @@ def memory_mb(params):
 
     Examples
     --------
-    >>> from yade_scripts.presets import resolve
+    >>> from yade_scripts.campaign.presets import resolve
     >>> round(memory_mb(resolve("default", "polyhedra")), 1), round(memory_mb({"n_particles": 36933}))
     (331.0, 2379)
     """
@@ -96,13 +96,13 @@ def check_memory(runs, memory_total_mb=None):
 
     Examples
     --------
-    >>> from yade_scripts.presets import resolve
+    >>> from yade_scripts.campaign.presets import resolve
     >>> s1 = resolve("default", "polyhedra")
     >>> check_memory([s1, s1], memory_total_mb=1024)          # 662 MB of 1 GB
     >>> check_memory([s1] * 4, memory_total_mb=1024)
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: 4 run(s) at once need about 1.3 GB of memory (the largest, ...
+    yade_scripts.scene.parameters.ConfigError: 4 run(s) at once need about 1.3 GB of memory (the largest, ...
     """
     total = machine_memory_mb() if memory_total_mb is None else memory_total_mb
     need = sum(memory_mb(p) for p in runs)

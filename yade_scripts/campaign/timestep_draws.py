@@ -1,11 +1,11 @@
 """How the polyhedra's time step shrinks with the number of grains: the
 sample's most limiting grain, drawn from the library.
 
-    python -m yade_scripts.timestep_draws [--library runs/shapes/library.h5] \
+    python -m yade_scripts.campaign.timestep_draws [--library runs/shapes/library.h5] \
         [--n 200 1000 5000 36933] [--seeds 1 2 3]
 
-The scene (``yade_scripts/triaxial.py``) sets dt = safety x min over its
-grains of sqrt(m_eff / k) (:mod:`yade_scripts.timestep`): for shape s at
+The scene (``yade_scripts/scene/triaxial.py``) sets dt = safety x min over its
+grains of sqrt(m_eff / k) (:mod:`yade_scripts.scene.timestep`): for shape s at
 diameter d, m_eff = rho d^3 rot_mass(s) and k = k_V max(max face area(s),
 tangential_ratio x mean face area) d^2, so 1/dt goes as sqrt(k / m_eff) =
 x(s, d) x a constant. N grains draw their shapes uniformly from the
@@ -29,8 +29,8 @@ import numpy as np
 
 from shapes import sizes
 from shapes.library import ShapeLibrary
-from yade_scripts import timestep
-from yade_scripts.parameters import PARAMETERS
+from yade_scripts.scene import timestep
+from yade_scripts.scene.parameters import PARAMETERS
 
 
 def shape_rates(lib, tangential_ratio):
@@ -100,7 +100,7 @@ def main(argv=None):
     int
         0, or 2 when the library cannot be read.
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.timestep_draws", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.timestep_draws", description=__doc__.splitlines()[0])
     ap.add_argument("--library", default="runs/shapes/library.h5")
     ap.add_argument("--n", nargs="+", type=int, default=[200, 1000, 5000, 36933])
     ap.add_argument("--seeds", nargs="*", type=int, default=[1, 2, 3])

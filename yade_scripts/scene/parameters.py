@@ -5,13 +5,13 @@ values, default and a one-line description with its unit. Everything else is
 derived from :data:`PARAMETERS`:
 
 * :data:`DEFAULTS`, the default preset's polyhedra sample (S1): the values a
-  preset does not change (``yade_scripts.presets`` lists only the changes);
+  preset does not change (``yade_scripts.campaign.presets`` lists only the changes);
 * :data:`SCHEMA` and :func:`coerce`, the checks of a value a user sets (a
   preset, ``--set NAME=VALUE``, a column of a yade-batch table);
 * :func:`render_block`, the scene's parameter block: ``readParamsFromTable``
   with every parameter, then an explicit import of each name from
   ``yade.params.table``, so that a reader can follow ``kappa`` from here to
-  the kernel by its name. ``yade_scripts/triaxial.py`` holds the block of the
+  the kernel by its name. ``yade_scripts/scene/triaxial.py`` holds the block of the
   defaults (a test checks it), so the bare scene is the default experiment.
 """
 from __future__ import annotations
@@ -26,7 +26,7 @@ from postproc.schema import SAMPLE_KINDS
 #: the two samples of the study, S1 and S2: the kinds of sample a dump holds
 SAMPLES = SAMPLE_KINDS
 
-BLOCK_START = "# --- parameters (generated from yade_scripts/parameters.py) ---"
+BLOCK_START = "# --- parameters (generated from yade_scripts/scene/parameters.py) ---"
 BLOCK_END = "# --- end of parameters ---"
 
 
@@ -141,7 +141,7 @@ PARAMETERS = (
 DEFAULTS = {p.name: p.default for p in PARAMETERS}
 
 #: the largest initial solid fraction random sequential addition reaches
-#: (yade_scripts.sample), measured on 1000 grains of the library, seed 1,
+#: (yade_scripts.scene.sample), measured on 1000 grains of the library, seed 1,
 #: aspect 2: placed with their exact shapes they fill 0.30 and jam at 0.33
 #: (no room for grain 754 after 128 000 trials); as bounding spheres (and
 #: S2's spheres) they fill 0.36 and jam at 0.38. The scene would enlarge a
@@ -208,11 +208,11 @@ def coerce(key, value):
     >>> coerce("kapa", 300)
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: unknown parameter 'kapa' (did you mean 'kappa'?)
+    yade_scripts.scene.parameters.ConfigError: unknown parameter 'kapa' (did you mean 'kappa'?)
     >>> coerce("friction", -0.1)
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: friction = -0.1 is outside [0, 10]
+    yade_scripts.scene.parameters.ConfigError: friction = -0.1 is outside [0, 10]
     """
     if key not in SCHEMA:
         close = difflib.get_close_matches(key, SCHEMA, n=1)
@@ -277,7 +277,7 @@ def check(params):
     >>> check({"initial_fraction": 0.32})
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: initial_fraction = 0.32: random sequential addition of the grains with ...
+    yade_scripts.scene.parameters.ConfigError: initial_fraction = 0.32: random sequential addition of the grains with ...
     """
     p = {k: coerce(k, v) for k, v in {**DEFAULTS, **params}.items()}
     if p["placement"] == "grains" and p["sample"] == "polyhedra" and p["contact_engine"] != "kernel":

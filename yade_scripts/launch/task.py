@@ -1,9 +1,9 @@
 """One task of a SLURM job array: one table line of a run folder, run to the
 end across as many jobs as it takes, without a human.
 
-    python -m yade_scripts.task FOLDER [--task K] [--requeues N]
+    python -m yade_scripts.launch.task FOLDER [--task K] [--requeues N]
 
-``slurm.sh`` (:mod:`yade_scripts.slurm`) ``exec``s this on YADE's own
+``slurm.sh`` (:mod:`yade_scripts.launch.slurm`) ``exec``s this on YADE's own
 Python, so that SLURM's ``--signal=B:USR1@S`` reaches it. Task K (default
 ``$SLURM_ARRAY_TASK_ID``) is the K-th run line of ``FOLDER/table.txt``; it
 runs in the line's own folder ``FOLDER/<description>/`` (made on its first
@@ -11,14 +11,14 @@ run, with relative links to the scene, ``pkg/`` and the shape library),
 where its dump, its log ``triaxial.log`` and its attempts record go. The
 task:
 
-1. checks its line by name, type and range (:func:`yade_scripts.batch.table_lines`):
+1. checks its line by name, type and range (:func:`yade_scripts.launch.batch.table_lines`):
    a bad line fails at once with one line naming the line and the
    parameter, before YADE starts;
-2. takes the run's lock (:mod:`yade_scripts.runlock`): when another
+2. takes the run's lock (:mod:`yade_scripts.runs.runlock`): when another
    process writes the run (the same line submitted twice, a study or a
    task by hand on it), it refuses at once, naming that process, touches
    nothing and exits 4;
-3. checks the line's dump whole (:func:`yade_scripts.runstate.dump_condition`:
+3. checks the line's dump whole (:func:`yade_scripts.runs.runstate.dump_condition`:
    the ``complete`` flag and every snapshot against its index) and exits at
    once when it is complete; a dump that cannot be opened now (held open by
    another process, HDF5's file lock; an I/O error) may be finished, so the
@@ -26,12 +26,12 @@ task:
    does not verify (a packed dump that lost a snapshot) is moved aside as
    ``NAME.h5.truncated-<UTC stamp>`` (or ``.does-not-verify-…``), never
    removed, said in one line, and the line runs again;
-4. runs the line through :func:`yade_scripts.pool.run_pool` (the one loop
+4. runs the line through :func:`yade_scripts.launch.pool.run_pool` (the one loop
    and rule of every run: every attempt recorded in the run's
    ``STEM.attempts.json`` as it starts and when it ends, one killed with
    its job recorded as killed by the next; appended to ``triaxial.log``
    with a header; a crash resumed from its checkpoint, or started afresh
-   when it had none, :data:`yade_scripts.runstate.MAX_RESUMES` times at most);
+   when it had none, :data:`yade_scripts.runs.runstate.MAX_RESUMES` times at most);
 5. on SIGUSR1 (the time limit's warning, ``--signal=B:USR1@S``; or
    ``scancel --batch --signal=USR1``, to stop it now and have it resume)
    stops YADE, which writes a checkpoint and exits 75, and requeues its own
@@ -71,15 +71,13 @@ import signal
 import subprocess
 import sys
 
+from ..runs.runlock import RunBusy, RunLock, describe, lock_path
+from ..runs.runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, SET_ASIDE, DumpUnreadable, complete,
+                             dump_condition, has_checkpoint, mark_requeued, now_utc, set_aside, state_of, task_requeues)
+from ..scene.parameters import ConfigError
 from .batch import dump_of, table_lines
-from .parameters import ConfigError
-from .runlock import RunBusy, RunLock, describe, lock_path
-from .runstate import (EXIT_BUSY, EXIT_CONFIG, EXIT_DONE, EXIT_FAILED, EXIT_TERM, SET_ASIDE, DumpUnreadable, complete,
-                       dump_condition, has_checkpoint, mark_requeued, now_utc, set_aside, state_of, task_requeues)
-
-#: requeues of one task at most (``--requeues``): each is one job's time limit
-DEFAULT_REQUEUES = 10
-
+from .pool import Job, run_pool
+from .slurm import DEFAULT_REQUEUES, record_job
 
 def say(message, err=False):
     """Print one line of the task, ``task: <message>``, at once (flushed):
@@ -224,7 +222,7 @@ def finish(code, state, job_id):
     Parameters
     ----------
     code : int
-        The task's exit code (:mod:`yade_scripts.runstate`'s EXIT_*); the
+        The task's exit code (:mod:`yade_scripts.runs.runstate`'s EXIT_*); the
         final line goes to stderr unless it is 0 or 75.
     state : str
         The final state and reason, one line (the comment keeps its first
@@ -253,7 +251,7 @@ def line_folder(folder, line):
     ----------
     folder : str
         The generated run folder.
-    line : yade_scripts.batch.TableLine
+    line : yade_scripts.launch.batch.TableLine
         The table line.
 
     Returns
@@ -279,7 +277,7 @@ def link_inputs(folder, own, line):
         ``pkg/``).
     own : str
         The line's folder (:func:`line_folder`), made when missing.
-    line : yade_scripts.batch.TableLine
+    line : yade_scripts.launch.batch.TableLine
         The table line.
 
     Returns
@@ -314,7 +312,7 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
 
     From its start to the end of the process, SIGTERM and SIGUSR1 are the
     task's (they ask the run to stop); inside a SLURM job it records its
-    array's job id in the folder (:func:`yade_scripts.slurm.record_job`)
+    array's job id in the folder (:func:`yade_scripts.launch.slurm.record_job`)
     and leaves its final state as the job's comment. Its lines go to
     stdout (``task: ...``, the last ``task: FINAL <state>``; on stderr
     when it failed).
@@ -366,7 +364,6 @@ def run_task(folder, task, requeues=DEFAULT_REQUEUES, threads=None, echo=say):
     own = line_folder(folder, line)
     dump = os.path.join(own, os.path.basename(dump_of(folder, line.row)))
     if job_id:        # the array's job, for --collect to ask SLURM about (an sbatch by hand is recorded so)
-        from .slurm import record_job
 
         record_job(folder, os.environ.get("SLURM_ARRAY_JOB_ID") or job_id.split("_")[0], "task")
     try:
@@ -400,8 +397,6 @@ def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, ec
         say(f"{os.path.basename(dump)}: {why}: moved aside to {os.path.basename(moved)}; the line runs again")
     before = state_of(dump)
     say(f"table line {line.number} ({line.description}): {before.detail}; {threads} thread(s)")
-
-    from .pool import Job, run_pool
 
     try:
         link_inputs(folder, own, line)
@@ -449,7 +444,7 @@ def _run_line(folder, task, line, own, dump, job_id, threads, requeues, stop, ec
 
 
 def main(argv=None):
-    """``python -m yade_scripts.task FOLDER [--task K] [--requeues N]``:
+    """``python -m yade_scripts.launch.task FOLDER [--task K] [--requeues N]``:
     :func:`run_task`, the task K by default ``$SLURM_ARRAY_TASK_ID``.
 
     Parameters
@@ -463,7 +458,7 @@ def main(argv=None):
         :func:`run_task`'s exit code; 2 when no task is given and
         ``SLURM_ARRAY_TASK_ID`` is unset or not a number.
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.task", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.launch.task", description=__doc__.splitlines()[0])
     ap.add_argument("folder", help="the generated run folder (table.txt, triaxial.py)")
     ap.add_argument("--task", type=int, help="the run line of table.txt, from 1 (default: $SLURM_ARRAY_TASK_ID)")
     ap.add_argument("--requeues", type=int, default=DEFAULT_REQUEUES,

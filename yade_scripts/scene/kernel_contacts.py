@@ -48,6 +48,8 @@ import numpy as np
 
 from shapes.engine import ContactEngine, EngineError
 
+from .. import yadeplugin
+
 #: the label of the engine that steps the kernel, on either path
 LABEL = "kernel_contacts"
 #: the plugin's error codes (besides the kernel's own), as the plugin sets them
@@ -150,8 +152,6 @@ class KernelContacts:
         else ``[PyRunner(command)]``, whose command calls this object.
         :attr:`path` ("plugin" or "pyrunner") and :attr:`path_note` (why)
         say which."""
-        from yade_scripts import yadeplugin
-
         self._command, self._check, self._label = command, check, label
         cls, why = yadeplugin.loaded_class() if plugin else (None, "the plugin is switched off (kernel_plugin=False)")
         if cls is None:

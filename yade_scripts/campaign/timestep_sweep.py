@@ -2,9 +2,9 @@
 with dt = safety x the critical step, safety 0.3 (the default), 0.45, 0.6,
 0.9; the runs and their table in one command.
 
-    python -m yade_scripts.timestep_front [--out runs/timestep] [--jobs 2]
+    python -m yade_scripts.campaign.timestep_sweep [--out runs/timestep] [--jobs 2]
 
-Runs the ``timestep`` plan of :mod:`yade_scripts.front` (200 polyhedra, the
+Runs the ``timestep`` plan of :mod:`yade_scripts.campaign.sweeps` (200 polyhedra, the
 default preset, 3 seeds; finished runs are not run again; each dump is
 analysed), then tabulates it with
 :func:`postproc.study.timestepfront.write_timestep_front` (what the tables
@@ -17,7 +17,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from yade_scripts.front import PLANS, TIMESTEP_SAFETIES, run_front
+from yade_scripts.campaign.sweeps import PLANS, TIMESTEP_SAFETIES, run_front
 
 
 def main(argv=None):
@@ -36,7 +36,7 @@ def main(argv=None):
     from postproc.errors import InputError
     from postproc.study.timestepfront import write_timestep_front
 
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.timestep_front", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.timestep_sweep", description=__doc__.splitlines()[0])
     ap.add_argument("--out", default="runs/timestep")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args(argv)

@@ -2,7 +2,7 @@
 that last changed the archive, with its environment, and the collect run
 there.
 
-    python -m yade_scripts.archive collect-at-commit ARCHIVE OUT
+    python -m yade_scripts.campaign.archive collect-at-commit ARCHIVE OUT
 
 An archive of another analysis version (:data:`postproc.provenance.ANALYSIS_VERSION`)
 is not used by today's code; its numbers are still those of the code that
@@ -13,10 +13,10 @@ commit's ``pyproject.toml`` is today's (the same dependencies; the
 worktree's own packages come first on the path) or else makes the
 worktree's own ``.venv`` with its Makefile (``make venv``: PyPI must be
 reachable), takes the shape library of this checkout when its content is
-the archived one (:func:`yade_scripts.archive.library_fingerprint`) or else
+the archived one (:func:`yade_scripts.campaign.archive_store.library_fingerprint`) or else
 builds it there (``make shapes``, about 20 s), generates the study's run
 folders in ``OUT/study`` and collects them with the archive
-(``yade_scripts.study --collect OUT/study --archive ... --no-figures``) and
+(``yade_scripts.campaign.study --collect OUT/study --archive ... --no-figures``) and
 writes ``OUT/results.json`` (``postproc results``), each step with that
 commit's code. It needs git, the repository's history (not a shallow
 clone without that commit), and about 5 MB beside the archive. Nothing of
@@ -28,15 +28,24 @@ import os
 import subprocess
 import sys
 
-from .parameters import ConfigError
+from ..scene.parameters import ConfigError
+from .archive_store import library_fingerprint
+from .generate import DEFAULT_LIBRARY
 
 #: the driver run with the commit's code: the run folders of the archive's
-#: study generated as the study made them (what yade_scripts.archive.study_folders does)
+#: study generated as the study made them (what
+#: yade_scripts.campaign.archive_store.study_folders does), in either layout
+#: of yade_scripts (its rooms, or the flat folder of modules before them)
 DRIVER = r'''
 import json, os, sys
-from yade_scripts.generate import generate
-from yade_scripts.presets import resolve
-from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
+try:                    # yade_scripts in its rooms
+    from yade_scripts.campaign.archive_store import FOLDER_RECORD, RUN_RECORD, _folder_record
+    from yade_scripts.campaign.generate import generate
+    from yade_scripts.campaign.presets import resolve
+except ImportError:     # a commit of the flat yade_scripts
+    from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
+    from yade_scripts.generate import generate
+    from yade_scripts.presets import resolve
 dest, out, library = sys.argv[1:4]
 counts = set()
 for name in sorted(os.listdir(dest)):
@@ -110,9 +119,6 @@ def collect_at_commit(archive, out, echo=print):
         A refusal of :func:`archive_commit`, ``out`` exists and is not
         empty, or a step failed (named, with the command).
     """
-    from .archive import library_fingerprint
-    from .generate import DEFAULT_LIBRARY
-
     root, rel, commit = archive_commit(archive)
     if os.path.exists(out) and (not os.path.isdir(out) or os.listdir(out)):
         raise ConfigError(f"{out}: exists and is not empty; give a new folder")
@@ -138,12 +144,37 @@ def collect_at_commit(archive, out, echo=print):
     env = {**os.environ, "PYTHONPATH": source}
     study = os.path.join(out, "study")
     counts = _run([python, "-c", DRIVER, os.path.join(source, rel), study, lib], source, env).split()
-    _run([python, "-m", "yade_scripts.study", "--collect", study, "--archive", os.path.join(source, rel),
+    _run([python, "-m", study_module(source), "--collect", study, "--archive", os.path.join(source, rel),
           "--no-figures", "--counts", *counts], source, env)
     results = os.path.join(out, "results.json")
     _run([python, "-m", "postproc.cli", "results", study, "--out", results], source, env)
     echo(f"[archive] collected with commit {commit[:12]}'s code: {results}")
     return results
+
+
+def study_module(source):
+    """The study's module in the checkout ``source``, for ``python -m``:
+    ``yade_scripts.campaign.study``, or ``yade_scripts.study`` in a commit
+    whose ``yade_scripts`` is one flat folder of modules.
+
+    Parameters
+    ----------
+    source : str
+        The checkout (a worktree of the archive's commit).
+
+    Returns
+    -------
+    str
+        The dotted module name.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> study_module(tempfile.mkdtemp())
+    'yade_scripts.campaign.study'
+    """
+    flat = os.path.join(source, "yade_scripts", "study.py")
+    return "yade_scripts.study" if os.path.exists(flat) else "yade_scripts.campaign.study"
 
 
 def _archived_fingerprint(dest):

@@ -1,15 +1,15 @@
 """The table of a generated run folder, and running its lines.
 
-    python -m yade_scripts.batch FOLDER [--jobs 2] [--job-threads 1] [--only DESC ...]
+    python -m yade_scripts.launch.batch FOLDER [--jobs 2] [--job-threads 1] [--only DESC ...]
 
-A run folder's ``table.txt`` (written by :func:`yade_scripts.generate.generate`,
+A run folder's ``table.txt`` (written by :func:`yade_scripts.campaign.generate.generate`,
 read as yade-batch reads it) has a header line, then one line per run with
 a ``description`` column, an ``out`` column naming its dump and any scene
 parameter as a column. :func:`table_lines` checks every line by name, type
-and range (:mod:`yade_scripts.parameters`) and says what is wrong with each
+and range (:mod:`yade_scripts.scene.parameters`) and says what is wrong with each
 bad one in one line; :func:`read_table` refuses the table at its first bad
 line. :func:`run_batch` runs the unfinished lines through the schedule of
-:mod:`yade_scripts.pool` (``jobs`` at a time, one thread each unless
+:mod:`yade_scripts.launch.pool` (``jobs`` at a time, one thread each unless
 ``job_threads``, in table order), skipping complete dumps and resuming
 checkpointed ones; each line's log is ``triaxial.py.<description>.log``.
 """
@@ -22,9 +22,10 @@ import shlex
 import sys
 from dataclasses import dataclass
 
-from .parameters import ConfigError, coerce
-from .runlock import RunBusy
-from .runstate import EXIT_BUSY, EXIT_TERM
+from ..runs.runlock import RunBusy
+from ..runs.runstate import EXIT_BUSY, EXIT_TERM
+from ..scene.parameters import ConfigError, coerce
+from .pool import Job, run_pool
 
 
 @dataclass(frozen=True)
@@ -196,7 +197,7 @@ def read_table(folder):
     >>> read_table(d)
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: .../table.txt line 3: seed = 1.5 is not an integer
+    yade_scripts.scene.parameters.ConfigError: .../table.txt line 3: seed = 1.5 is not an integer
     """
     rows = table_lines(folder)
     for t in rows:
@@ -231,7 +232,7 @@ def dump_of(folder, row):
 
 def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_threads=1, only=None):
     """Run the unfinished lines of a run folder's table, ``jobs`` at a
-    time in table order, through :func:`yade_scripts.pool.run_pool`:
+    time in table order, through :func:`yade_scripts.launch.pool.run_pool`:
     complete dumps are not run again, a checkpointed line resumes, a
     crashed one is resumed as the pool's rule says. The table is checked
     first (:func:`read_table`): a bad line stops everything before any run
@@ -240,7 +241,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
     Parameters
     ----------
     folder : str
-        A generated run folder (:func:`yade_scripts.generate.generate`).
+        A generated run folder (:func:`yade_scripts.campaign.generate.generate`).
     jobs : int
         Cores of the schedule (the runs at a time, on one thread each).
     tag : str
@@ -259,7 +260,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
     Returns
     -------
     dict
-        description -> status of :func:`yade_scripts.pool.run_pool` for
+        description -> status of :func:`yade_scripts.launch.pool.run_pool` for
         the lines asked for: 0 complete (now or already), else the exit
         code or the reason.
 
@@ -268,7 +269,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
     ConfigError
         A bad table line, a description of ``only`` the table lacks, or no
         ``yade`` on the PATH.
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another process writes one of the runs; nothing was touched.
 
     Examples
@@ -279,7 +280,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
 
     >>> import os, tempfile
     >>> from postproc.schema import DumpWriter
-    >>> from yade_scripts.generate import generate
+    >>> from yade_scripts.campaign.generate import generate
     >>> out = os.path.join(tempfile.mkdtemp(), "t1")
     >>> _ = generate(out, "tiny", "spheres", seeds=[1])
     >>> DumpWriter(os.path.join(out, "spheres-seed1.h5"), "spheres", {}).close()
@@ -289,10 +290,8 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
     >>> run_batch(out, only=["spheres-seed9"])
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: .../t1/table.txt has no line spheres-seed9
+    yade_scripts.scene.parameters.ConfigError: .../t1/table.txt has no line spheres-seed9
     """
-    from .pool import Job, run_pool
-
     rows = read_table(folder)
     if only is not None:
         unknown = sorted(set(only) - {r["description"] for _, r in rows})
@@ -307,7 +306,7 @@ def run_batch(folder, jobs=2, tag="batch", echo=print, attempts=None, job_thread
 
 
 def main(argv=None):
-    """``python -m yade_scripts.batch FOLDER [--jobs N] [--job-threads T]
+    """``python -m yade_scripts.launch.batch FOLDER [--jobs N] [--job-threads T]
     [--only DESC ...]``: :func:`run_batch` from the command line.
 
     Parameters
@@ -323,7 +322,7 @@ def main(argv=None):
         process writes a run; 75 stopped by SIGTERM or Ctrl-C (run the
         same command again to resume).
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.batch",
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.launch.batch",
                                  description="Run the unfinished lines of a run folder's table.txt.")
     ap.add_argument("folder")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (default 2)")

@@ -1,7 +1,7 @@
 """Speed against error: a sweep over stiffness, inertial number,
 particle count (and, in the older ``quick`` plan, shape detail), for S1 and S2.
 
-    python -m yade_scripts.front --plan default --out runs/front [--jobs 2]
+    python -m yade_scripts.campaign.sweeps --plan default --out runs/front [--jobs 2]
 
 ``make front`` runs the ``default`` plan (the sweep around the default
 preset), also this command's default (:data:`DEFAULT_PLAN`).
@@ -12,10 +12,10 @@ every table line overrides ``kappa``, ``inertial_number``, ``n_particles``,
 every point) and ``library`` (``shapes.h5`` is the standard library, 8-37
 vertices, mean 20; ``shapes-low.h5`` holds grains of 8-12 vertices, mean
 10, from the same generator). The lines run ``--jobs`` at a time, one
-thread each, in table order (:func:`yade_scripts.batch.run_batch`).
+thread each, in table order (:func:`yade_scripts.launch.batch.run_batch`).
 Complete dumps are not run again; a finished dump whose parameters differ
 from its line's (a plan edited without renaming the line) is reported and
-not used. Each dump is analysed (:func:`yade_scripts.study.analyse_dump`,
+not used. Each dump is analysed (:func:`yade_scripts.campaign.study.analyse_dump`,
 without standard errors or figures: the front reads its numbers; ``postproc
 analyze DUMP`` draws one run's figures) and :func:`postproc.study.front.write_front`
 writes ``OUT/front.csv`` (one row per run: cost and every quantity of the
@@ -31,8 +31,10 @@ import json
 import os
 import sys
 
+from ..launch.batch import dump_of, read_table, run_batch
+from ..scene.parameters import SAMPLES, ConfigError, changed, coerce
 from .generate import DEFAULT_LIBRARY, generate
-from .parameters import SAMPLES, ConfigError, changed, coerce
+from .study import analyse_dump
 
 #: the plan ``make front`` and this command run unless told otherwise
 DEFAULT_PLAN = "default"
@@ -98,7 +100,7 @@ PLANS["kernel"] = {
     "polyhedra": _grid(KERNEL_POINTS + [(300, 2e-2, 500)], (1, 2, 3), 200),
     "spheres": _grid(KERNEL_POINTS, (1, 2, 3), 1000) + _grid([(300, 2e-2, 4000)], (1,), 1000),
 }
-# The time-step sweep (python -m yade_scripts.timestep_front): S1 on the default
+# The time-step sweep (python -m yade_scripts.campaign.timestep_sweep): S1 on the default
 # preset (kappa = 3000, I = 5e-3) at 200 grains, the time step at 0.3 (the
 # default when it was measured), 0.45 (today's default), 0.6 and 0.9 of the
 # critical step, 3 seeds, seed-major; the
@@ -133,7 +135,7 @@ PLANS["default"] = {
     "spheres": _grid(DEFAULT_FRONT_POINTS["spheres"], (1, 2, 3), 1000),
 }
 # The face-pair tilt against the overlap thickness
-# (python -m yade_scripts.facepair_tilt): S1 on the default preset at 200 grains,
+# (python -m yade_scripts.campaign.facepair_sweep): S1 on the default preset at 200 grains,
 # kappa 10 000, 3000, 1000 and 300 at the default I (longest first), sheared to
 # eps_1 = 0.15, 3 seeds, seed-major; the same seed starts from the same grains
 # and positions at every kappa.
@@ -183,7 +185,7 @@ def write_table(folder, sample, lines):
     ------
     ConfigError
         A line without a value for a column, or a value that is not valid
-        (:func:`yade_scripts.parameters.coerce`).
+        (:func:`yade_scripts.scene.parameters.coerce`).
 
     Examples
     --------
@@ -213,7 +215,7 @@ def write_table(folder, sample, lines):
 
 def _stale(dump, overrides):
     """The parameters of a finished dump that differ from its line's
-    overrides (:func:`yade_scripts.parameters.changed`): a plan edited
+    overrides (:func:`yade_scripts.scene.parameters.changed`): a plan edited
     without renaming its line is never silently reused."""
     from postproc.schema import DumpReader
 
@@ -230,9 +232,9 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
     """Run a sweep: for each sample, generate its run folder ``OUT/<sample>``
     on the plan's preset (unless it is there), write the plan's lines as its
     table (:func:`write_table`), run the unfinished lines
-    (:func:`yade_scripts.batch.run_batch`) and analyse each complete dump
+    (:func:`yade_scripts.launch.batch.run_batch`) and analyse each complete dump
     that has no analysis yet into ``analysis-<description>/``
-    (:func:`yade_scripts.study.analyse_dump`, without standard errors or
+    (:func:`yade_scripts.campaign.study.analyse_dump`, without standard errors or
     figures). A
     complete dump made with parameters other than its line's is reported
     and not analysed (status "stale dump"). The plan goes to
@@ -250,7 +252,7 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
         Cores of each sample's schedule (runs at a time, one thread each).
     library : str, optional
         The polyhedra's shape library (default
-        :data:`yade_scripts.generate.DEFAULT_LIBRARY`).
+        :data:`yade_scripts.campaign.generate.DEFAULT_LIBRARY`).
     samples : sequence of str
         The samples to run, in this order (default: spheres, the cheap one,
         first).
@@ -259,7 +261,7 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
     -------
     dict
         sample -> {description: status}: 0 complete, else the exit code or
-        the reason (:func:`yade_scripts.pool.run_pool`), or "stale dump".
+        the reason (:func:`yade_scripts.launch.pool.run_pool`), or "stale dump".
 
     Raises
     ------
@@ -281,11 +283,8 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
     >>> run_front(out, "fastest")
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: unknown plan 'fastest'; choose from ['default', 'facepair', ...]
+    yade_scripts.scene.parameters.ConfigError: unknown plan 'fastest'; choose from ['default', 'facepair', ...]
     """
-    from .batch import dump_of, read_table, run_batch
-    from .study import analyse_dump
-
     if plan not in PLANS:
         raise ConfigError(f"unknown plan {plan!r}; choose from {sorted(PLANS)}")
     spec = PLANS[plan]
@@ -321,7 +320,7 @@ def run_front(out, plan, jobs=2, library=None, samples=FRONT_SAMPLES):
 
 
 def main(argv=None):
-    """``python -m yade_scripts.front --plan PLAN --out OUT [--jobs N]``:
+    """``python -m yade_scripts.campaign.sweeps --plan PLAN --out OUT [--jobs N]``:
     :func:`run_front`, then :func:`postproc.study.front.write_front`, whose
     table it prints.
 
@@ -336,7 +335,7 @@ def main(argv=None):
         The exit code: 0 every run done; 1 a run failed (or its dump is
         stale); 2 invalid options.
     """
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.front", description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.campaign.sweeps", description=__doc__.splitlines()[0])
     ap.add_argument("--plan", default=DEFAULT_PLAN, help=f"one of {sorted(PLANS)} (default {DEFAULT_PLAN})")
     ap.add_argument("--out", required=True)
     ap.add_argument("--jobs", type=int, default=2)

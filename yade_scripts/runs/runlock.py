@@ -17,21 +17,21 @@ process that died, recognised and taken over (:attr:`RunLock.took_over`).
 
 Who holds it:
 
-* a launcher (:func:`yade_scripts.pool.run_pool`, for the study, sweeps and
+* a launcher (:func:`yade_scripts.launch.pool.run_pool`, for the study, sweeps and
   SLURM tasks) holds the lock of every run it has, from before it looks at
   the run's files to after its last attempt; the YADE process it starts
   learns from the environment (:data:`INHERITED`) that its parent holds
   it, and checks that this is so (:func:`inherited`);
 * a scene started by hand (``yade -x triaxial.py`` in a run folder) takes
-  the lock itself (:class:`yade_scripts.attempt.Attempt`);
+  the lock itself (:class:`yade_scripts.runs.attempt.Attempt`);
 * the study holds one more on its whole folder (``OUT/study.lock``), so that
   a second study on the folder refuses before it generates or sets aside
   anything.
 * the writer of a folder's manifest and report holds ``FOLDER/report.lock``
-  (:func:`yade_scripts.study.report_lock`): a study at its end, which waits
+  (:func:`yade_scripts.campaign.study.report_lock`): a study at its end, which waits
   for it, or a ``--collect``, which refuses while another holds it;
 * the writer of an archive of analysed runs holds ``DEST/archive.lock``
-  (:func:`yade_scripts.archive.save`), and a second one waits for it
+  (:func:`yade_scripts.campaign.archive_store.save`), and a second one waits for it
   (:meth:`RunLock.acquire_waiting`).
 
 POSIX locks belong to a process, and closing *any* descriptor of the file

@@ -1,15 +1,15 @@
 """SLURM job arrays for the lines of a run folder's table.
 
-    python -m yade_scripts.generate --preset paper --sample polyhedra \
+    python -m yade_scripts.campaign.generate --preset paper --sample polyhedra \
         --out runs/paper-s1 --seeds 1 2 3 4 --slurm [--slurm-cpus 8 --slurm-time 7-00:00:00]
     sbatch runs/paper-s1/slurm.sh                 # from any folder; or sbatch -D DIR ...
-    python -m yade_scripts.study --collect runs/paper-s1
+    python -m yade_scripts.campaign.study --collect runs/paper-s1
 
 writes ``slurm.sh`` next to ``table.txt``: one array task per run line.
 The script knows its run folder by absolute path (``RUN_DIR`` overrides it;
-``python -m yade_scripts.slurm FOLDER`` writes it again for a moved
+``python -m yade_scripts.launch.slurm FOLDER`` writes it again for a moved
 folder), says in one line when the folder, its table or its scene is
-missing, and ``exec``s :mod:`yade_scripts.task` on YADE's own Python: task
+missing, and ``exec``s :mod:`yade_scripts.launch.task` on YADE's own Python: task
 K runs table line K in ``FOLDER/<description>/`` (its dump, its log
 ``triaxial.log``, every attempt appended), checks the line first, skips a
 complete dump, and on SIGUSR1, which SLURM sends ``--slurm-signal`` seconds
@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
+import os
 import re
 import shutil
 import sys
 
-import math
-import os
+from ..scene.parameters import ConfigError
+from .batch import read_table
 
 #: Cost model (docs/scenes.md "Paper scale"): steps measured at a reference
 #: point per sample, scaled to other parameters, times contacts, times the
@@ -104,10 +106,10 @@ COMPACTION_N_EXPONENT = {"polyhedra": 0.25, "spheres": 0.41}
 #: measured dense)
 COST_GROWTH = {"polyhedra": (5000, 1.04), "spheres": (5000, 1.0)}
 #: the shear's steps follow the time step, which the sample's most limiting
-#: grain sets (yade_scripts/timestep.py): N grains drawn from the default
+#: grain sets (yade_scripts/scene/timestep.py): N grains drawn from the default
 #: library (1000 shapes, seed 0) hold a more limiting one the larger N is.
 #: E[1/dt] of N grains relative to 1000 grains, exact order statistics of the
-#: draws (python -m yade_scripts.timestep_draws, 2026-11-27): 200 grains 0.8725, 2000
+#: draws (python -m yade_scripts.campaign.timestep_draws, 2026-11-27): 200 grains 0.8725, 2000
 #: 1.0479, 5000 1.0967, 10 000 1.1089, 36 933 1.1100 (the library's limit,
 #: every sample holding its most limiting shape in the smallest class);
 #: linear in log N between, constant beyond. Spheres: the smallest class sets
@@ -190,7 +192,7 @@ def estimate(params, kernel_path="plugin"):
     Parameters
     ----------
     params : dict
-        A run's parameters (:func:`yade_scripts.presets.resolve`): sample,
+        A run's parameters (:func:`yade_scripts.campaign.presets.resolve`): sample,
         n_particles, kappa, inertial_number, compaction_inertial_number,
         final_strain, safety, placement.
     kernel_path : {"plugin", "pyrunner"}
@@ -210,7 +212,7 @@ def estimate(params, kernel_path="plugin"):
 
     Examples
     --------
-    >>> from yade_scripts.presets import resolve
+    >>> from yade_scripts.campaign.presets import resolve
     >>> round(estimate(resolve("default", "polyhedra"))["core_hours"], 2)
     0.17
     >>> e = estimate(resolve("paper", "polyhedra"))
@@ -244,6 +246,8 @@ def estimate(params, kernel_path="plugin"):
 #: stops at the end of its step and writes a checkpoint (0.1 MB in 0.02 s for
 #: 20 grains; SLURM's own resolution is up to a minute)
 DEFAULT_SIGNAL_SECONDS = 300
+#: requeues of one task at most (``--requeues``): each is one job's time limit
+DEFAULT_REQUEUES = 10
 _TIME = re.compile(r"(?:(\d+)-)?(\d+)(?::(\d+))?(?::(\d+))?")
 
 
@@ -310,10 +314,8 @@ def check_options(cpus=2, time="24:00:00", partition=None, requeues=None, signal
     >>> check_options(time="0:04:00")
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: --slurm-signal 300 s must be ... less than the time limit 0:04:00 (240 s)
+    yade_scripts.scene.parameters.ConfigError: --slurm-signal 300 s must be ... less than the time limit 0:04:00 (240 s)
     """
-    from .parameters import ConfigError
-
     try:
         limit = time_seconds(time)
     except ValueError as exc:
@@ -325,6 +327,38 @@ def check_options(cpus=2, time="24:00:00", partition=None, requeues=None, signal
                           f"{time} ({limit} s)")
     if partition is not None and not re.fullmatch(r"[\w.,-]+", partition):
         raise ConfigError(f"--slurm-partition {partition!r} is not a partition name")
+
+
+def task_module(folder):
+    """The module that runs one array task, as the run folder's own copy of
+    the packages (``folder/pkg``) names it: ``yade_scripts.launch.task``,
+    or ``yade_scripts.task`` in a folder made by the code before
+    ``yade_scripts`` had its rooms (``slurm.sh`` runs the folder's copy,
+    never this checkout's).
+
+    Parameters
+    ----------
+    folder : str
+        A generated run folder.
+
+    Returns
+    -------
+    str
+        The dotted module name for ``python -m``.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> old = tempfile.mkdtemp()
+    >>> os.makedirs(os.path.join(old, "pkg", "yade_scripts"))
+    >>> open(os.path.join(old, "pkg", "yade_scripts", "task.py"), "w").close()
+    >>> task_module(old)
+    'yade_scripts.task'
+    >>> task_module(tempfile.mkdtemp())
+    'yade_scripts.launch.task'
+    """
+    flat = os.path.join(folder, "pkg", "yade_scripts", "task.py")
+    return "yade_scripts.task" if os.path.exists(flat) else "yade_scripts.launch.task"
 
 
 def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requeues=None,
@@ -351,7 +385,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
         The job's name (default: the folder's name).
     requeues : int, optional
         Requeues of a task at most, each after a time limit (default
-        :data:`yade_scripts.task.DEFAULT_REQUEUES`).
+        :data:`DEFAULT_REQUEUES`).
     signal_seconds : int
         s: SIGUSR1 this long before the time limit (``--signal=B:USR1@S``),
         so that YADE writes its checkpoint and the task requeues itself.
@@ -370,7 +404,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
     Examples
     --------
     >>> import os, tempfile
-    >>> from yade_scripts.generate import generate
+    >>> from yade_scripts.campaign.generate import generate
     >>> out = os.path.join(tempfile.mkdtemp(), "s2")
     >>> _ = generate(out, "tiny", "spheres", seeds=[1, 2, 3])
     >>> path = write_slurm(out, cpus=4, time="2:00:00")
@@ -382,10 +416,6 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
     #SBATCH --time=2:00:00
     #SBATCH --signal=B:USR1@300
     """
-    from .batch import read_table
-    from .parameters import ConfigError
-    from .task import DEFAULT_REQUEUES
-
     folder = os.path.abspath(folder)
     requeues = DEFAULT_REQUEUES if requeues is None else requeues
     check_options(cpus, time, partition, requeues, signal_seconds)
@@ -397,6 +427,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
     with open(os.path.join(folder, "params.json")) as fh:
         params = json.load(fh)
     est = estimate(params)
+    task = task_module(folder)
     part = f"#SBATCH --partition={partition}\n" if partition else ""
     text = f"""#!/bin/bash
 #SBATCH --job-name={name or os.path.basename(folder)}
@@ -407,7 +438,7 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
 #SBATCH --requeue
 #SBATCH --open-mode=append
 #SBATCH --output={folder}/slurm-%A_%a.out
-{part}# Generated by python -m yade_scripts.slurm (or generate --slurm): one array task per run
+{part}# Generated by python -m yade_scripts.launch.slurm (or generate --slurm): one array task per run
 # line of table.txt ({len(rows)} lines) in the run folder below. Submit from anywhere:
 #   sbatch {folder}/slurm.sh          (some lines only: sbatch --array=2,5 ...)
 # By hand, one task: SLURM_ARRAY_TASK_ID=1 bash slurm.sh
@@ -417,14 +448,14 @@ def write_slurm(folder, cpus=2, time="24:00:00", partition=None, name=None, requ
 # Stop a task for good: scancel JOB_TASK (checkpoint written; resumable: sbatch --array=K ...)
 # Stop it now and have it resume (requeued): scancel --batch --signal=USR1 JOB_TASK
 #
-# Cost model (yade_scripts/slurm.py, docs/scenes.md): steps x contacts x us per contact-step
+# Cost model (yade_scripts/launch/slurm.py, docs/scenes.md): steps x contacts x us per contact-step
 #   {params['sample']}, {params['n_particles']} grains, kappa={params['kappa']:g}, I={params['inertial_number']:g}:
 #   ~{est['steps']:.3g} steps x ~{est['contacts']:.3g} contacts x {US_PER_CONTACT_STEP[params['sample']]} us
 #   (one core) = ~{est['core_hours']:.3g} core-hours per line
 HERE="${{RUN_DIR:-{folder}}}"
 for f in table.txt triaxial.py params.json pkg; do
     if [[ ! -e "$HERE/$f" ]]; then
-        echo "slurm.sh: $HERE/$f is missing: not the generated run folder (moved? write slurm.sh again there: python -m yade_scripts.slurm FOLDER)" >&2
+        echo "slurm.sh: $HERE/$f is missing: not the generated run folder (moved? write slurm.sh again there: python -m yade_scripts.launch.slurm FOLDER)" >&2
         exit 2
     fi
 done
@@ -434,13 +465,13 @@ for PY in "$(head -n 1 "$YADE" | sed -n 's|^#![[:space:]]*\\([^[:space:]]*\\).*|
     [[ -n "$PY" ]] && "$PY" -c 'import numpy, h5py' 2>/dev/null && break
     PY=
 done
-[[ -n "$PY" ]] || {{ echo "slurm.sh: no Python with numpy and h5py for yade_scripts.task" >&2; exit 2; }}
+[[ -n "$PY" ]] || {{ echo "slurm.sh: no Python with numpy and h5py for {task}" >&2; exit 2; }}
 export PYTHONPATH="$HERE/pkg" OMP_WAIT_POLICY=PASSIVE
 cd "$HERE"      # python -m looks in the working folder first: the folder's own pkg/, never a checkout's
 # the kernel's YADE plugin for this node's YADE: carried by the folder, else built
 # here (about a minute, once); where it cannot be, the scene steps the kernel from a PyRunner
 "$PY" -m yade_scripts.yadeplugin build >&2 || true
-exec "$PY" -m yade_scripts.task "$HERE" --requeues {int(requeues)}
+exec "$PY" -m {task} "$HERE" --requeues {int(requeues)}
 """
     path = os.path.join(folder, "slurm.sh")
     with open(path, "w") as fh:
@@ -569,15 +600,13 @@ def submit(folder, array=None, sbatch_args=()):
     >>> submit(tempfile.mkdtemp())
     Traceback (most recent call last):
         ...
-    yade_scripts.parameters.ConfigError: ...: no slurm.sh (generate --slurm, or python -m yade_scripts.slurm FOLDER)
+    yade_scripts.scene.parameters.ConfigError: ...: no slurm.sh (generate --slurm, or python -m yade_scripts.launch.slurm FOLDER)
     """
     import subprocess
 
-    from .parameters import ConfigError
-
     script = os.path.join(os.path.abspath(folder), "slurm.sh")
     if not os.path.exists(script):
-        raise ConfigError(f"{folder}: no slurm.sh (generate --slurm, or python -m yade_scripts.slurm FOLDER)")
+        raise ConfigError(f"{folder}: no slurm.sh (generate --slurm, or python -m yade_scripts.launch.slurm FOLDER)")
     exe = shutil.which("sbatch")
     if exe is None:
         raise ConfigError("sbatch is not on the PATH (not a SLURM login node?)")
@@ -676,7 +705,7 @@ def add_options(ap, prefix="--slurm-"):
         Their names' start: ``--slurm-`` (``generate``) or ``--`` (this
         module's command line). The options: cpus (int, default 2), time
         (a SLURM time, default 24:00:00), partition (default None),
-        requeues (int, default None: :data:`yade_scripts.task.DEFAULT_REQUEUES`)
+        requeues (int, default None: :data:`DEFAULT_REQUEUES`)
         and signal (int, s, default :data:`DEFAULT_SIGNAL_SECONDS`).
 
     Returns
@@ -686,7 +715,6 @@ def add_options(ap, prefix="--slurm-"):
     ap.add_argument(prefix + "cpus", type=int, default=2, help="cores per array task (default 2)")
     ap.add_argument(prefix + "time", default="24:00:00", help="time limit of one job (default 24:00:00)")
     ap.add_argument(prefix + "partition", help="SLURM partition (default: the cluster's)")
-    from .task import DEFAULT_REQUEUES
     ap.add_argument(prefix + "requeues", type=int, default=None,
                     help=f"requeues of a task at most, each after a time limit (default {DEFAULT_REQUEUES})")
     ap.add_argument(prefix + "signal", type=int, default=DEFAULT_SIGNAL_SECONDS,
@@ -721,7 +749,7 @@ def options_of(args, prefix="slurm_"):
 
 
 def main(argv=None):
-    """``python -m yade_scripts.slurm FOLDER [options]``: write the folder's
+    """``python -m yade_scripts.launch.slurm FOLDER [options]``: write the folder's
     ``slurm.sh`` again (:func:`write_slurm`, e.g. for a moved folder), or
     with ``--submit [--array TASKS]`` submit it (:func:`submit`).
 
@@ -736,9 +764,7 @@ def main(argv=None):
         The exit code: 0 written or submitted; 2 refused (one line on
         stderr).
     """
-    from .parameters import ConfigError
-
-    ap = argparse.ArgumentParser(prog="python -m yade_scripts.slurm",
+    ap = argparse.ArgumentParser(prog="python -m yade_scripts.launch.slurm",
                                  description="Write slurm.sh, a SLURM job array over a run folder's table "
                                              "(or, with --submit, submit it).")
     ap.add_argument("folder", help="a generated run folder (table.txt, triaxial.py, pkg/)")
@@ -761,7 +787,7 @@ def main(argv=None):
     except ConfigError as exc:
         print(f"slurm: error: {exc}", file=sys.stderr)
         return 2
-    print(f"slurm: {path}; submit with: sbatch {path} (or python -m yade_scripts.slurm {args.folder} --submit, "
+    print(f"slurm: {path}; submit with: sbatch {path} (or python -m yade_scripts.launch.slurm {args.folder} --submit, "
           f"which records the job for --collect)", file=sys.stderr)
     return 0
 

@@ -4,7 +4,7 @@ starts it (a study, a sweep, a SLURM task, a user at the shell).
 A *run* is one table line of a generated run folder (or the folder's own
 scene); it writes the dump ``STEM.h5`` and its companions (:class:`RunFiles`).
 An *attempt* is one YADE process on it. The scene (``triaxial.py``,
-:mod:`yade_scripts.attempt`) ends an attempt with one of the exit codes
+:mod:`yade_scripts.runs.attempt`) ends an attempt with one of the exit codes
 below; whatever started it applies :func:`judge`, the one rule for what
 comes next, and appends the attempt to the run's record
 (``STEM.attempts.json``, :func:`record_attempt`). :func:`state_of` reads
@@ -19,7 +19,7 @@ Exit codes of the scene:
   snapshots are kept, the checkpoints removed (a blow-up replays
   identically from a checkpoint, so it is never retried);
 * :data:`EXIT_BUSY` (4): another process holds the run (its lock,
-  :mod:`yade_scripts.runlock`); nothing was touched;
+  :mod:`yade_scripts.runs.runlock`); nothing was touched;
 * :data:`EXIT_TERM` (75, EX_TEMPFAIL): stopped by SIGTERM after writing a
   checkpoint; run it again to resume;
 * anything else is a crash: run it again to resume from the newest
@@ -36,7 +36,8 @@ import os
 import shutil
 from dataclasses import dataclass
 
-from .runlock import RunBusy
+from . import checkpoint
+from .runlock import RunBusy, describe, holds, lock_path, run_holder
 
 EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_BUSY, EXIT_TERM = 0, 2, 3, 4, 75
 #: a run that crashed and left a checkpoint is started again this many times
@@ -180,7 +181,7 @@ def checkpoint_position(dump):
     -------
     tuple of (int, str) or None
         (step, stage) of the newest checkpoint whose header reads
-        (:func:`yade_scripts.checkpoint.header`; the payload is checked only
+        (:func:`yade_scripts.runs.checkpoint.header`; the payload is checked only
         when the run resumes), or None.
 
     Examples
@@ -188,8 +189,6 @@ def checkpoint_position(dump):
     >>> checkpoint_position("/nonexistent/run.h5") is None
     True
     """
-    from . import checkpoint
-
     for path in checkpoint.candidates(RunFiles(dump).checkpoint):
         try:
             h = checkpoint.header(path)
@@ -332,7 +331,7 @@ SET_ASIDE = ("truncated", "does-not-verify", "not-hdf5")
 def clear_attempt(dump):
     """Clear what an unfinished attempt left (:meth:`RunFiles.written_by_an_attempt`);
     its logs, attempts record and lock are kept. Call it holding the run's
-    lock (:mod:`yade_scripts.runlock`). A dump that may hold a finished run
+    lock (:mod:`yade_scripts.runs.runlock`). A dump that may hold a finished run
     is never removed (:func:`dump_condition`): a complete one stays; one
     that cannot be opened now raises :class:`DumpUnreadable` and nothing is
     touched; a truncated, not-verifying or non-HDF5 one is moved aside
@@ -609,7 +608,7 @@ KILLED = ("killed with its launcher, no end recorded (a node failure, SIGKILL, o
 def reclaim_killed(dump):
     """Mark every attempt still recorded as running as killed
     (:data:`KILLED`). Call it holding the run's lock
-    (:mod:`yade_scripts.runlock`), when no attempt of the run can be running.
+    (:mod:`yade_scripts.runs.runlock`), when no attempt of the run can be running.
 
     Parameters
     ----------
@@ -738,7 +737,7 @@ class RunState:
 def state_of(dump):
     """What a run's files say about it, in this order: a complete dump; a
     process holding the run's lock (running: named,
-    :mod:`yade_scripts.runlock`; never this process); a checkpoint
+    :mod:`yade_scripts.runs.runlock`; never this process); a checkpoint
     (resumable at its step); the last recorded attempt failed (its reason);
     files of an attempt without either (unfinished: killed before its first
     checkpoint, it starts afresh); nothing (not started). A dump is complete
@@ -764,8 +763,6 @@ def state_of(dump):
     >>> state_of("/nonexistent/run.h5")
     RunState(state='not started', detail='not started', step=None, holder=None)
     """
-    from .runlock import describe, holds, lock_path, run_holder
-
     kind, why = dump_condition(dump)
     if kind == "complete":
         return RunState("complete", "complete")

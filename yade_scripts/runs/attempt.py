@@ -10,7 +10,7 @@ checkpoint holds.
     if run.resumed: run.restore(set_state, where)
     outcome = run.loop(done, get_state, where)    # "done", "failed", "terminated" or "stalled"
 
-A checkpoint (:mod:`yade_scripts.checkpoint`) holds YADE's scene (O.save),
+A checkpoint (:mod:`yade_scripts.runs.checkpoint`) holds YADE's scene (O.save),
 the dump's and the log's positions, the run's history (wall and engine
 seconds, earlier resumes) and the scene's own state: ``get_state()``
 returns (JSON-able dict, {name: array}), whose keys join the checkpoint's
@@ -18,7 +18,7 @@ metadata, and ``set_state(meta, arrays)`` gets that metadata back (the
 loading program, the kernel's pair histories ...).
 Whether an attempt resumes, and from which checkpoint, is decided here;
 the exit codes and what comes after an attempt are
-:mod:`yade_scripts.runstate`'s.
+:mod:`yade_scripts.runs.runstate`'s.
 
 numpy, h5py and the standard library; the YADE objects (``O``) are passed in.
 """
@@ -50,7 +50,7 @@ class Resumed:
     checkpoint : str
         Its file (``STEM.ckpt`` or ``STEM.ckpt.prev``).
     meta : dict
-        The checkpoint's metadata (:func:`yade_scripts.checkpoint.read`):
+        The checkpoint's metadata (:func:`yade_scripts.runs.checkpoint.read`):
         fingerprint, step, time, stage, eps_1, n_snapshots, dump_parameters
         (JSON text), log_bytes, why, the run's history (wall_seconds, engine_seconds, resumes) and
         the keys of the scene's ``get_state()``.
@@ -134,13 +134,13 @@ class Attempt:
     On creation it decides how the attempt begins: :attr:`complete` (the
     dump is finished: nothing to do), :attr:`resumed` (a
     :class:`Resumed`: the newest usable checkpoint written with the same
-    ``parameters``, see :func:`yade_scripts.checkpoint.choose`), or afresh
+    ``parameters``, see :func:`yade_scripts.runs.checkpoint.choose`), or afresh
     (what an unfinished attempt left is removed, with a line through
     ``say``). ``resume=False`` always starts afresh. Before it looks at
     any file it makes sure it is the run's only writer
-    (:mod:`yade_scripts.runlock`): the process that started it holds the
+    (:mod:`yade_scripts.runs.runlock`): the process that started it holds the
     run's lock for it, or it takes the lock itself, held until the process
-    ends; another holder raises :class:`~yade_scripts.runlock.RunBusy`
+    ends; another holder raises :class:`~yade_scripts.runs.runlock.RunBusy`
     (one line naming it) and nothing is touched. From then on SIGTERM
     only raises :attr:`terminated`; the run stops at the end of a step and
     writes a checkpoint.
@@ -158,9 +158,9 @@ class Attempt:
         The running YADE's ``O``.
     dump : str
         The run's dump, ``STEM.h5`` (its companions:
-        :class:`~yade_scripts.runstate.RunFiles`).
+        :class:`~yade_scripts.runs.runstate.RunFiles`).
     parameters : dict
-        The run's parameters; their :func:`yade_scripts.checkpoint.fingerprint`
+        The run's parameters; their :func:`yade_scripts.runs.checkpoint.fingerprint`
         must match a checkpoint's for it to be used.
     checkpoint_seconds : float
         Seconds of wall time between two periodic checkpoints (0 or less:
@@ -184,10 +184,10 @@ class Attempt:
         As given.
     checkpoint_seconds : float
         As given.
-    files : yade_scripts.runstate.RunFiles
+    files : yade_scripts.runs.runstate.RunFiles
         The run's files.
     fingerprint : str
-        :func:`yade_scripts.checkpoint.fingerprint` of ``parameters``.
+        :func:`yade_scripts.runs.checkpoint.fingerprint` of ``parameters``.
     complete : bool
         True when the dump was finished already: nothing to do.
     resumed : Resumed or None
@@ -217,13 +217,13 @@ class Attempt:
     resumes : list of dict
         One per resume so far: step, stage, eps_1, checkpoint (file name),
         written_because ("periodic" or "SIGTERM") and at (UTC, ISO 8601).
-    lock : yade_scripts.runlock.RunLock or None
+    lock : yade_scripts.runs.runlock.RunLock or None
         The run's lock when this process took it itself (released at
         exit); None when the process that started it holds it.
 
     Raises
     ------
-    yade_scripts.runlock.RunBusy
+    yade_scripts.runs.runlock.RunBusy
         Another live process holds the run's lock (one line naming it);
         nothing was touched.
     """
@@ -421,7 +421,7 @@ class Attempt:
         ValueError
             A key of ``state`` is one of the checkpoint's own metadata
             names, or an array name is reserved or of dtype object
-            (:func:`yade_scripts.checkpoint.encode`).
+            (:func:`yade_scripts.runs.checkpoint.encode`).
         """
         O, f = self.O, self.files
         t_save = time.time()
