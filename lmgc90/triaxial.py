@@ -57,21 +57,22 @@ PARAMETERS = dict(
     friction=0.5,                 # grain-grain Coulomb friction (IQS_CLB)
     wall_friction=0.0,            # grain-wall friction
     density=2700.0,               # kg/m^3
-    dt=1e-4,                      # s, time step
+    dt=5e-4,                      # s, time step
     theta=0.5,                    # theta method
-    nlgs_tol=1.666e-4,            # NLGS tolerance (LMGC90's QM/16 norm: quadratic mean of the velocity change over the forces, /16)
+    nlgs_tol=1e-3,                # NLGS tolerance (LMGC90's QM/16 norm: quadratic mean of the velocity change over the forces, /16)
     nlgs_norm="QM/16",            # LMGC90's check norm
     nlgs_relax=1.0,               # NLGS relaxation
     nlgs_check_every=10,          # NLGS iterations between convergence checks
     nlgs_max_checks=500,          # ... checks before a step is taken unconverged
+    nlgs_scramble=1,              # 1: NLGS sweeps the contacts in a shuffled order between checks (LMGC90's quick scramble)
     alert_factor=0.1,             # alert distance = this x the smallest grain radius
     cundall_iterations=50,        # PRPRx common-plane (Cundall) detection iterations
     inertial_number=0.005,        # shear: I = rate d sqrt(rho / sigma0) (ignored if wall_speed > 0)
     wall_speed=0.0,               # m/s, top wall speed in shear (0: from inertial_number)
-    wall_mass_factor=1.0,         # each wall's mass / the sample's mass
+    wall_mass_factor=10.0,        # each wall's mass / the sample's mass
     compaction_speed=0.05,        # m/s, the pressed walls' speed cap in the isotropic stage
-    iso_tolerance=0.02,           # isotropic: |mean wall stress - sigma0| < tol sigma0 on every wall ...
-    iso_window=50,                # ... averaged over this many steps, and
+    iso_tolerance=0.05,           # isotropic: |mean wall stress - sigma0| < tol sigma0 on every wall ...
+    iso_window=100,               # ... averaged over this many steps, and
     iso_volume_tolerance=1e-4,    # ... the box's volume changing by less than this over the window
     iso_min_steps=100,            # ... and at least this many isotropic steps
     dump_strain=0.01,             # a snapshot every delta eps_1 in shear
@@ -85,8 +86,8 @@ PARAMETERS = dict(
 )
 
 EXIT_DONE, EXIT_CONFIG, EXIT_FAILED, EXIT_BUSY, EXIT_TERM = 0, 2, 3, 4, 75
-LOG_HEADER = ("step,time,stage,Lx,Ly,Lz,s_xm,s_xp,s_ym,s_yp,s_zm,s_zp,nlgs_iterations,converged,"
-              "interactions,seconds")
+LOG_HEADER = ("step,time,stage,Lx,Ly,Lz,s_xm,s_xp,s_ym,s_yp,s_zm,s_zp,v_xm,v_xp,v_ym,v_yp,v_zm,v_zp,"
+              "nlgs_iterations,converged,interactions,seconds")
 
 
 def say(message):
@@ -213,6 +214,8 @@ def main(argv=None):
                              mu=P["friction"], mu_wall=P["wall_friction"], alert=alert, wall_mass=wall_mass,
                              wall_half_size=half_size, wall_half_thickness=half_thick, pre=pre)
     system = CDSystem(chipy, folder, P["dt"], P["theta"], P["cundall_iterations"], restart=resumed)
+    if P["nlgs_scramble"]:
+        chipy.nlgs_3D_SetWithQuickScramble()
     if system.n_bodies != N + 6:
         say(f"invalid starting state: LMGC90 read {system.n_bodies} bodies for {N} grains and 6 walls")
         return EXIT_CONFIG
@@ -229,6 +232,10 @@ def main(argv=None):
     params_dump = {**P, "method": "contact dynamics (LMGC90)", "alert": alert, "wall_mass": wall_mass,
                    "wall_half_thickness": half_thick, "start_from": start.source, "rate_shear": rate_shear,
                    "walls": "PLANx", "nlgs": "Stored_Delassus_Loops"}
+    params_dump["wall_mass_lmgc90"] = float(system.masses[wall_rows[0]])    # kg, as LMGC90 computed it
+    if not resumed:
+        with open(stem + ".params.json", "w") as fh:
+            json.dump(params_dump, fh, indent=1, default=float)
     if resumed:
         writer = DumpWriter.resume(out, saved["n_snapshots"])
     else:
@@ -262,6 +269,10 @@ def main(argv=None):
     def box():
         c = system.vectors("Coor_", wall_rows)[:, :3]
         return cdcontrol.box_from_walls(c, half_thick)
+
+    def wall_normal_velocities():
+        v = system.vectors("V____", wall_rows)
+        return [v[k, cdmodel.WALL_AXES[k][0]] for k in range(6)]
 
     def wall_forces():
         return system.vectors("Reac_", wall_rows)[:, :3]
@@ -359,7 +370,8 @@ def main(argv=None):
         sig = cdcontrol.wall_stresses(wall_forces(), L)
         n_inter = system.n_interactions()
         log.write(f"{system.step_number},{system.time:.9g},{st['stage']},{L[0]:.9g},{L[1]:.9g},{L[2]:.9g},"
-                  + ",".join(f"{s:.6g}" for s in sig)
+                  + ",".join(f"{s:.9g}" for s in sig) + ","
+                  + ",".join(f"{v:.9g}" for v in wall_normal_velocities())
                   + f",{system.iterations},{int(system.converged)},{n_inter},{seconds:.4f}\n")
         # ---- blow-up checks
         pos = system.vectors("Coor_", grain_rows)[:, :3]

@@ -181,15 +181,34 @@ def test_love_weber_stress_equals_the_stress_of_lmgc90_s_reactions(tiny_run):
 
 @needs_lmgc90
 def test_the_lateral_walls_hold_sigma0(tiny_run):
-    """In shear the lateral walls are pushed by sigma0 times their area; their
-    reactions hold sigma0 on average (a wall of mass M moves by M dv = (F -
-    R) dt, so the mean over the shear differs from sigma0 by M |dv| / (A T))."""
+    """In shear each lateral wall is a free body of mass M pushed by sigma0
+    times its area A (from the box at the step's start) and held by the
+    grains' reaction, sigma A: Moreau-Jean's step gives, exactly,
+    sigma_k - sigma0 = s M (v_k - v_{k-1}) / (A_k dt) (s the wall's outward
+    sign, v its normal velocity). So the mean over the shear differs from
+    sigma0 by s M (v_end - v_start) / (A dt n), the servo's only error: a
+    constant force holds sigma0 on average to within the wall's change of
+    momentum over the averaging time. Checked to the log's 9 digits, and the
+    mean hold within 10 % on this short shear (the long runs' hold is in
+    docs/lmgc90.md)."""
     rows = log_rows(tiny_run)
-    shear = rows[rows["stage"] == "shear"]
-    assert len(shear) > 20
-    lateral = np.column_stack([shear[f] for f in ("s_xm", "s_xp", "s_ym", "s_yp")])
-    mean = lateral.mean(axis=0) / SIGMA0
-    assert np.all(np.abs(mean - 1.0) < 0.05), mean
+    info = json.loads((tiny_run / "run.info.json").read_text())
+    params = json.loads((tiny_run / "run.params.json").read_text())
+    M, dt = params["wall_mass_lmgc90"], params["dt"]
+    assert abs(M - params["wall_mass"]) < 1e-6 * M      # the density goes through BULK_BEHAV.DAT at 8 digits
+    k = np.flatnonzero(rows["stage"] == "shear")
+    assert len(k) > 20 and info["steps"] == rows["step"][-1]
+    for n_w, (name, side, (a, b)) in enumerate(zip(("xm", "xp", "ym", "yp"), (-1, 1, -1, 1),
+                                                  (("Ly", "Lz"), ("Ly", "Lz"), ("Lx", "Lz"), ("Lx", "Lz")))):
+        A_before = rows[a][k - 1] * rows[b][k - 1]              # the area the applied force used
+        A_after = rows[a][k] * rows[b][k]                       # the area the logged stress used
+        R = rows["s_" + name][k] * A_after
+        dv = rows["v_" + name][k] - rows["v_" + name][k - 1]
+        lhs = (R - SIGMA0 * A_before) * dt
+        rhs = side * M * dv
+        assert np.abs(lhs - rhs).max() < 1e-6 * np.abs(R * dt).max()
+        mean = np.mean(rows["s_" + name][k]) / SIGMA0
+        assert abs(mean - 1.0) < 0.10, (name, mean)
 
 
 @needs_lmgc90
