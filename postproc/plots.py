@@ -665,6 +665,13 @@ def plot_footprint(extents, threshold, path, label=""):
     x = np.asarray(extents, float)
     x = x[np.isfinite(x).all(axis=1) & (x[:, 1] > 0)]
     fig, ax = plt.subplots(figsize=(6.4, 4))
+    if not len(x):       # no pair overlaps (a rigid Contact Dynamics packing): nothing to bin
+        ax.text(0.5, 0.5, "no overlapping force-bearing pair: no footprint", ha="center", va="center",
+                transform=ax.transAxes)
+        ax.set_axis_off()
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+        return fig
     bins = np.geomspace(max(x.min(), 1e-5), x.max() * 1.0001, 41)
     for j, name, c in ((0, "$L_1/d$ (simple below t)", "C0"), (1, "$L_2/d$ (triple above t)", "C3")):
         h, _ = np.histogram(x[:, j], bins)

@@ -14,7 +14,7 @@ import pytest
 NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coordination", "networks", "pertype",
                                             "strain", "statistics", "analysis", "axes", "periodic", "contactset",
                                             "contacttypes", "contactpoints", "commonplane", "footprint",
-                                            "classify")) + tuple(f"yade_scripts.{m}" for m in (
+                                            "classify", "cdpoints", "lmgc90files")) + tuple(f"yade_scripts.{m}" for m in (
     "runlock", "runstate", "checkpoint", "attempt", "pool", "task", "archive", "slurm"))
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",

@@ -12,9 +12,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 #: lower ones, never a higher one
 LAYERS = [
     ("base", {"errors", "schema", "axes", "statistics", "periodic", "provenance", "staging"}),
-    ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
+    ("readers", {"contactset", "tables", "lammpsdump", "synthetic", "lmgc90files"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
-                 "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
+                 "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab",
+                 "cdpoints"}),
     ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
