@@ -12,13 +12,18 @@ from .cdmodel import WALL_AXES
 
 
 def box_from_walls(centres, half_thickness):
-    """(lo, hi) (3,) m of the box bounded by the walls' inner faces.
+    """The box bounded by the walls' inner faces.
 
     Parameters
     ----------
     centres : array_like, shape (6, 3)
-        m, the walls' centres.
+        m, the walls' centres, dump order x-, x+, y-, y+, z-, z+.
     half_thickness : float
+        m.
+
+    Returns
+    -------
+    lo, hi : ndarray, shape (3,)
         m.
 
     Examples
@@ -37,14 +42,31 @@ def box_from_walls(centres, half_thickness):
 
 
 def wall_areas(L):
-    """(6,) m^2, each wall's loaded area on a box of lengths ``L`` (3,)."""
+    """Each wall's loaded area.
+
+    Parameters
+    ----------
+    L : array_like, shape (3,)
+        m, the box's lengths.
+
+    Returns
+    -------
+    ndarray, shape (6,)
+        m^2, dump order x-, x+, y-, y+, z-, z+.
+
+    Examples
+    --------
+    >>> from lmgc90.cdcontrol import wall_areas
+    >>> print(wall_areas([1.0, 2.0, 3.0]))
+    [6. 6. 3. 3. 2. 2.]
+    """
     L = np.asarray(L, float)
     a = np.array([L[1] * L[2], L[0] * L[2], L[0] * L[1]])
     return np.repeat(a, 2)
 
 
 def wall_stresses(forces, L):
-    """(6,) Pa, the normal stress on each wall, compression positive.
+    """The normal stress on each wall, compression positive.
 
     Parameters
     ----------
@@ -53,12 +75,17 @@ def wall_stresses(forces, L):
     L : array_like, shape (3,)
         m, the box's lengths.
 
+    Returns
+    -------
+    ndarray, shape (6,)
+        Pa: the outward normal component of the force over the wall's area.
+
     Examples
     --------
     >>> import numpy as np
     >>> from lmgc90.cdcontrol import wall_stresses
     >>> F = np.zeros((6, 3)); F[0, 0], F[1, 0] = -2.0, 2.0; F[5, 2] = 4.0
-    >>> print(wall_stresses(F, [1.0, 1.0, 2.0]))
+    >>> print(wall_stresses(F, [1.0, 1.0, 2.0]) + 0.0)
     [1. 1. 0. 0. 0. 4.]
     """
     F = np.asarray(forces, float).reshape(6, 3)
@@ -106,8 +133,15 @@ def pressing_forces(sigma, L, walls):
 class StressWindow:
     """The wall stresses of the last ``n`` steps: their means and spreads.
 
-    CD's wall reactions vary from step to step; the isotropic state and the
-    servo's hold of sigma0 are judged on the mean over a window.
+    CD's wall reactions vary from step to step; the isotropic state is
+    judged on the mean over a window.
+
+    Attributes
+    ----------
+    n : int
+        The window's length, steps.
+    rows : list of ndarray, shape (6,)
+        Pa, the stresses of the last ``n`` steps, oldest first.
 
     Examples
     --------
@@ -124,20 +158,39 @@ class StressWindow:
         self.rows = []
 
     def add(self, sigma):
+        """Append one step's wall stresses (6,) Pa, dropping the oldest beyond ``n``.
+
+        Returns
+        -------
+        None
+        """
         self.rows.append(np.asarray(sigma, float).copy())
         if len(self.rows) > self.n:
             self.rows.pop(0)
 
     @property
     def full(self):
+        """True once the window holds ``n`` steps."""
         return len(self.rows) == self.n
 
     def mean(self):
-        """(6,) Pa."""
+        """The mean over the window.
+
+        Returns
+        -------
+        ndarray, shape (6,)
+            Pa.
+        """
         return np.mean(self.rows, axis=0)
 
     def std(self):
-        """(6,) Pa, the standard deviation over the window."""
+        """The standard deviation over the window.
+
+        Returns
+        -------
+        ndarray, shape (6,)
+            Pa.
+        """
         return np.std(self.rows, axis=0)
 
 
@@ -156,6 +209,10 @@ def isotropic_reached(mean_stress, sigma0, tolerance, volume_change, volume_tole
         The box's relative volume change over the window.
     volume_tolerance : float
         ... below this.
+
+    Returns
+    -------
+    bool
 
     Examples
     --------

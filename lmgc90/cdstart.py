@@ -16,7 +16,13 @@ from .grains import bounding_size
 
 
 class StartError(ValueError):
-    """A starting state that cannot be used (one line)."""
+    """A starting state that cannot be used (one line).
+
+    Attributes
+    ----------
+    args : tuple
+        The one-line message.
+    """
 
 
 @dataclass

@@ -48,6 +48,12 @@ class CDSystem:
     ----------
     n_bodies : int
         RBDY3 bodies (grains, then the six walls).
+    masses : ndarray, shape (n_bodies,)
+        kg, as LMGC90 computed them.
+    iterations : int
+        NLGS iterations of the last step.
+    converged : bool
+        Whether the last step's NLGS met its tolerance.
     """
 
     def __init__(self, chipy, folder, dt, theta=0.5, cundall_iterations=50, restart=None):
@@ -87,27 +93,66 @@ class CDSystem:
     # ------------------------------------------------------------ state
     @property
     def step_number(self):
-        """LMGC90's step counter."""
+        """LMGC90's step counter (int)."""
         return int(self.chipy.TimeEvolution_GetStep())
 
     @property
     def time(self):
-        """s, LMGC90's time."""
+        """LMGC90's time, s (float)."""
         return float(self.chipy.TimeEvolution_GetTime())
 
     def vectors(self, name, bodies):
-        """(len(bodies), 6) one of RBDY3's vectors ('Coor_', 'V____', 'Reac_' ...)
-        of the 0-based ``bodies``."""
+        """One of RBDY3's vectors of some bodies.
+
+        Parameters
+        ----------
+        name : str
+            RBDY3's name of the vector: 'Coor_' (m), 'V____' (m/s, rad/s),
+            'Reac_' (N, N m: the contact reaction force and moment), 'Xbeg_', 'Vbeg_' ...
+        bodies : iterable of int
+            0-based body rows.
+
+        Returns
+        -------
+        ndarray, shape (len(bodies), 6)
+        """
         return np.array([self.chipy.RBDY3_GetBodyVector(name, int(i) + 1) for i in bodies], float)
 
     def frames(self, bodies, name="IF___"):
-        """(len(bodies), 3, 3) inertia frames, columns the body axes in the global frame."""
+        """The bodies' inertia frames.
+
+        Parameters
+        ----------
+        bodies : iterable of int
+            0-based body rows.
+        name : str
+            'IF___' (now), 'IFbeg' (the step's start), 'IFref'.
+
+        Returns
+        -------
+        ndarray, shape (len(bodies), 3, 3)
+            Columns the body axes in the global frame.
+        """
         return np.array([self.chipy.RBDY3_GetBodyMatrix(name, int(i) + 1) for i in bodies], float)
 
     def interactions(self):
-        """This step's interactions: (candidate body, antagonist body) (P,) int,
-        0-based; coor (P, 3) m; frames (P, 3, 3) columns t, n, s; reactions
-        (P, 3) N (impulses / dt); gaps (P,) m; law (P,) int."""
+        """This step's interactions (contact points).
+
+        Returns
+        -------
+        candidate, antagonist : ndarray, shape (P,)
+            int, 0-based body rows.
+        coor : ndarray, shape (P, 3)
+            m, the points.
+        frames : ndarray, shape (P, 3, 3)
+            Columns t, n, s (n from the antagonist to the candidate).
+        reactions : ndarray, shape (P, 3)
+            N, (r_t, r_n, r_s) on the candidate (LMGC90's impulses / dt).
+        gaps : ndarray, shape (P,)
+            m, negative for an interpenetration.
+        law : ndarray, shape (P,)
+            int, the contact law's number.
+        """
         inters = self.chipy.getInteractions(this=True, human=False)
         return (np.asarray(inters["icdbdy"], np.int64) - 1, np.asarray(inters["ianbdy"], np.int64) - 1,
                 np.asarray(inters["coor"], float).reshape(-1, 3), np.asarray(inters["uc"], float).reshape(-1, 3, 3),
@@ -115,13 +160,24 @@ class CDSystem:
                 np.asarray(inters["behav"], np.int64).reshape(-1))
 
     def n_interactions(self):
-        """This step's interactions (contact points within the alert distance), all kinds."""
+        """The number of this step's interactions (contact points within the alert distance).
+
+        Returns
+        -------
+        int
+            PRPRx, PRPLx, SPSPx and SPPLx together.
+        """
         c = self.chipy
         return int(sum(c.inter_handler_3D_tgetNb(k) for k in (c.PRPRx_ID, c.PRPLx_ID, c.SPSPx_ID, c.SPPLx_ID)))
 
     # ------------------------------------------------------------ driving
     def free_dof(self, body, dof):
-        """Let the 0-based ``body``'s velocity DOF ``dof`` (1..6) move freely."""
+        """Let the 0-based ``body``'s velocity DOF ``dof`` (1..6) move freely.
+
+        Returns
+        -------
+        None
+        """
         self.chipy.RBDY3_SetInvisibleVlocyDrivenDof(int(body) + 1, int(dof))
         self.driven.pop((int(body), int(dof)), None)
 
@@ -129,7 +185,12 @@ class CDSystem:
         """Drive DOF ``dof`` (1..6) of the 0-based ``body`` at ``velocity``
         (m/s) from the next step on (LMGC90 evaluates a driven DOF from its
         DRV_DOF.DAT definition at each step's start, so :meth:`step` sets
-        the value again every step, after ``IncrementStep``)."""
+        the value again every step, after ``IncrementStep``).
+
+        Returns
+        -------
+        None
+        """
         self.chipy.RBDY3_SetVisibleVlocyDrivenDof(int(body) + 1, int(dof))
         self.driven[(int(body), int(dof))] = float(velocity)
 
@@ -145,8 +206,11 @@ class CDSystem:
             ``check_every`` (iterations between convergence checks) and
             ``max_checks``.
 
-        Sets :attr:`iterations` and :attr:`converged` (False when the
-        iterations ran out before the tolerance was met).
+        Returns
+        -------
+        None
+            Sets :attr:`iterations` and :attr:`converged` (False when the
+            iterations ran out before the tolerance was met).
         """
         c = self.chipy
         c.IncrementStep()
@@ -183,7 +247,12 @@ class CDSystem:
     def save(self, folder):
         """Write the state after the last step to ``folder`` (made; must not
         exist): LMGC90's ``DOF.LAST`` and ``Vloc_Rloc.LAST`` and
-        ``bodies.npz`` (Xbeg, Vbeg (B, 6), IFbeg (B, 3, 3), step, time)."""
+        ``bodies.npz`` (Xbeg, Vbeg (B, 6), IFbeg (B, 3, 3), step, time).
+
+        Returns
+        -------
+        None
+        """
         c = self.chipy
         os.makedirs(folder)
         c.WriteLastDof()

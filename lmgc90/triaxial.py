@@ -127,6 +127,18 @@ def parse(argv):
 
 
 def main(argv=None):
+    """Run the scene (``python -m lmgc90.triaxial``).
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command line without the program (default ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit code (module docstring).
+    """
     folder, P = parse(sys.argv[1:] if argv is None else argv)
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     sys.path.insert(0, root)
