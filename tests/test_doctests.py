@@ -17,10 +17,12 @@ NUMPYDOC = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "coord
                                             "lmgc90shape", "lmgc90count", "footprint",
                                             "classify", "columns", "cdpoints", "lmgc90files")) + tuple(f"yade_scripts.{m}" for m in (
     "runs.runlock", "runs.runstate", "runs.checkpoint", "runs.attempt", "launch.pool", "launch.task", "launch.slurm",
-    "campaign.archive", "campaign.archive_store", "campaign.runfolders"))
+    "campaign.archive", "campaign.archive_store", "campaign.runfolders")) + tuple(
+    f"lmgc90.{m}" for m in ("grains", "cdcontacts", "cdcontrol", "cdmodel", "cdstart", "cdsystem"))
 #: the core modules whose every public function shows a runnable example
 EXAMPLES = tuple(f"postproc.{m}" for m in ("stress", "fabric", "angular", "strain", "coordination", "networks",
-                                           "pertype", "statistics")) + ("yade_scripts.runs.runlock", "yade_scripts.runs.runstate")
+                                           "pertype", "statistics")) + ("yade_scripts.runs.runlock", "yade_scripts.runs.runstate") + tuple(
+    f"lmgc90.{m}" for m in ("grains", "cdcontacts", "cdcontrol"))
 
 
 def public(module):
@@ -141,7 +143,7 @@ def _public_definitions(package):
 
     root = pathlib.Path(__file__).resolve().parent.parent / package
     for path in sorted(root.rglob("*.py")):
-        if any(part.startswith("_build") or part == "include" for part in path.parts):
+        if any(part.startswith("_build") or part in ("include", "vendor") for part in path.parts):
             continue
         tree = ast.parse(path.read_text())
         for node in tree.body:
@@ -153,7 +155,7 @@ def _public_definitions(package):
                             yield path, f"{node.name}.{m.name}", m
 
 
-@pytest.mark.parametrize("package", ("shapes", "yade_scripts"))
+@pytest.mark.parametrize("package", ("shapes", "yade_scripts", "lmgc90"))
 def test_no_public_definition_without_a_docstring(package):
     import ast
 
