@@ -19,7 +19,7 @@ SHAPES ?=
 # COUNTS="lmgc90 lmgc90-2009": the contact counts claim 6 is read by besides ours
 # (default lmgc90); on a finished study make study makes only the missing analyses
 COUNTS ?=
-# ARCHIVE=DEST: an archive of analysed runs (make archive; yade_scripts/archive.py):
+# ARCHIVE=DEST: an archive of analysed runs (make archive; yade_scripts/campaign/archive.py):
 # make study runs only the seeds it does not hold, reads those it does, and adds
 # each run it completes as soon as it is analysed
 ARCHIVE ?=
@@ -28,7 +28,7 @@ DRY_RUN ?=
 # SET_ASIDE=1: a run folder of STUDY made with other parameters is renamed
 # FOLDER.old-K and started afresh (without it the study refuses and renames nothing)
 SET_ASIDE ?=
-# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/pool.py)
+# OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/launch/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
 .PHONY: test test-fast docs study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front lmgc90 lmgc90-system
@@ -106,8 +106,7 @@ test-slurm: system venv kernel
 	$(SUDO) .ci/slurm-node install
 	$(PY) -m pytest -q -m slurm -s
 
-# The fast subset (no YADE, nothing slow): about 560 tests in 1 to 2 minutes on 2
-# quiet cores, for the edit-test loop.
+# The fast subset (no YADE, nothing slow), for the edit-test loop.
 test-fast: venv kernel
 	$(PY) -m pytest -q $(XDIST) -m "not yade and not slow"
 
@@ -121,11 +120,11 @@ shapes: $(SHAPES_LIB)
 # The main job: S1 and S2 on the default preset, side by side (2 cores),
 # then the analysis of every dump and the report (STUDY/report/report.md).
 # ENSEMBLE=n runs n seeds per sample in one schedule on JOBS cores
-# (yade_scripts/pool.py: longest first, no core idle at the end; a polyhedra
+# (yade_scripts/launch/pool.py: longest first, no core idle at the end; a polyhedra
 # job starts on JOB_THREADS threads). Finished runs are not run again.
 # One 16-core node: make study PRESET=intermediate ENSEMBLE=16 JOBS=16
 study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
-	$(PY) -m yade_scripts.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
+	$(PY) -m yade_scripts.campaign.study --preset $(PRESET) --out $(STUDY) --ensemble $(ENSEMBLE) \
 	    --jobs $(JOBS) --job-threads $(JOB_THREADS) $(if $(SHAPES),--library $(SHAPES)) \
 	    $(if $(COUNTS),--counts $(COUNTS)) $(if $(ARCHIVE),--archive $(ARCHIVE)) \
 	    $(if $(SET_ASIDE),--set-aside) $(if $(DRY_RUN),--dry-run)
@@ -136,17 +135,17 @@ study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 # long study to another host: make study ... ARCHIVE=DEST runs only the rest.
 archive: venv
 	@test -n "$(ARCHIVE)" || { echo "make archive: give ARCHIVE=DEST (e.g. reference_data/<study name>)"; exit 2; }
-	$(PY) -m yade_scripts.archive $(STUDY) $(ARCHIVE)
+	$(PY) -m yade_scripts.campaign.archive $(STUDY) $(ARCHIVE)
 
 # An archive's study collected on a host that has none of its run folders
 # (STUDY, a new folder; today's code): make collect-archive
 # ARCHIVE=reference_data/claim6-5000 STUDY=runs/claim6, then postproc results
 # STUDY --out reference_data/claim6-5000.json gives back the committed file.
-# An archive of another analysis version: python -m yade_scripts.archive
+# An archive of another analysis version: python -m yade_scripts.campaign.archive
 # collect-at-commit ARCHIVE OUT (its commit's code, docs/study.md).
 collect-archive: venv $(SHAPES_LIB)
 	@test -n "$(ARCHIVE)" || { echo "make collect-archive: give ARCHIVE=DIR"; exit 2; }
-	$(PY) -m yade_scripts.archive collect $(ARCHIVE) $(STUDY) --library $(SHAPES_LIB)
+	$(PY) -m yade_scripts.campaign.archive collect $(ARCHIVE) $(STUDY) --library $(SHAPES_LIB)
 
 # After make study: its results against the committed ones, which the README's
 # claims table shows ("same as the README", or each difference; exit 1 then).
@@ -162,16 +161,16 @@ results: venv
 	$(PY) -m postproc.cli results $(STUDY) --out reference_data/default-study.json \
 	    --readme README.md --figure docs/figures/study-qp.png
 
-# Speed against error: a sweep over kappa and I (yade_scripts.batch) around the
+# Speed against error: a sweep over kappa and I (yade_scripts.launch.batch) around the
 # default preset, 3 seeds per point, S1 200 grains and S2 1000 spheres
-# (FRONT_PLAN=default, about 2.2 h on 2 cores; FRONT_PLAN=kernel is the sweep
+# (FRONT_PLAN=default, 1.9 core-hours by the cost model; FRONT_PLAN=kernel is the sweep
 # around the soft preset, FRONT_PLAN=quick the older 24-grain, one-seed one),
 # then the analysis estimators on synthetic sets. Finished runs are not run again.
 FRONT ?= runs/front
 FRONT_PLAN ?= default
 front: system venv kernel $(SHAPES_LIB)
-	$(PY) -m yade_scripts.front --plan $(FRONT_PLAN) --out $(FRONT)
-	$(PY) -m postproc.cli analysis-front --out $(FRONT)-analysis
+	$(PY) -m yade_scripts.campaign.sweeps --plan $(FRONT_PLAN) --out $(FRONT)
+	$(PY) -m postproc.cli investigate analysis-front --out $(FRONT)-analysis
 
 # The size front: the default study at 200, 1000 and 5000 grains per sample
 # (presets small, default, intermediate; 3 + 3 seeds each, about 4.7
@@ -184,8 +183,8 @@ size-front: system venv kernel $(SHAPES_LIB)
 	$(MAKE) study PRESET=small STUDY=runs/small
 	$(MAKE) study PRESET=default STUDY=runs/study
 	$(MAKE) study PRESET=intermediate STUDY=runs/intermediate
-	$(PY) -m postproc.cli size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
-	$(PY) -m postproc.cli leaning-blocks runs/small runs/study runs/intermediate --out $(SIZE_FRONT)/blocks
+	$(PY) -m postproc.cli investigate size-front runs/small runs/study runs/intermediate --out $(SIZE_FRONT)
+	$(PY) -m postproc.cli investigate leaning-blocks runs/small runs/study runs/intermediate --out $(SIZE_FRONT)/blocks
 
 bench: venv
 	$(PY) benchmarks/bench_analysis.py

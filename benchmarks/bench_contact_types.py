@@ -5,7 +5,7 @@
 Angular criterion (postproc.contacttypes): random pairs of grains of the
 shape library (``make shapes``) with random orientations and random
 normals; prints contacts/s (best of 3). (The proportions of each pair type
-of such pairs, the geometric chance, are ``postproc random-types``.)
+of such pairs, the geometric chance, are ``postproc investigate random-types``.)
 
 Footprint criterion (postproc.classify, the default), with ``--dump`` (a
 kernel S1 dump): the last snapshot's contacts repeated up to N contacts,

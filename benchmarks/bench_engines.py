@@ -36,8 +36,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(sys.argv[0])))
 sys.path.insert(0, ROOT)
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from yade_packing import build_packing  # noqa: E402
-from yade_scripts.kernel_contacts import KernelContacts  # noqa: E402
-from yade_scripts.tangential import TangentialLaw  # noqa: E402
+from yade_scripts.scene.kernel_contacts import KernelContacts  # noqa: E402
+from yade_scripts.scene.tangential import TangentialLaw  # noqa: E402
 
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 args = sys.argv[1:]

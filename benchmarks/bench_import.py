@@ -41,7 +41,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
 
 from shapes.generate import generate_library  # noqa: E402
-from shapes.meshimport import Budget, import_mesh, read_mesh  # noqa: E402
+from shapes.hullreduce import Budget  # noqa: E402
+from shapes.meshimport import import_mesh, read_mesh  # noqa: E402
 from shapes.scans import scan_mesh, smooth_mesh, write_stl  # noqa: E402
 
 

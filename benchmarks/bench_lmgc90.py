@@ -6,7 +6,7 @@ The classifier's cost per contact of ``lmgc90``, ``lmgc90-planplan``,
 ``lmgc90-2009`` and ``commonplane`` on that snapshot of the dump (an index; negative from the
 end), in one run, as the median of 3 repetitions each, and their ratios.
 (Their agreement with LMGC90's compiled code is ``postproc
-lmgc90-agreement``.)
+investigate lmgc90-agreement``.)
 """
 import argparse
 import os

@@ -10,7 +10,7 @@ The second form steps dense packings of the study's own dumps instead (the
 same strain in a 1000- and a 5000-grain S1, say): see bench_scale_dense.py;
 the per-grain cost of a step at 5000 against 1000 is this form's ratio.
 
-For every N, a polyhedra run folder is generated (``yade_scripts.generate``:
+For every N, a polyhedra run folder is generated (``yade_scripts.campaign.generate``:
 the default preset with ``n_particles = N``, or the ``paper`` preset for
 N = 36 933, the published sample) and run as the study runs it (``yade -jT
 -n -x triaxial.py``) from the grains' placement into isotropic compaction.
@@ -56,9 +56,10 @@ import pandas as pd
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
-from yade_scripts import noremote, yadeplugin  # noqa: E402
-from yade_scripts.checkpoint import read as read_checkpoint  # noqa: E402
-from yade_scripts.generate import DEFAULT_LIBRARY, generate  # noqa: E402
+from yade_scripts.runs import noremote  # noqa: E402
+from yade_scripts import yadeplugin  # noqa: E402
+from yade_scripts.runs.checkpoint import read as read_checkpoint  # noqa: E402
+from yade_scripts.campaign.generate import DEFAULT_LIBRARY, generate  # noqa: E402
 
 PAPER_N = 36933
 STEP_LINE = re.compile(r"step (\d+) ")

@@ -9,7 +9,7 @@ Each dump's snapshot (e.g. the same shear strain of a 1000- and a
 saved in memory. Then BLOCKS rounds: in each, every packing in turn, on each
 path (the kernel plugin, when YADE loaded it, then the PyRunner;
 BENCH_PATHS="plugin" or "pyrunner" keeps one), is reloaded, given the
-kernel's engines (``yade_scripts.kernel_contacts``: the plugin's
+kernel's engines (``yade_scripts.scene.kernel_contacts``: the plugin's
 PolyhedraKernelEngine or its PyRunner) and NewtonIntegrator with the run's
 damping (walls fixed: the controller is the same Python at every size and on
 both paths and is timed in the runs themselves), stepped 2 steps untimed
@@ -30,7 +30,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))
 from yade_packing import build_packing  # noqa: E402
-from yade_scripts.kernel_contacts import KernelContacts  # noqa: E402
+from yade_scripts.scene.kernel_contacts import KernelContacts  # noqa: E402
 
 OUT, STEPS, BLOCKS = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 SPECS = [(a.rsplit(":", 1)[0], int(a.rsplit(":", 1)[1])) for a in sys.argv[4:]]

@@ -37,7 +37,7 @@ ROOT = os.getcwd()
 sys.path.insert(0, ROOT)
 from shapes.library import ShapeLibrary  # noqa: E402
 from shapes.overlap import ShapeTable, batch_overlap  # noqa: E402
-from yade_scripts.yadedump import outward_triangles  # noqa: E402
+from yade_scripts.scene.yadedump import outward_triangles  # noqa: E402
 
 log.setLevel("Polyhedra_support.cpp", log.ERROR)
 args = sys.argv[1:]

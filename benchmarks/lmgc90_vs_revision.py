@@ -32,7 +32,10 @@ def worker(root, dump, snapshot, route, out):
     the route's classifier (band test included), record every output of
     the LMGC90 counts into ``out`` (pickle) and print the seconds taken."""
     sys.path.insert(0, root)
-    from postproc import commonplane as cpl
+    try:                                        # LMGC90's count: its own module since the split
+        from postproc import lmgc90count as cpl
+    except ImportError:                         # of postproc/commonplane.py; before, there
+        from postproc import commonplane as cpl
     from postproc.classify import Classifier
     from postproc.schema import DumpReader
 

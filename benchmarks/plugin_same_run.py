@@ -30,8 +30,9 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
-from yade_scripts import noremote, yadeplugin  # noqa: E402
-from yade_scripts.generate import DEFAULT_LIBRARY, generate  # noqa: E402
+from yade_scripts.runs import noremote  # noqa: E402
+from yade_scripts import yadeplugin  # noqa: E402
+from yade_scripts.campaign.generate import DEFAULT_LIBRARY, generate  # noqa: E402
 
 
 def datasets(path):

@@ -22,7 +22,7 @@ from yade.wrapper import PolyhedraMat
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, ROOT)
 from postproc.schema import DumpReader  # noqa: E402
-from yade_scripts.yadedump import polyhedra_shapes  # noqa: E402
+from yade_scripts.scene.yadedump import polyhedra_shapes  # noqa: E402
 
 
 def build_packing(O, dump, snapshot=0):

@@ -23,7 +23,7 @@ PACKAGES = (("postproc", "The analysis library (`postproc`)"),
             ("shapes", "The polyhedra and the contact kernel (`shapes`)"),
             ("yade_scripts", "The scene and the runs (`yade_scripts`)"))
 #: modules that are YADE scripts, not importable outside YADE: {name: where they are documented}
-SCRIPTS = {"yade_scripts.triaxial": "[the scenes](scenes.md)",
+SCRIPTS = {"yade_scripts.scene.triaxial": "[the scenes](scenes.md)",
            "yade_scripts.yadeplugin.probe_scene": "[the compiled kernel](kernel.md)"}
 
 

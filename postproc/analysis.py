@@ -10,8 +10,10 @@ import numpy as np
 
 from .angular import AngularFunctions, angular_functions, fit_harmonics
 from .axes import axis_vector
+from .cdpoints import cd_type_columns
 from .contactset import ContactSet, resolve
 from .classify import AngularTables
+from .columns import COMPONENTS, GROUPS
 from .contacttypes import DEFAULT_THETA_DEG, GROUP_OF, PAIR_TYPES, ShapeTables
 from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
@@ -22,8 +24,6 @@ from .schema import WALL_ORDER, Snapshot
 from .strain import box_strains
 from .stress import contact_stress, invariants, relative_difference, wall_stress
 
-GROUPS = ("simple", "double", "triple")
-_COMPONENTS = ("xx", "yy", "zz", "yz", "xz", "xy")
 _IDX = {"xx": (0, 0), "yy": (1, 1), "zz": (2, 2), "yz": (1, 2), "xz": (0, 2), "xy": (0, 1)}
 
 
@@ -91,7 +91,7 @@ def wall_forces_from_contacts(cs: ContactSet):
 
 def _stress_columns(prefix, sigma, axis):
     inv = invariants(sigma, axis)
-    row = {f"{prefix}{c}": float(sigma[_IDX[c]]) for c in _COMPONENTS}
+    row = {f"{prefix}{c}": float(sigma[_IDX[c]]) for c in COMPONENTS}
     row.update({
         f"{prefix}sigma_1": inv["principal"][0], f"{prefix}sigma_2": inv["principal"][1],
         f"{prefix}sigma_3": inv["principal"][2],
@@ -282,7 +282,8 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
     Returns
     -------
     SnapshotResult
-        The ``summary.csv`` row: identification, the stress components,
+        The ``summary.csv`` row (every column declared, with its unit and
+        meaning, in :data:`postproc.columns.COLUMNS`): identification, the stress components,
         principal values (Pa) and directions of the three forms, p, q =
         (sigma_1 - sigma_3)/3, q/p, q_axial/p, sin phi = 3q/(2p + q), the
         relative differences between the forms; a, a_l, a_n, a_t (and
@@ -366,6 +367,11 @@ def analyze_snapshot(snap: Snapshot, axis=2, nbins=18, errors=True, tables=None,
         cols, labels, extents = contact_type_columns(snap, cs, sel, classifier, p, s_m, e)
         row.update(cols)
         row["z_points"] = row["z"] * row["ct_points_per_contact"]
+    if snap.points is not None:        # a CD dump: its types read off the contact points
+        try:
+            row.update(cd_type_columns(snap, e))
+        except InputError:             # no pair carries a force: the CD columns stay empty
+            pass
     typed = "ct_method" in row
     fn = cs.normal_force[sel]
     nets = network_statistics(fn, branch, force, e,

@@ -1,6 +1,11 @@
 """Contact classes of a snapshot under one chosen criterion.
 
-Seven criteria, one interface (:class:`Classifier`):
+Seven criteria, one interface (:class:`Classifier`), one registry
+(:data:`CRITERIA`: each criterion's name, description, parameter, default,
+its name in the study's tables and its implementation), which the command
+line (``--types``), the analysis options, the study's counts and its
+results all read, so that a new criterion is one entry there and its
+implementation:
 
 * ``"points"`` (the default): our count of contact points from the
   overlap (:mod:`postproc.contactpoints`): the vertices of each side within the
@@ -31,13 +36,13 @@ Seven criteria, one interface (:class:`Classifier`):
   needed. Our band count, kept for the study's earlier numbers: it is not
   LMGC90's count (docs/lmgc90-contacts.md).
 * ``"lmgc90"`` (``--types lmgc90``): LMGC90's own count, its CpCundall
-  detection with today's default point stage (:func:`postproc.commonplane.lmgc90_points`),
+  detection with today's default point stage (:func:`postproc.lmgc90count.lmgc90_points`),
   with the alert distance as ``--tolerance`` in units of the smallest grain
   radius (default 0.1, what LMGC90's granular examples set);
   ``"lmgc90-planplan"``: the same detection with LMGC90's older point stage
   (planplan: 3 or 4 points, or none); ``"lmgc90-2009"``: planplan with the
   length-tolerant intersection it used before Clipper2
-  (:func:`postproc.commonplane.tolerant_intersection`: a point or a segment
+  (:func:`postproc.polygons.tolerant_intersection`: a point or a segment
   gives 1 or 2 points too), presumably the paper's route.
 
 :meth:`Classifier.classify` returns the class of every contact of a
@@ -47,17 +52,19 @@ the stability columns, at half and twice it.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
 from . import commonplane as cpl
 from . import contactpoints as cpm
 from . import footprint as fpm
+from . import lmgc90count as lmgc
+from . import lmgc90shape as lshape
 from .contactset import lookup
 from .contacttypes import DEFAULT_THETA_DEG, FACE, PAIR_TYPES, classify_snapshot, shape_tables
 from .errors import InputError
 
-METHODS = ("points", "footprint", "angular", "commonplane") + cpl.LMGC90_ROUTES
 DEFAULT_METHOD = "points"
 _TYPE = {k: i for i, k in enumerate(PAIR_TYPES)}
 _FF, _EF, _VF = _TYPE["FF"], _TYPE["EF"], _TYPE["VF"]
@@ -176,7 +183,7 @@ class Classifier:
     "commonplane" method (default :data:`postproc.commonplane.DEFAULT_NEIGHBOR`),
     or the alert distance of the LMGC90 methods ("lmgc90", "lmgc90-planplan", "lmgc90-2009") in
     units of the smallest grain radius (of the shapes; default
-    :data:`postproc.commonplane.DEFAULT_ALERT`).
+    :data:`postproc.lmgc90count.DEFAULT_ALERT`).
     reference : how the "commonplane" method measures ref, the length its
     band is tau times: "vertex" (the default: the distance from the centre
     to the extreme vertex, LMGC90's older routine) or "normal" (that
@@ -215,8 +222,7 @@ class Classifier:
 
     def __init__(self, shapes, method=DEFAULT_METHOD, threshold=None, theta_deg=None,
                  recompute="auto", tolerance=None, reference="vertex"):
-        if method not in METHODS:
-            raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
+        crit = criterion(method)
         if recompute not in ("auto", "always", "never"):
             raise InputError(f"recompute must be auto, always or never, got {recompute!r}")
         self.method = method
@@ -226,8 +232,7 @@ class Classifier:
         self.threshold = fpm.check_threshold(fpm.DEFAULT_THRESHOLD if threshold is None else threshold)
         self.recompute = recompute
         self.reference = cpl.check_reference(reference)
-        default = {"commonplane": cpl.DEFAULT_NEIGHBOR,
-                   **{m: cpl.DEFAULT_ALERT for m in cpl.LMGC90_ROUTES}}.get(method, cpm.DEFAULT_ALPHA)
+        default = crit.default if crit.option == "--tolerance" else cpm.DEFAULT_ALPHA
         self.tolerance = cpm.check_alpha(default if tolerance is None else tolerance)
         vertices, triangles, faces = shapes
         self.tables = shape_tables(vertices, triangles, faces)
@@ -241,13 +246,13 @@ class Classifier:
     def parameter(self):
         """The criterion's parameter: alpha, t (units of d), theta (deg), tau,
         or the alert distance (units of the smallest grain radius)."""
-        return {"points": self.tolerance, "footprint": self.threshold, "commonplane": self.tolerance,
-                **{m: self.tolerance for m in cpl.LMGC90_ROUTES}}.get(self.method, self.theta_deg)
+        return {"--tolerance": self.tolerance, "--threshold": self.threshold,
+                "--theta": self.theta_deg}[CRITERIA[self.method].option]
 
     @property
     def lmgc90_tables(self):
         if self._lmgc is None:
-            self._lmgc = cpl.lmgc90_tables(*self._shapes)
+            self._lmgc = lshape.lmgc90_tables(*self._shapes)
         return self._lmgc
 
     @property
@@ -296,22 +301,17 @@ class Classifier:
             As said above, or a missing overlap or footprint with
             ``recompute="never"``.
         """
-        if self.method == "angular":
-            lab = classify_snapshot(snap, self.tables, self.theta_deg)
-            var = {}
-            if variants:
-                var = {"lo": classify_snapshot(snap, self.tables, self.theta_deg / 2),
-                       "hi": classify_snapshot(snap, self.tables, self.theta_deg * 2)}
-            poly = np.isin(lab, PAIR_TYPES)
-            return Classes(lab, var, poly, None, {"ct_method": "angular", "ct_theta_deg": self.theta_deg,
-                                                  "ct_threshold": self.theta_deg})
-        if self.method == "points":
-            return self._points_classes(snap, variants)
-        if self.method == "commonplane":
-            return self._commonplane_classes(snap, variants)
-        if self.method in cpl.LMGC90_ROUTES:
-            return self._lmgc90_classes(snap, variants)
-        return self._footprint(snap, variants)
+        return CRITERIA[self.method].classify(self, snap, variants)
+
+    def _angular_classes(self, snap, variants):
+        lab = classify_snapshot(snap, self.tables, self.theta_deg)
+        var = {}
+        if variants:
+            var = {"lo": classify_snapshot(snap, self.tables, self.theta_deg / 2),
+                   "hi": classify_snapshot(snap, self.tables, self.theta_deg * 2)}
+        poly = np.isin(lab, PAIR_TYPES)
+        return Classes(lab, var, poly, None, {"ct_method": self.method, "ct_theta_deg": self.theta_deg,
+                                              "ct_threshold": self.theta_deg})
 
     def _lmgc90_classes(self, snap, variants):
         pp = self._pairs(snap, self.tolerance)
@@ -326,7 +326,7 @@ class Classifier:
         args = (tables, w(s1, s2), w(x1, x2), w(q1, q2), w(s2, s1), w(x2, x1), w(q2, q1))
 
         # one detection for the alert distance and the band test's half and double of it
-        count = lambda alerts: cpl.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
+        count = lambda alerts: lmgc.lmgc90_points_alerts(*args, [a * r_min for a in alerts], route=self.method,
                                                         min_radius=r_min)
         return self._count_classes(pp, count, self.tolerance, {"ct_alert_m": self.tolerance * r_min}, variants)
 
@@ -344,7 +344,7 @@ class Classifier:
         """The classes from a count of contact points: ``count(values)``
         returns, for each value of the parameter in ``values``, the dict of
         :func:`postproc.commonplane.contact_points` or
-        :func:`postproc.commonplane.lmgc90_points` for the polyhedra pairs
+        :func:`postproc.lmgc90count.lmgc90_points` for the polyhedra pairs
         (one call, so that a count can share its work between the values);
         the variants at half and twice the parameter. Pairs without a point
         (LMGC90 makes no contact there) count as simple; their share is
@@ -443,7 +443,7 @@ class Classifier:
                 rel = np.where(missing[:, None], np.nan, np.sort(ext / d[:, None], axis=1)[:, ::-1])
         return Classes(lab, var, poly, rel, cols)
 
-    def _footprint(self, snap, variants):
+    def _footprint_classes(self, snap, variants):
         pp = self._pairs(snap, self.threshold)
         if not pp.poly.any():
             return self._no_pairs(pp, variants, np.zeros((0, 2)), {"ct_fp_recomputed": 0, "ct_fp_missing": 0})
@@ -494,6 +494,126 @@ class Classifier:
         return Classes(lab, var, poly, rel, cols)
 
 
+@dataclass(frozen=True)
+class Criterion:
+    """One contact-type criterion of the registry :data:`CRITERIA`.
+
+    Attributes
+    ----------
+    name : str
+        Its name: ``postproc analyze --types NAME``, the summary's
+        ``ct_method``, a study's count (``--counts``).
+    description : str
+        What it is, one phrase (the command line's help).
+    option : str
+        The option that sets its parameter: "--tolerance", "--threshold"
+        (the footprint's t) or "--theta" (the angular tolerance).
+    parameter : str
+        What the parameter is, with its unit (the command line's help).
+    default : float
+        The parameter's default, in the unit of ``parameter``.
+    unit : str
+        The parameter's unit, short, for a figure's axis ("(alpha x V/area)").
+    reading : str
+        How the claims name a summary counted so: a format string of the
+        parameter's value ("contact-point count, tolerance {:g} V/area").
+    label : str
+        Its name in the study's results and claim-6 tables.
+    classify : callable
+        The implementation: ``classify(classifier, snap, variants)`` ->
+        :class:`Classes` (:meth:`Classifier.classify` calls it).
+    check : callable
+        ``check(tolerance)``: raises InputError (one line) for a ``--tolerance``
+        the criterion cannot take (:func:`check_options`).
+    """
+
+    name: str
+    description: str
+    option: str
+    parameter: str
+    default: float
+    unit: str
+    reading: str
+    label: str
+    classify: Callable
+    check: Callable
+
+
+def _alert_check(route):
+    """The ``--tolerance`` check of an LMGC90 route (the alert distance)."""
+    return lambda tol: lmgc.check_alert(
+        tol, f"--tolerance ({route}: the alert distance in units of the smallest grain radius)")
+
+
+_ALERT = "the alert distance in units of the smallest grain radius"
+
+#: The contact-type criteria, by name, in the order the command line shows
+#: them (the first is the default, :data:`DEFAULT_METHOD`). A new criterion
+#: is one entry here and its implementation; the command line's ``--types``
+#: choices and help, the analysis options, the study's counts and the
+#: names in its results read this table.
+CRITERIA = {c.name: c for c in (
+    Criterion("points", "a count of contact points from the overlap (the default)", "--tolerance",
+              "alpha, the distance tolerance in units of the overlap's mean thickness V/area", cpm.DEFAULT_ALPHA,
+              "(alpha x V/area)", "contact-point count, tolerance {:g} V/area", "our contact-point count",
+              Classifier._points_classes, cpm.check_alpha),
+    Criterion("footprint", "the overlap's footprint", "--threshold",
+              "the footprint threshold t in units of the pair size d", fpm.DEFAULT_THRESHOLD,
+              "(t x d)", "footprint criterion, threshold {:g} d", "the footprint count",
+              Classifier._footprint_classes, cpm.check_alpha),
+    Criterion("angular", "the angular criterion alone", "--theta",
+              "the angular tolerance theta in degrees", DEFAULT_THETA_DEG,
+              "(deg)", "angular criterion, tolerance {:g} deg", "the angular criterion",
+              Classifier._angular_classes, cpm.check_alpha),
+    Criterion("commonplane", "our earlier band count on Cundall's common plane (not LMGC90's count)", "--tolerance",
+              "tau, the band in units of the centre-to-extreme-vertex distance", cpl.DEFAULT_NEIGHBOR,
+              "(tau x the radius)", "the earlier band count on a common plane, band {:g} x the radius",
+              "the earlier band count on a common plane", Classifier._commonplane_classes,
+              lambda tol: cpl.check_neighbor(tol, "--tolerance (commonplane: tau, the band in units of the radius)")),
+    Criterion("lmgc90", "LMGC90's own count: its CpCundall detection with today's point stage", "--tolerance",
+              _ALERT, lmgc.DEFAULT_ALERT, "(alert x the smallest radius)",
+              "LMGC90's own count (today's point stage), alert distance {:g} x the smallest grain radius",
+              "LMGC90's own count", Classifier._lmgc90_classes, _alert_check("lmgc90")),
+    Criterion("lmgc90-planplan", "LMGC90's own count with its older planplan point stage", "--tolerance",
+              _ALERT, lmgc.DEFAULT_ALERT, "(alert x the smallest radius)",
+              "LMGC90's own count (its older planplan point stage), alert distance {:g} x the smallest grain "
+              "radius", "LMGC90's own count, its planplan stage", Classifier._lmgc90_classes,
+              _alert_check("lmgc90-planplan")),
+    Criterion("lmgc90-2009", "LMGC90's planplan with the length-tolerant intersection it used before Clipper2",
+              "--tolerance", _ALERT, lmgc.DEFAULT_ALERT, "(alert x the smallest radius)",
+              "LMGC90's own count (planplan with its older length-tolerant intersection), alert distance {:g} x "
+              "the smallest grain radius", "LMGC90's own count, planplan with its 2009 intersection",
+              Classifier._lmgc90_classes, _alert_check("lmgc90-2009")),
+)}
+#: the criteria's names, in the registry's order (as at import; code that
+#: must see criteria added later reads :data:`CRITERIA`)
+METHODS = tuple(CRITERIA)
+
+
+def criterion(method):
+    """The registry's :class:`Criterion` of a criterion's name.
+
+    Parameters
+    ----------
+    method : str
+        A name of :data:`CRITERIA` ("points", "lmgc90", ...).
+
+    Returns
+    -------
+    Criterion
+        Its entry.
+
+    Raises
+    ------
+    InputError
+        One line naming the unknown criterion and the known ones.
+    """
+    try:
+        return CRITERIA[method]
+    except (KeyError, TypeError):
+        raise InputError(f"--types must be one of {', '.join(CRITERIA)}, got {method!r}") from None
+
+
 def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, tolerance=None):
     """Check the contact-type options before any file is opened; raises
     InputError (one line) for an unknown criterion or a bad parameter.
@@ -523,16 +643,11 @@ def check_options(method=DEFAULT_METHOD, threshold=None, theta_deg=None, toleran
         As said above (a ``theta_deg`` that is not a number raises
         ValueError instead).
     """
-    if method not in METHODS:
-        raise InputError(f"--types must be one of {', '.join(METHODS)}, got {method!r}")
+    crit = criterion(method)
     if threshold is not None:
         fpm.check_threshold(threshold)
-    if tolerance is not None and method == "commonplane":
-        cpl.check_neighbor(tolerance, "--tolerance (commonplane: tau, the band in units of the radius)")
-    elif tolerance is not None and method in cpl.LMGC90_ROUTES:
-        cpl.check_alert(tolerance, f"--tolerance ({method}: the alert distance in units of the smallest grain radius)")
-    elif tolerance is not None:
-        cpm.check_alpha(tolerance)
+    if tolerance is not None:
+        crit.check(tolerance)
     if theta_deg is not None and not (np.isfinite(float(theta_deg)) and 0 < float(theta_deg) < 45):
         raise InputError(f"--theta must be in (0, 45) degrees, got {theta_deg}")
 

@@ -21,7 +21,8 @@ import pandas as pd
 from . import footprint as fpm, plots
 from .analysis import add_strains, analyze_snapshot, group_labels_of
 from .axes import axis_vector
-from .classify import check_options, classifier_for
+from .classify import CRITERIA, DEFAULT_METHOD, check_options, classifier_for
+from .columns import LEAD
 from .errors import InputError
 from .lammpsdump import read_text_dump, sniff
 from .networks import force_pdf
@@ -137,16 +138,12 @@ class AnalysisOptions:
     atoms : the LAMMPS ``dump custom`` with the positions.
     nbins : theta bins on [0, 90 deg].
     errors : compute standard errors.
-    types : contact-type criterion of polyhedra: "points" (our count of
-        contact points from the overlap), "footprint", "angular",
-        "commonplane" (our common-plane band count), "lmgc90" (LMGC90's own
-        count: its CpCundall detection and today's default point stage),
-        "lmgc90-planplan" (the same with LMGC90's older planplan stage) or
-        "lmgc90-2009" (planplan with its older length-tolerant intersection).
-    tolerance : alpha of "points", in units of the overlap's mean thickness;
-        tau of "commonplane", in units of the centre-to-extreme-vertex
-        distance; the alert distance of "lmgc90", "lmgc90-planplan" and "lmgc90-2009", in
-        units of the smallest grain radius (default 0.1).
+    types : contact-type criterion of polyhedra, a name of the registry
+        :data:`postproc.classify.CRITERIA` (default
+        :data:`postproc.classify.DEFAULT_METHOD`, our count of contact points
+        from the overlap), which says what each is.
+    tolerance : the parameter of a criterion that takes ``--tolerance``
+        (its ``parameter`` and ``default`` in the registry; None: its default).
     threshold : "footprint" threshold, in units of the pair size d.
     theta_deg : "angular" tolerance, degrees.
     snapshots : indices of a dump's snapshots to analyse (None: all); the
@@ -162,7 +159,7 @@ class AnalysisOptions:
     atoms: str | None = None
     nbins: int = 18
     errors: bool = True
-    types: str = "points"
+    types: str = DEFAULT_METHOD
     tolerance: float | None = None
     threshold: float | None = None
     theta_deg: float | None = None
@@ -240,9 +237,7 @@ def analyze_path(path, out, options=AnalysisOptions(), progress=None):
     ref = reference_index(stages)
     add_strains(rows, np.array(lengths), lengths[ref], e)
     df = pd.DataFrame(rows)
-    lead = ["step", "eps_1", "eps_q", "eps_v", "p", "q", "q_over_p", "a", "a_l",
-            "a_n", "a_t", "sff", "sff_residual", "z", "n_contacts"]
-    df = df[lead + [c for c in df.columns if c not in lead]]
+    df = df[list(LEAD) + [c for c in df.columns if c not in LEAD]]      # the schema's leading columns first
 
     label = os.path.basename(path)
     parent = os.path.dirname(os.path.abspath(out)) or "."
@@ -291,7 +286,8 @@ def _figures(tmp, df, last, pdf, pool, fps, label):
     if "ct_method" in df:
         plots.plot_contact_types(df, os.path.join(tmp, "contact_types.png"), label)
         ext = [fps[k] for k in pool if fps[k] is not None and len(fps[k])]
-        if ext and df["ct_method"].iloc[0] != "angular":
-            t = float(df["ct_threshold"].iloc[0]) if df["ct_method"].iloc[0] == "footprint" \
-                else fpm.DEFAULT_THRESHOLD
+        option = CRITERIA[df["ct_method"].iloc[0]].option
+        if ext and option != "--theta":
+            # the footprint threshold: the criterion's own when it is its parameter
+            t = float(df["ct_threshold"].iloc[0]) if option == "--threshold" else fpm.DEFAULT_THRESHOLD
             plots.plot_footprint(np.concatenate(ext), t, os.path.join(tmp, "footprint.png"), what)

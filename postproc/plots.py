@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from .angular import AngularFunctions, harmonic_curves
+from .columns import label as column_label
 from .statistics import plateau_estimate
 
 
@@ -488,10 +489,11 @@ def plot_front_trends(points, fits, path, kappa_d, inertial_d):
 
 #: the size front's panels: quantity (the count's columns without their
 #: "<count>:" prefix; every count is drawn in the same panel) and title
-SIZE_PANELS = (("q_over_p", "q/p plateau"), ("a", "a"), ("a_l", "a_l"), ("a_n", "a_n"), ("a_t", "a_t"),
-               ("sff_rel_residual", "(q/p − (2/5)Σa)/(q/p)"), ("z", "z"), ("phi_iso", "solid fraction"),
-               ("ct_frac_triple", "triple contacts (S1)"), ("ct_fratio_FF", "FF f/⟨f⟩ (S1)"),
-               ("ct_fabric_VF", "VF leaning (S1)"), ("ct_fabric_EE", "EE leaning (S1)"))
+SIZE_PANELS = (("q_over_p", f"{column_label('q_over_p')} plateau"),
+               *((k, column_label(k)) for k in ("a", "a_l", "a_n", "a_t")),
+               ("sff_rel_residual", "(q/p − (2/5)Σa)/(q/p)"), ("z", column_label("z")), ("phi_iso", "solid fraction"),
+               *((k, f"{column_label(k)} (S1)") for k in ("ct_frac_triple", "ct_fratio_FF", "ct_fabric_VF",
+                                                          "ct_fabric_EE")))
 
 
 def plot_size_front(table, path, published=None):
@@ -558,10 +560,10 @@ def plot_size_front(table, path, published=None):
     return drawn
 
 
-SHAPE_PANELS = (("q_over_p", "q/p plateau"), ("a", "a"), ("a_l", "a_l"), ("a_n", "a_n"), ("a_t", "a_t"),
-                ("z", "z"), ("phi_iso", "solid fraction"), ("ct_frac_simple", "simple contacts"),
-                ("ct_frac_double", "double contacts"), ("ct_frac_triple", "triple contacts"),
-                ("ct_fabric_VF", "VF leaning"), ("ct_fabric_EE", "EE leaning"))
+SHAPE_PANELS = (("q_over_p", f"{column_label('q_over_p')} plateau"),
+                *((k, column_label(k)) for k in ("a", "a_l", "a_n", "a_t", "z")), ("phi_iso", "solid fraction"),
+                *((k, column_label(k)) for k in ("ct_frac_simple", "ct_frac_double", "ct_frac_triple", "ct_fabric_VF",
+                                          "ct_fabric_EE")))
 
 
 def plot_shape_front(table, labels, path):
@@ -665,6 +667,13 @@ def plot_footprint(extents, threshold, path, label=""):
     x = np.asarray(extents, float)
     x = x[np.isfinite(x).all(axis=1) & (x[:, 1] > 0)]
     fig, ax = plt.subplots(figsize=(6.4, 4))
+    if not len(x):       # no pair overlaps (a rigid Contact Dynamics packing): nothing to bin
+        ax.text(0.5, 0.5, "no overlapping force-bearing pair: no footprint", ha="center", va="center",
+                transform=ax.transAxes)
+        ax.set_axis_off()
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+        return fig
     bins = np.geomspace(max(x.min(), 1e-5), x.max() * 1.0001, 41)
     for j, name, c in ((0, "$L_1/d$ (simple below t)", "C0"), (1, "$L_2/d$ (triple above t)", "C3")):
         h, _ = np.histogram(x[:, j], bins)

@@ -9,7 +9,7 @@ comments and docstrings left out; the options' ``figures`` only when
 False). An analysis is current (:func:`is_current`) when its input, options
 and analysis version are what they would be now (but that one with figures
 is current for a request without them), so
-a rerun of the study (``make study``, ``yade_scripts.study --collect``)
+a rerun of the study (``make study``, ``yade_scripts.campaign.study --collect``)
 keeps it instead of analysing a 5000-grain dump again (minutes per dump),
 and redoes it when the dump, the options or the analysis version changed.
 A folder without ``source.json`` (made before it existed) is never current.
@@ -46,7 +46,7 @@ CODE_SUFFIXES = (".py", ".c", ".h")
 #: change and the version did not. After a bump, analyses and archived runs
 #: of the earlier version are no longer used: re-collect (or rerun) the
 #: committed results, or read an old archive with the code that made it
-#: (``python -m yade_scripts.archive collect-at-commit``).
+#: (``python -m yade_scripts.campaign.archive collect-at-commit``).
 ANALYSIS_VERSION = 1
 
 #: code hashes (:func:`code_hash`) of analyses written before records named

@@ -5,13 +5,16 @@ numpy 1.24, h5py 3.7) and by the ``postproc`` analysis package. It therefore
 imports **only** the standard library, numpy and h5py, and nothing else from
 ``postproc``. It can be copied next to a generated ``triaxial.py`` as is.
 
-Layout of one run (schema version 2, all quantities in SI units)
-=================================================================
+Layout of one run (schema version 2 or 3, all quantities in SI units)
+======================================================================
 One HDF5 file per simulation run, ``RUN.h5``. File attributes:
 
 ``schema``            ``"granular-contact-dump"``
-``schema_version``    ``2`` (an integer). Version 1 (no contact footprint)
-                      is still read; readers refuse any other version
+``schema_version``    ``2`` (an integer), or ``3`` for a dump that holds
+                      contact points (``points/*`` below, written by
+                      Contact Dynamics runs). Version 1 (no contact
+                      footprint) is still read; readers refuse any other
+                      version
 ``sample_kind``       ``"polyhedra"`` or ``"spheres"``
 ``parameters``        JSON text: every parameter that generated the run
 ``units``             JSON text: unit of every dataset below
@@ -75,6 +78,24 @@ time order). Group attributes ``step`` (int), ``time`` (s), ``stage``
                               extents of the overlap's shadow on the contact
                               plane, largest first (``shapes/overlap.py``).
 ``contacts/footprint_area``   (C,) m^2, optional: the area of that shadow.
+
+``points/*`` (optional, schema version 3): the individual contact points
+of a contact (Contact Dynamics: every interaction LMGC90 detects is one
+point, and a pair of polyhedra touching along an edge or a face has two or
+more). ``contacts/*`` then holds one row per pair of bodies, its forces the
+sums over the pair's points. P points:
+
+``points/contact``            (P,) int64 row of ``contacts/*`` the point
+                              belongs to (0 <= contact < C).
+``points/point``              (P, 3) m, the point.
+``points/normal``             (P, 3) unit normal pointing from id1 to id2 of
+                              its contact.
+``points/force_normal``       (P, 3) N, normal force on id2 by id1 at this
+                              point.
+``points/force_tangential``   (P, 3) N, tangential force on id2 by id1.
+``points/gap``                (P,) m, the signed distance between the two
+                              surfaces at the point (negative =
+                              interpenetration).
 
 Sign convention: forces are the forces on id2 by id1; stresses computed from
 them are compression positive.
@@ -142,7 +163,8 @@ import numpy as np
 
 SCHEMA_NAME = "granular-contact-dump"
 SCHEMA_VERSION = 2
-READABLE_VERSIONS = (1, 2)   # version 1: no contacts/footprint
+POINTS_SCHEMA_VERSION = 3    # the version of a dump that holds points/*
+READABLE_VERSIONS = (1, 2, 3)   # version 1: no contacts/footprint; 3: points/*
 SAMPLE_KINDS = ("polyhedra", "spheres")
 WALL_ORDER = ("x-", "x+", "y-", "y+", "z-", "z+")
 KIND_SPHERE, KIND_POLYHEDRON, KIND_WALL = 0, 1, 2
@@ -156,6 +178,10 @@ UNITS = {
     "contacts/overlap": "m^3 (overlap_kind=volume) or m (overlap_kind=depth)",
     "contacts/footprint": "m", "contacts/footprint_area": "m^2",
     "shapes/vertices": "m",
+}
+POINTS_UNITS = {   # added to ``units`` in a dump that holds points (version 3)
+    "points/point": "m", "points/normal": "1", "points/force_normal": "N",
+    "points/force_tangential": "N", "points/gap": "m",
 }
 
 _BODY_FIELDS = {  # name: (dtype, trailing shape, required)
@@ -174,6 +200,13 @@ _CONTACT_FIELDS = {
     "footprint": (np.float64, (2,), False),
     "footprint_area": (np.float64, (), False),
 }
+_POINT_FIELDS = {
+    "contact": (np.int64, ()), "point": (np.float64, (3,)),
+    "normal": (np.float64, (3,)), "force_normal": (np.float64, (3,)),
+    "force_tangential": (np.float64, (3,)), "gap": (np.float64, ()),
+}
+POINT_FIELDS = tuple(_POINT_FIELDS)
+UNIT_NORMAL_TOL = 1e-6   # |1 - |n|| allowed for points/normal (text outputs hold 7-8 digits)
 CHECKSUM_KIND = "crc32-v1"    # how /index/checksum is computed (snapshot_checksum)
 INDEX_FIELDS = ("step", "n_bodies", "n_contacts", "checksum")
 _INDEX_DTYPES = (np.int64, np.int64, np.int64, np.uint32)
@@ -191,6 +224,10 @@ class Snapshot:
     total contact force (C, 3); ``force_normal`` (C, 3) its normal part when
     the source gives it (None for flat contact tables). Quantities a source
     does not provide are None (or NaN for the box of a flat table).
+    ``points`` (version-3 dumps) maps each of :data:`POINT_FIELDS` to its
+    array: ``contact`` (P,) int64 row of the contact arrays, ``point``,
+    ``normal``, ``force_normal``, ``force_tangential`` (P, 3) and ``gap``
+    (P,) m (negative = interpenetration); None when the snapshot has none.
     """
 
     name: str
@@ -221,6 +258,7 @@ class Snapshot:
     footprint_area: Optional[np.ndarray] = None  # (C,) m^2
     cell: Optional[np.ndarray] = None           # (3, 3) m, periodic cell, columns = cell vectors
     branch: Optional[np.ndarray] = None         # (C, 3) m, explicit x2 - x1 (NaN for walls)
+    points: Optional[dict] = None               # points/* arrays by field name (version 3), or None
     extra: dict = field(default_factory=dict)
 
     @property
@@ -368,6 +406,71 @@ def _as_field(name, value, spec, n):
     return arr
 
 
+def check_points(points, n_contacts, where="points"):
+    """Validate the contact points of one snapshot.
+
+    Parameters
+    ----------
+    points : dict
+        ``contact`` (P,) int, ``point``, ``normal``, ``force_normal``,
+        ``force_tangential`` (P, 3) float (m, unit, N, N) and ``gap`` (P,)
+        m, as in the module docstring. Other keys are refused.
+    n_contacts : int
+        C, the number of rows of the snapshot's ``contacts/*``.
+    where : str
+        What to name in an error (a file and snapshot when reading).
+
+    Returns
+    -------
+    dict
+        The same fields as contiguous arrays of the schema's dtypes.
+
+    Raises
+    ------
+    DumpFormatError
+        (one line) on a missing or unknown field, a wrong shape or dtype
+        kind, a non-finite value, a ``contact`` row outside ``0 .. C-1`` or
+        a normal whose length differs from 1 by more than
+        :data:`UNIT_NORMAL_TOL`.
+    """
+    if not isinstance(points, dict):
+        raise DumpFormatError(f"{where}: expected a dict of arrays, got {type(points).__name__}")
+    missing = [k for k in _POINT_FIELDS if k not in points]
+    unknown = sorted(set(points) - set(_POINT_FIELDS))
+    if missing or unknown:
+        raise DumpFormatError(f"{where}: " + "; ".join(
+            ([f"missing {', '.join(missing)}"] if missing else []) +
+            ([f"unknown {', '.join(unknown)}"] if unknown else [])))
+    n = len(np.atleast_1d(points["contact"]))
+    out = {}
+    for k, (dtype, trailing) in _POINT_FIELDS.items():
+        raw = np.asarray(points[k])
+        if raw.shape != (n,) + trailing:
+            raise DumpFormatError(f"{where}/{k}: expected shape {(n,) + trailing}, got {raw.shape}")
+        if k == "contact":
+            if raw.dtype.kind not in "iu" and not (raw.size == 0 and raw.dtype.kind == "f"):
+                raise DumpFormatError(f"{where}/contact: expected integers, got dtype {raw.dtype}")
+        elif raw.dtype.kind not in "fiu":
+            raise DumpFormatError(f"{where}/{k}: expected numbers, got dtype {raw.dtype}")
+        arr = np.ascontiguousarray(raw, dtype=dtype)
+        if k != "contact" and not np.all(np.isfinite(arr)):
+            bad = int(np.flatnonzero(~np.all(np.isfinite(arr.reshape(n, -1)), axis=1))[0])
+            raise DumpFormatError(f"{where}/{k}: not finite at point {bad}")
+        out[k] = arr
+    c = out["contact"]
+    if n and (c.min() < 0 or c.max() >= n_contacts):
+        bad = int(np.flatnonzero((c < 0) | (c >= n_contacts))[0])
+        raise DumpFormatError(f"{where}/contact: row {int(c[bad])} at point {bad} is outside "
+                              f"0..{n_contacts - 1} ({n_contacts} contacts)")
+    if n:
+        length = np.linalg.norm(out["normal"], axis=1)
+        if np.abs(length - 1.0).max() > UNIT_NORMAL_TOL:
+            bad = int(np.argmax(np.abs(length - 1.0)))
+            raise DumpFormatError(f"{where}/normal: not a unit vector at point {bad} "
+                                  f"(length {length[bad]:.9g})")
+    return out
+
+
 class DumpWriter:
     """Write one run, snapshot by snapshot, so that a killed writer never
     leaves an unreadable file (see the module docstring).
@@ -444,8 +547,10 @@ class DumpWriter:
                 recorded = _read_index(f, path)
         except OSError as exc:
             raise DumpFormatError(f"{path}: master file unreadable ({exc.__class__.__name__})") from None
-        if attrs.get("schema") != SCHEMA_NAME or int(attrs.get("schema_version", -1)) != SCHEMA_VERSION:
-            raise DumpFormatError(f"{path}: not a version-{SCHEMA_VERSION} {SCHEMA_NAME} run")
+        if attrs.get("schema") != SCHEMA_NAME or \
+                int(attrs.get("schema_version", -1)) not in (SCHEMA_VERSION, POINTS_SCHEMA_VERSION):
+            raise DumpFormatError(f"{path}: not a version-{SCHEMA_VERSION} or "
+                                  f"-{POINTS_SCHEMA_VERSION} {SCHEMA_NAME} run")
         self = cls.__new__(cls)
         self.path, self.parts = path, parts
         self.attrs = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in attrs.items()}
@@ -565,7 +670,7 @@ class DumpWriter:
         self.attrs["parameters"] = json.dumps(params, sort_keys=True, default=float)
 
     def write_snapshot(self, *, step, time, stage, box_lo, box_hi, wall_ids,
-                       wall_forces, bodies, contacts, cell=None):
+                       wall_forces, bodies, contacts, cell=None, points=None):
         """Append one snapshot atomically.
 
         bodies : dict of arrays with the ``bodies/*`` fields of the schema.
@@ -573,6 +678,12 @@ class DumpWriter:
         cell : (3, 3) m, optional periodic cell (columns are the cell
         vectors, YADE's ``O.cell.hSize``); a periodic snapshot may have no
         walls (``wall_ids`` and ``wall_forces`` empty).
+        points : dict of arrays, optional: the contact points (``contact``
+        (P,) row of ``contacts``, ``point``, ``normal``, ``force_normal``,
+        ``force_tangential`` (P, 3), ``gap`` (P,) m, negative =
+        interpenetration), validated by :func:`check_points`. The first
+        snapshot with points makes the dump schema version 3; a dump
+        without points stays version 2, unchanged.
         Shapes and units as in the module docstring; forces on id2 by id1.
         """
         if self._closed:
@@ -601,6 +712,14 @@ class DumpWriter:
             data["cell"] = cell
         data.update({"bodies/" + k: arr for k, arr in b.items()})
         data.update({"contacts/" + k: arr for k, arr in c.items()})
+        if points is not None:
+            p = check_points(points, nc)
+            data.update({"points/" + k: arr for k, arr in p.items()})
+            if self.attrs["schema_version"] != POINTS_SCHEMA_VERSION:
+                self.attrs["schema_version"] = POINTS_SCHEMA_VERSION
+                units = json.loads(self.attrs["units"])
+                units.update(POINTS_UNITS)
+                self.attrs["units"] = json.dumps(units, sort_keys=True)
         step, time, stage = int(step), float(time), str(stage)
         row = _index_row(step, time, stage, data)
 
@@ -835,7 +954,7 @@ class DumpReader:
             step, body or contact count or checksum differs from its row of
             ``/index`` (a part replaced by another writer's, or damage).
         """
-        name = self.names[i]
+        name, version = self.names[i], self.version
         try:
             step, time, stage, d = _load_group(self._f["snapshots/" + name])
         except (KeyError, OSError, ValueError) as exc:
@@ -857,6 +976,13 @@ class DumpReader:
             c = {k: d["contacts/" + k] for k, s in _CONTACT_FIELDS.items()
                  if s[2] or "contacts/" + k in d}
             cell = d.get("cell")
+            pts = None
+            if any(k.startswith("points/") for k in d):
+                if version < POINTS_SCHEMA_VERSION:
+                    raise DumpFormatError(f"{self.path}: snapshot {name} holds points/ but the dump "
+                                          f"says schema version {version} (points need {POINTS_SCHEMA_VERSION})")
+                pts = check_points({k[len("points/"):]: v for k, v in d.items() if k.startswith("points/")},
+                                   len(c["id1"]), where=f"{self.path}: snapshot {name} points")
             snap = Snapshot(
                 name=name, step=step, time=time, stage=stage,
                 volume=float(np.prod(hi - lo)) if cell is None else float(abs(np.linalg.det(cell))),
@@ -870,7 +996,10 @@ class DumpReader:
                 orientations=b["orientation"], volumes=b["volume"],
                 masses=b["mass"], shape_index=b["shape_index"], sizes=b["size"],
                 footprint=c.get("footprint"), footprint_area=c.get("footprint_area"),
+                points=pts,
             )
+        except DumpFormatError:
+            raise
         except (KeyError, ValueError) as exc:
             raise DumpFormatError(f"{self.path}: snapshot {name} is incomplete or "
                                   f"unreadable ({exc})") from None

@@ -54,7 +54,7 @@ def _make_folder_of(out):
 
 
 def _parser():
-    from .meshimport import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
+    from .hullreduce import DEFAULT_MAX_ERROR, DEFAULT_MAX_VERTICES
 
     ap = argparse.ArgumentParser(prog="python -m shapes", description="ballast-like polyhedra libraries")
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -162,8 +162,11 @@ def _build(args):
     seconds = time.perf_counter() - t0
     lib = ShapeLibrary(args.out)
     st = write_report(lib, report, rejections, seconds)
+    from .blaspin import openblas_core
+
     msg = (f"shapes: {args.n} shapes -> {args.out} in {seconds:.1f} s; mean vertices "
-           f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}")
+           f"{st['n_vertices']['mean']:.1f}, faces {st['n_faces']['mean']:.1f}; report in {report}; "
+           f"OpenBLAS kernels {openblas_core() or 'unknown'}")
     if args.like:
         from .report import LABELS
 
@@ -182,7 +185,8 @@ def _import(args):
     import numpy as np
 
     from .library import LibraryError, write_library
-    from .meshimport import Budget, import_paths, library_datasets, mixed_units
+    from .hullreduce import Budget
+    from .meshimport import import_paths, library_datasets, mixed_units
     from .report import budget_text, write_report
 
     try:
@@ -274,4 +278,7 @@ def _report(args):
 
 
 if __name__ == "__main__":
+    from .blaspin import pin
+
+    pin(sys.argv[1:])          # the same library on every CPU of a kind (shapes/blaspin.py)
     sys.exit(main())

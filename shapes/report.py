@@ -450,7 +450,7 @@ def budget_text(b):
     Parameters
     ----------
     b : dict
-        A budget as :meth:`shapes.meshimport.Budget.as_dict` gives it (an
+        A budget as :meth:`shapes.hullreduce.Budget.as_dict` gives it (an
         imported library's ``recipe["budget"]``); may be empty.
 
     Returns

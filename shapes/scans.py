@@ -29,7 +29,8 @@ import sys
 import numpy as np
 
 from shapes.generate import generate_library
-from shapes.meshimport import Budget, import_mesh
+from shapes.hullreduce import Budget
+from shapes.meshimport import import_mesh
 from shapes.polyhedron import triangle_normals
 
 

@@ -121,7 +121,7 @@ def build_stone_library(checkout, out=DEFAULT_OUT, commit=None, budget=None, log
         The library to write; ``OUT.md`` and ``OUT.LICENSE`` go beside it.
     commit : str, optional
         The checkout's commit (default: read by git; "unknown" if neither).
-    budget : shapes.meshimport.Budget, optional
+    budget : shapes.hullreduce.Budget, optional
         The reduction's budget (default: the import's, 0.02 d, 37 vertices).
     log : callable, optional
         ``log(name, reason)`` at each refused stone.
@@ -154,7 +154,8 @@ def build_stone_library(checkout, out=DEFAULT_OUT, commit=None, budget=None, log
     """
     from .__main__ import _tolerances
     from .library import write_library
-    from .meshimport import Budget, import_paths, library_datasets, mixed_units
+    from .hullreduce import Budget
+    from .meshimport import import_paths, library_datasets, mixed_units
 
     licence_text = check_checkout(checkout)
     commit = commit or checkout_commit(checkout) or "unknown"

@@ -1,4 +1,4 @@
-"""The archive of analysed runs (yade_scripts.archive) without YADE: what
+"""The archive of analysed runs (yade_scripts.campaign.archive) without YADE: what
 tells two shape libraries apart, and a bad archive named in one line. The
 whole path (a study archived, a new study folder reading it) is in
 tests/test_study_smoke.py."""
@@ -7,8 +7,8 @@ import shutil
 
 import pytest
 
-from yade_scripts.archive import library_fingerprint
-from yade_scripts.archive import main as archive_main
+from yade_scripts.campaign.archive_store import library_fingerprint
+from yade_scripts.campaign.archive import main as archive_main
 
 
 def _library(path, seed, n=12):
@@ -64,7 +64,7 @@ def _archive_of_one_folder(tmp_path):
     import json
 
     from postproc.provenance import ANALYSIS_VERSION, code_hash
-    from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, _folder_record
+    from yade_scripts.campaign.archive_store import FOLDER_RECORD, RUN_RECORD, _folder_record
 
     table = tmp_path / "study" / "spheres-ensemble"
     table.mkdir(parents=True)
@@ -93,7 +93,7 @@ def test_archive_records_of_the_wrong_shape_are_named_not_fatal(tmp_path):
     """A run record that is not the archive's shape (a list, a dump that is
     text, no analyses, a file's digest that is a number, not JSON) is that
     seed's reason to run again; the other seeds are used."""
-    from yade_scripts.archive import archived
+    from yade_scripts.campaign.archive_store import archived
 
     table, _ = _archive_of_one_folder(tmp_path)
     got = archived(str(tmp_path / "arch"), table)
@@ -113,7 +113,7 @@ def test_archive_records_of_the_wrong_shape_are_named_not_fatal(tmp_path):
 def test_an_unreadable_folder_record_is_named_as_such(tmp_path, capsys):
     """A folder record that cannot be read refuses its seeds with that
     reason (not "other parameters"), and adding to it stops in one line."""
-    from yade_scripts.archive import FOLDER_RECORD, archived
+    from yade_scripts.campaign.archive_store import FOLDER_RECORD, archived
 
     table, into = _archive_of_one_folder(tmp_path)
     (into / FOLDER_RECORD).write_text('{"params": ')
@@ -133,7 +133,7 @@ def test_records_of_another_version_or_other_parameters_are_conflicts(tmp_path):
     parameters changed make every record a conflict."""
     import json
 
-    from yade_scripts.archive import FOLDER_RECORD, RUN_RECORD, archived, conflicts
+    from yade_scripts.campaign.archive_store import FOLDER_RECORD, RUN_RECORD, archived, conflicts
 
     table, into = _archive_of_one_folder(tmp_path)
     for f in into.glob(f"*{RUN_RECORD}"):
@@ -169,7 +169,7 @@ def test_an_archived_analysis_folder_takes_the_user_s_umask(tmp_path, mask, mode
     umask, not tempfile's 0700."""
     import stat
 
-    from yade_scripts.archive import _copy_run
+    from yade_scripts.campaign.archive_store import _copy_run
 
     table = tmp_path / "study" / "spheres-ensemble"
     (table / "analysis-spheres-seed1").mkdir(parents=True)

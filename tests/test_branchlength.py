@@ -113,7 +113,7 @@ def test_al_investigation_command(tmp_path, capsys):
 
     path = str(tmp_path / "syn.h5")
     write_synthetic_dump(path, n_contacts=2000, n_snapshots=4, seed=1)
-    assert main(["al-investigation", path, str(tmp_path / "none.h5"), "--pairs", "100"]) == 0
+    assert main(["investigate", "al-investigation", path, str(tmp_path / "none.h5"), "--pairs", "100"]) == 0
     out = capsys.readouterr().out
     assert out.startswith("synthetic check (200000 contacts, a = 0.08, a_l = 0.12")
     assert f"## {path}: spheres" in out and "1. overall" in out and "2. <l / d_pair>(theta)" in out

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from postproc.schema import DumpReader
-from yade_scripts import checkpoint
-from yade_scripts.generate import generate
+from yade_scripts.runs import checkpoint
+from yade_scripts.campaign.generate import generate
 
 YADE = shutil.which("yade")
 
@@ -228,7 +228,7 @@ def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path
     import pandas as pd
 
     from postproc.study.report import build_report
-    from yade_scripts.study import analyse_and_report, unusable_samples
+    from yade_scripts.campaign.study import analyse_and_report, unusable_samples
 
     out = tmp_path / "study"
     folders = {}
@@ -272,13 +272,13 @@ def test_study_uses_a_partial_run_and_fails_only_without_any_usable_run(tmp_path
 
 
 def test_a_crashed_run_is_resumed_a_stated_number_of_times(tmp_path, capsys):
-    """The one rule (yade_scripts.runstate.judge, applied by the pool that
+    """The one rule (yade_scripts.runs.runstate.judge, applied by the pool that
     runs every run) with a stand-in for YADE: a run killed by SIGKILL that
     left a checkpoint is started again until it ends with 0, at most
     MAX_RESUMES times; a crash before the first checkpoint starts afresh,
     as many times at most; a blow-up (exit 3) is not retried."""
-    from yade_scripts.pool import Job, run_pool
-    from yade_scripts.runstate import MAX_RESUMES
+    from yade_scripts.launch.pool import Job, run_pool
+    from yade_scripts.runs.runstate import MAX_RESUMES
 
     def exits(script):
         exe = tmp_path / "fake-yade"

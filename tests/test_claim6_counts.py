@@ -166,7 +166,7 @@ def test_claim6_criteria_command(tiny_study, capsys):
     stability test and its figure; a folder without a study: exit 2."""
     from postproc.cli import main
 
-    assert main(["claim6-criteria", tiny_study, "--types", "points", "--tolerance", "0.05", "0.2"]) == 0
+    assert main(["investigate", "claim6-criteria", tiny_study, "--types", "points", "--tolerance", "0.05", "0.2"]) == 0
     out = os.path.join(tiny_study, "claim6")
     assert sorted(os.listdir(out)) == ["claim6.md", "points-tolerance.png", "seed1-points-tol0.05",
                                        "seed1-points-tol0.2"]
@@ -179,12 +179,12 @@ def test_claim6_criteria_command(tiny_study, capsys):
     vf = own["ct_fabric_VF"].to_numpy(float)[steady_indices(own["eps_q"], own["stage"])].mean()
     assert f"| seed 1 | nan | {vf:+.3f} |" in md
     assert "Leanings per seed (points-tol0.2" in capsys.readouterr().out
-    assert main(["claim6-criteria", out]) == 2
+    assert main(["investigate", "claim6-criteria", out]) == 2
     assert "no usable S1 run" in capsys.readouterr().err
 
 
 def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, capsys):
-    """``python -m yade_scripts.study --counts``: each S1 dump analysed once
+    """``python -m yade_scripts.campaign.study --counts``: each S1 dump analysed once
     more per count given (here the 2009 route), the manifest listing them
     and the report reading claim 6 by each; a second pass with one more
     count makes only the missing analysis; the pool's command after a run
@@ -192,7 +192,7 @@ def test_study_reads_claim6_by_the_counts_it_is_given(dump, tmp_path, capsys):
     one, is refused in one line before anything runs."""
     import shutil
 
-    from yade_scripts import study as st
+    from yade_scripts.campaign import study as st
 
     out = tmp_path / "study"
     (out / "polyhedra").mkdir(parents=True)

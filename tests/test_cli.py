@@ -216,26 +216,101 @@ def test_synthetic_subcommand(tmp_path):
 
 
 #: the subcommands of the study's own analyses (postproc.study), each with its --help
-STUDY_COMMANDS = ("leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
+STUDY_COMMANDS = ("size-front", "leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
                   "lmgc90-agreement", "al-investigation",
                   "contact-types-kappa", "commonplane-reference", "facepair-tilt",
                   "timestep-front", "random-types", "shape-front")
+#: a user's commands, in the order postproc --help lists them
+USER = ("analyze", "report", "results", "compare-results", "export-vtk", "import-lmgc90")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)
 def test_study_subcommand_help(cmd, capsys):
     with pytest.raises(SystemExit) as exc:
-        main([cmd, "--help"])
+        main(["investigate", cmd, "--help"])
     assert exc.value.code == 0
     out = capsys.readouterr().out
-    assert out.startswith(f"usage: postproc {cmd}") and "--help" in out
+    assert out.startswith(f"usage: postproc investigate {cmd}") and "--help" in out
+
+
+def _listed(text, title):
+    """The subcommands a help text lists under ``title`` (argparse's layout:
+    a name at the start of an indented line)."""
+    block = text.split(f"\n{title}:\n", 1)[1].split("\n\n", 1)[0]
+    return [line.split()[0] for line in block.splitlines() if line.startswith("    ") and
+            not line.startswith("     ")]
+
+
+def test_the_help_lists_a_users_commands_first_and_the_investigations_in_their_group(capsys):
+    from postproc import cli
+
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    top = _listed(capsys.readouterr().out, "commands")
+    assert tuple(top[:len(USER)]) == USER and top[len(USER):] == ["synthetic", "investigate"]
+    with pytest.raises(SystemExit):
+        main(["investigate", "--help"])
+    inner = _listed(capsys.readouterr().out, "investigations")
+    assert sorted(inner) == sorted(STUDY_COMMANDS) == sorted(c.name for c in cli.INVESTIGATIONS)
+    assert not set(inner) & set(top)
+
+
+def test_the_old_spellings_run_with_a_note(tmp_path, capsys):
+    """postproc NAME still runs an investigation, with one line on stderr
+    saying its new spelling; the new spelling gives no note."""
+    assert main(["timestep-front", str(tmp_path / "none")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert err[0] == ("postproc: note: 'postproc timestep-front' is now 'postproc investigate timestep-front'; "
+                      "the old spelling will be removed") and err[1].startswith("postproc: error: ")
+    assert main(["investigate", "timestep-front", str(tmp_path / "none")]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and err[0].startswith("postproc: error: ")
+
+
+def test_one_error_handler_for_every_command():
+    """cli.main dispatches through the tables and turns errors into one line
+    in one place."""
+    import ast
+    import inspect
+
+    from postproc import cli
+
+    src = inspect.getsource(cli)
+    assert src.count('f"postproc: error: {exc}"') == 1
+    tree = ast.parse(src)
+    main_fn = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "main")
+    assert not [n for n in ast.walk(main_fn) if isinstance(n, ast.If) and "cmd" in ast.unparse(n.test)]
+    names = [c.name for c in cli.USER_COMMANDS + cli.TOOLS + cli.INVESTIGATIONS]
+    assert len(names) == len(set(names)) == 20
+
+
+def test_a_command_is_one_entry(monkeypatch, capsys):
+    """A command added to the table is listed, parsed and run, and its bad
+    input is one line with exit code 2 (the one handler)."""
+    from postproc import cli
+    from postproc.errors import InputError
+
+    def run(args):
+        if args.value < 0:
+            raise InputError(f"--value must be >= 0, got {args.value}")
+        print(f"value {args.value}")
+        return 0
+
+    extra = cli.Command("import-test", "a test's command", lambda p: p.add_argument("--value", type=int), run)
+    monkeypatch.setattr(cli, "USER_COMMANDS", cli.USER_COMMANDS + (extra,))
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    assert _listed(capsys.readouterr().out, "commands")[len(USER)] == "import-test"
+    assert main(["import-test", "--value", "3"]) == 0 and capsys.readouterr().out == "value 3\n"
+    assert main(["import-test", "--value", "-1"]) == 2
+    assert capsys.readouterr().err == "postproc: error: --value must be >= 0, got -1\n"
 
 
 def test_analysis_front_subcommand(tmp_path, capsys):
     """A small front (2 sets per size, the default sizes): the CSV, the
     figure and the printed table."""
     out = tmp_path / "af"
-    assert main(["analysis-front", "--out", str(out), "--reps", "2"]) == 0
+    assert main(["investigate", "analysis-front", "--out", str(out), "--reps", "2"]) == 0
     table = pd.read_csv(out / "analysis_front.csv")
     assert set(table["estimator"]) == {"tensors", "fit-6", "fit-9", "fit-18", "fit-36"}
     assert (table["rms_max"] > 0).all() and (out / "analysis_front.png").stat().st_size > 0

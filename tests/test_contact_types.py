@@ -204,7 +204,7 @@ def test_random_types_command(tmp_path, capsys):
     path = str(tmp_path / "lib.h5")
     shapes, _ = generate_library(8, seed=5)
     write_library(path, shapes, 5, Recipe().as_dict(), {})
-    assert main(["random-types", "--library", path, "--pairs", "3000"]) == 0
+    assert main(["investigate", "random-types", "--library", path, "--pairs", "3000"]) == 0
     out = capsys.readouterr().out.splitlines()
     assert [line.split(" deg")[0] for line in out] == ["theta  2.5", "theta  5.0", "theta 10.0"]
     lib = ShapeLibrary(path)
@@ -215,5 +215,5 @@ def test_random_types_command(tmp_path, capsys):
     tables = shape_tables(*zip(*[lib[s] for s in range(len(lib))]))
     _, _, pair = classify_contacts(tables, s1[:3000], s2[:3000], q1[:3000], q2[:3000], n[:3000], 5.0)
     assert tab.loc[1, "FF"] == np.mean(np.array(PAIR_TYPES)[pair] == "FF")
-    assert main(["random-types", "--library", str(tmp_path / "none.h5")]) == 2
+    assert main(["investigate", "random-types", "--library", str(tmp_path / "none.h5")]) == 2
     assert "postproc: error:" in capsys.readouterr().err

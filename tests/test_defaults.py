@@ -56,7 +56,7 @@ def test_what_make_study_runs_is_what_docs_study_quotes():
         recipe = recipe.replace(part, "")
     for name, value in v.items():
         recipe = recipe.replace(f"$({name})", value)
-    cmd = re.search(r"\$\(PY\) -m (yade_scripts\.study [^@]*)", recipe).group(1)   # then the comparison
+    cmd = re.search(r"\$\(PY\) -m (yade_scripts\.campaign\.study [^@]*)", recipe).group(1)   # then the comparison
     cmd = " ".join(cmd.split())
     assert f"python -m {cmd}\n" in text("docs/study.md")
     # the README quotes the default's seeds
@@ -64,14 +64,14 @@ def test_what_make_study_runs_is_what_docs_study_quotes():
 
 
 def test_the_study_command_defaults_are_what_docs_study_says():
-    from yade_scripts.study import main  # noqa: F401  (importable)
-    src = text("yade_scripts/study.py")
+    from yade_scripts.campaign.study import main  # noqa: F401  (importable)
+    src = text("yade_scripts/campaign/study.py")
     assert re.search(r'"--ensemble", type=int, default=1\b', src)
     assert "runs one seed per sample unless given `--ensemble N`" in " ".join(text("docs/study.md").split())
 
 
 def test_make_front_runs_the_front_commands_default_plan():
-    from yade_scripts.front import DEFAULT_PLAN, PLANS
+    from yade_scripts.campaign.sweeps import DEFAULT_PLAN, PLANS
 
     assert makefile_vars()["FRONT_PLAN"] == DEFAULT_PLAN == "default"
     front = text("docs/front.md")
@@ -80,23 +80,6 @@ def test_make_front_runs_the_front_commands_default_plan():
         assert f"`{plan}`" in front, plan
     runs = sum(len(PLANS["default"][s]) for s in ("polyhedra", "spheres"))   # a line per seed and point
     assert f"{runs} runs" in front
-
-
-def test_the_test_fast_duration_is_quoted_alike():
-    quoted = re.search(r"test-fast.*?in (\d+ to \d+ minutes)", text("README.md"), re.S).group(1)
-    assert quoted in makefile_recipe_comment("test-fast")
-
-
-def makefile_recipe_comment(target):
-    """The comment lines just above a Makefile target."""
-    lines = text("Makefile").split("\n")
-    i = next(k for k, line in enumerate(lines) if line.startswith(f"{target}:"))
-    out = []
-    for line in reversed(lines[:i]):
-        if not line.startswith("#"):
-            break
-        out.append(line)
-    return " ".join(reversed(out))
 
 
 PRESET_FACTS = {
@@ -122,7 +105,7 @@ PRESET_FACTS = {
 
 @pytest.mark.parametrize("preset", sorted(PRESET_FACTS))
 def test_the_presets_are_what_the_docs_say(preset):
-    from yade_scripts.presets import resolve
+    from yade_scripts.campaign.presets import resolve
 
     for sample, facts in PRESET_FACTS[preset].items():
         p = resolve(preset, sample)
@@ -130,10 +113,10 @@ def test_the_presets_are_what_the_docs_say(preset):
 
 
 def test_every_preset_is_documented():
-    from yade_scripts.presets import PRESETS
+    from yade_scripts.campaign.presets import PRESETS
 
     assert set(PRESETS) == set(PRESET_FACTS)
-    scenes, doc = text("docs/scenes.md"), text("yade_scripts/presets.py")
+    scenes, doc = text("docs/scenes.md"), text("yade_scripts/campaign/presets.py")
     for name in PRESETS:
         assert f"`{name}`" in scenes, name
         assert f"``{name}``" in doc, name
@@ -142,13 +125,13 @@ def test_every_preset_is_documented():
 def test_the_default_scene_is_the_default_presets_polyhedra():
     """triaxial.py's own block holds the parameter table's defaults, which
     are the default preset's S1 (docs/scenes.md)."""
-    from yade_scripts.parameters import PARAMETERS
-    from yade_scripts.presets import resolve
+    from yade_scripts.scene.parameters import PARAMETERS
+    from yade_scripts.campaign.presets import resolve
 
     p = resolve("default", "polyhedra")
     assert {q.name: q.default for q in PARAMETERS if q.name in p} == {q.name: p[q.name] for q in PARAMETERS
                                                                       if q.name in p}
-    assert re.search(r"^    safety=0\.45,", text("yade_scripts/triaxial.py"), re.M)
+    assert re.search(r"^    safety=0\.45,", text("yade_scripts/scene/triaxial.py"), re.M)
 
 
 def test_the_criteria_and_their_options():
@@ -179,7 +162,7 @@ def test_the_cli_defaults_are_the_usage_lines(capsys):
 
 def test_the_claims_thresholds_the_docs_quote():
     from postproc.study import claims
-    from yade_scripts.runstate import MAX_RESUMES
+    from yade_scripts.runs.runstate import MAX_RESUMES
 
     study = " ".join(text("docs/study.md").split())
     assert f"|a_l| < {claims.NEGLIGIBLE:g}" in study
@@ -192,9 +175,9 @@ def test_the_claims_thresholds_the_docs_quote():
 
 def test_the_cost_model_table_is_the_model():
     """docs/scenes.md's table of the cost model, row by row, against
-    yade_scripts.slurm.estimate on the presets (rounded as printed)."""
-    from yade_scripts.presets import resolve
-    from yade_scripts.slurm import estimate
+    yade_scripts.launch.slurm.estimate on the presets (rounded as printed)."""
+    from yade_scripts.campaign.presets import resolve
+    from yade_scripts.launch.slurm import estimate
 
     scenes = text("docs/scenes.md")
     block = scenes[scenes.index("| preset, sample | grains |"):]
@@ -214,8 +197,8 @@ def test_the_cost_model_table_is_the_model():
 
 
 def test_the_core_hours_the_docs_quote():
-    from yade_scripts.presets import resolve
-    from yade_scripts.slurm import estimate
+    from yade_scripts.campaign.presets import resolve
+    from yade_scripts.launch.slurm import estimate
 
     def pair(preset):
         return sum(estimate(resolve(preset, s))["core_hours"] for s in ("polyhedra", "spheres"))
@@ -244,7 +227,7 @@ def test_the_core_hours_the_docs_quote():
 
 
 def test_the_scene_parameters_the_docs_quote():
-    from yade_scripts.parameters import PARAMETERS
+    from yade_scripts.scene.parameters import PARAMETERS
 
     d = {q.name: q.default for q in PARAMETERS}
     scenes = " ".join(text("docs/scenes.md").split())

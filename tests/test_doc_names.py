@@ -1,6 +1,6 @@
 """Every name of our code that README.md and docs/*.md quote in backticks
-(``postproc.stress.stress_tensor``, ``yade_scripts/pool.py``,
-``yade_scripts.pool.yade_env``, ``shapes/overlap.py``) exists: the module's
+(``postproc.stress.stress_tensor``, ``yade_scripts/launch/pool.py``,
+``yade_scripts.launch.pool.yade_env``, ``shapes/overlap.py``) exists: the module's
 file, and each attribute after it as a top-level definition of that module
 (or a method of its class). Read with ``ast``, without importing: the YADE
 scripts are checked too."""
@@ -90,8 +90,8 @@ def resolve(name):
 def test_the_pattern_finds_what_the_docs_quote():
     names = {n for _, n in quoted()}
     assert len(names) > 30
-    assert resolve("yade_scripts.pool.yade_env") is None and resolve("yade_scripts/pool.py") is None
-    assert resolve("yade_scripts/batch.yade_env") == "yade_scripts/batch.py defines no yade_env"
+    assert resolve("yade_scripts.launch.pool.yade_env") is None and resolve("yade_scripts/launch/pool.py") is None
+    assert resolve("yade_scripts/launch/batch.yade_env") == "yade_scripts/launch/batch.py defines no yade_env"
     assert resolve("postproc.nosuchmodule") is not None
 
 

@@ -42,7 +42,7 @@ def test_the_api_page_names_every_module():
         text = fh.read()
     scripts = set(apigen().SCRIPTS)
     modules = every_module()
-    assert {"postproc.pipeline", "postproc.study.report", "yade_scripts.pool", "yade_scripts.host",
+    assert {"postproc.pipeline", "postproc.study.report", "yade_scripts.launch.pool", "yade_scripts.runs.host",
             "shapes.sections", "postproc.study.results"} <= modules
     missing = sorted(m for m in modules - scripts if f".. automodule:: {m}\n" not in text)
     assert not missing, f"modules without a section in docs/api.md: {missing}"

@@ -9,7 +9,7 @@ import pandas as pd
 import pytest
 
 from postproc.study.front import (add_errors, analysis_front, cost_model, fit_rigid_quasistatic, fit_table,
-                            monotone, pareto, point_table)
+                                  monotone, pareto, point_table)
 
 
 def test_pareto_and_errors_on_a_known_table():
@@ -106,8 +106,8 @@ def test_the_default_front_is_centred_on_the_default_preset():
     that point is the preset's (kappa, I), it has 3 paired seeds, and both
     sweeps and a corner surround it (what the fit needs: two kappa and two I
     values besides the reference, one point off both sweeps)."""
-    from yade_scripts.front import PLANS
-    from yade_scripts.presets import resolve
+    from yade_scripts.campaign.sweeps import PLANS
+    from yade_scripts.campaign.presets import resolve
 
     plan = PLANS["default"]
     for s in ("polyhedra", "spheres"):
@@ -254,7 +254,7 @@ def check_front_figures(out, saved):
 def test_two_point_sweep_on_the_tiny_preset(tmp_path, shape_library, monkeypatch):
     from saved_figures import record
 
-    from yade_scripts.front import main
+    from yade_scripts.campaign.sweeps import main
 
     out = tmp_path / "front"
     saved = record(monkeypatch)
@@ -285,7 +285,7 @@ def test_a_library_the_front_cannot_write_is_one_line(tmp_path, capsys, monkeypa
     import errno
 
     import shapes.library as L
-    from yade_scripts import front
+    from yade_scripts.campaign import sweeps as front
 
     def full(tmp, *args):
         raise OSError(errno.ENOSPC, "No space left on device")

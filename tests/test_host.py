@@ -1,8 +1,8 @@
-"""The host facts a run records (yade_scripts/host.py): hand-built
+"""The host facts a run records (yade_scripts/runs/host.py): hand-built
 /proc/cpuinfo texts with known answers, and a host whose facts cannot be read."""
 import platform
 
-from yade_scripts.host import SIMD_FLAGS, cpu_from_cpuinfo, host_info
+from yade_scripts.runs.host import SIMD_FLAGS, cpu_from_cpuinfo, host_info
 
 CPUINFO = """processor\t: 0
 vendor_id\t: AuthenticAMD

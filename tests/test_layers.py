@@ -12,10 +12,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 #: lower ones, never a higher one
 LAYERS = [
     ("base", {"errors", "schema", "axes", "statistics", "periodic", "provenance", "staging"}),
-    ("readers", {"contactset", "tables", "lammpsdump", "synthetic"}),
+    ("readers", {"contactset", "tables", "lammpsdump", "synthetic", "lmgc90files"}),
     ("physics", {"stress", "strain", "fabric", "angular", "coordination", "networks", "contacttypes",
-                 "contactpoints", "commonplane", "facetilt", "footprint", "classify", "pertype", "slab"}),
-    ("analysis", {"analysis", "plots", "vtk", "pipeline"}),
+                 "contactpoints", "polygons", "commonplane", "lmgc90shape", "lmgc90count", "facetilt", "footprint",
+                 "classify", "pertype", "slab", "cdpoints"}),
+    ("analysis", {"columns", "analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
                "study.branchlength", "study.sizefront", "study.results", "study.leaning", "study.sizestrain",
                "study.claim6", "study.lmgc90", "study.manifest", "study.alinvestigation",

@@ -47,10 +47,10 @@ def test_the_command_says_what_is_missing_in_one_line(tmp_path, capsys):
     grid list that leaves out the whole packing: exit 2, one line each."""
     from postproc.cli import main
 
-    assert main(["leaning-blocks", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "leaning-blocks", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "no complete S1 run" in err
-    assert main(["leaning-blocks", str(tmp_path), "--grids", "2", "3"]) == 2
+    assert main(["investigate", "leaning-blocks", str(tmp_path), "--grids", "2", "3"]) == 2
     assert "include 1" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
 
@@ -63,7 +63,7 @@ def test_the_command_on_a_tiny_study(tiny_study, tmp_path, capsys):
     from postproc.cli import main
 
     out = tmp_path / "blocks"
-    assert main(["leaning-blocks", tiny_study, "--types", "points", "--grids", "1", "2", "--min-grains", "1",
+    assert main(["investigate", "leaning-blocks", tiny_study, "--types", "points", "--grids", "1", "2", "--min-grains", "1",
                  "--out", str(out)]) == 0
     tab = pd.read_csv(out / "blocks.csv")
     assert sorted(zip(tab["type"], tab["grid"])) == [("EE", 1), ("EE", 2), ("VF", 1), ("VF", 2)]
@@ -75,5 +75,5 @@ def test_the_command_on_a_tiny_study(tiny_study, tmp_path, capsys):
         assert whole["mean"] == pytest.approx(np.nanmean(own[f"ct_fabric_{t}"].to_numpy(float)[window]), abs=1e-9)
     assert len(os.listdir(out / "cache")) == 1
     assert "| points | VF | 64 | 1 | 2 |" in capsys.readouterr().out
-    assert main(["leaning-blocks", tiny_study, "--types", "lmgc90", "--out", str(out)]) == 2
+    assert main(["investigate", "leaning-blocks", tiny_study, "--types", "lmgc90", "--out", str(out)]) == 2
     assert "no run with the counts asked for" in capsys.readouterr().err

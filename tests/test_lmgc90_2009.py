@@ -1,5 +1,5 @@
 """The 2009 route of LMGC90's count (``--types lmgc90-2009``): planplan with
-a length-tolerant convex intersection (postproc.commonplane.convex_set_2d,
+a length-tolerant convex intersection (postproc.polygons.convex_set_2d,
 tolerant_intersection), on hand-built cases of known answer.
 
 The 2-D intersection on its own: a segment across or inside a face, a point
@@ -29,7 +29,9 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from postproc import commonplane as cp
+from postproc import lmgc90count as lmgc
+from postproc import lmgc90shape as lshape
+from postproc import polygons as pg
 from postproc.classify import check_options
 from postproc.contactpoints import DOUBLE, SIMPLE, TRIPLE
 from postproc.contacttypes import PAIR_TYPES
@@ -64,7 +66,7 @@ TOL = 1e-3
 # ---------------------------------------------------------------- the 2-D intersection
 
 def test_the_docstring_examples_run():
-    for f in (cp.convex_set_2d, cp.tolerant_intersection):
+    for f in (pg.convex_set_2d, pg.tolerant_intersection):
         finder = doctest.DocTestFinder()
         runner = doctest.DocTestRunner()
         for t in finder.find(f, globs={f.__name__: f}):
@@ -72,88 +74,88 @@ def test_the_docstring_examples_run():
 
 
 def test_convex_sets_point_segment_polygon():
-    assert cp.convex_set_2d([[1.0, 2.0]], TOL).tolist() == [[1.0, 2.0]]
+    assert pg.convex_set_2d([[1.0, 2.0]], TOL).tolist() == [[1.0, 2.0]]
     # within tol of each other: one point, their mean
-    P = cp.convex_set_2d([[0.0, 0.0], [0.5 * TOL, 0.0], [0.0, 0.5 * TOL]], TOL)
+    P = pg.convex_set_2d([[0.0, 0.0], [0.5 * TOL, 0.0], [0.0, 0.5 * TOL]], TOL)
     assert P.shape == (1, 2)
     # within tol of a line: a segment, its two ends exactly
-    S = cp.convex_set_2d([[0.0, 0.0], [1.0, 0.5 * TOL], [2.0, 0.0], [0.5, -0.25 * TOL]], TOL)
+    S = pg.convex_set_2d([[0.0, 0.0], [1.0, 0.5 * TOL], [2.0, 0.0], [0.5, -0.25 * TOL]], TOL)
     assert same_set(S, [[0.0, 0.0], [2.0, 0.0]], 0.0)
     # wider: a polygon, its corners exactly, counter-clockwise
-    Q = cp.convex_set_2d([[0.0, 0.0], [1.0, 2 * TOL], [2.0, 0.0]], TOL)
+    Q = pg.convex_set_2d([[0.0, 0.0], [1.0, 2 * TOL], [2.0, 0.0]], TOL)
     assert same_set(Q, [[0.0, 0.0], [1.0, 2 * TOL], [2.0, 0.0]], 0.0)
-    assert cp._area2(Q) > 0
+    assert pg._area2(Q) > 0
     # a corner within tol of its neighbours' line is dropped
-    Q = cp.convex_set_2d(np.vstack([SQUARE, [[1.0, -0.5 * TOL]]]), TOL)
+    Q = pg.convex_set_2d(np.vstack([SQUARE, [[1.0, -0.5 * TOL]]]), TOL)
     assert same_set(Q, SQUARE, 0.0)
 
 
 def test_a_segment_inside_a_face_gives_its_two_ends():
     seg = [[0.25, 0.5], [1.5, 1.25]]
-    assert same_set(cp.tolerant_intersection(seg, SQUARE, TOL), seg, 0.0)
+    assert same_set(pg.tolerant_intersection(seg, SQUARE, TOL), seg, 0.0)
 
 
 def test_a_segment_across_a_face_gives_its_two_clipped_ends():
     seg = np.array([[-1.0, 0.5], [3.0, 0.7]])
-    I = cp.tolerant_intersection(seg, SQUARE, TOL)
+    I = pg.tolerant_intersection(seg, SQUARE, TOL)
     # where the line y = 0.5 + 0.05 (x + 1) meets x = 0 and x = 2
     assert same_set(I, [[0.0, 0.55], [2.0, 0.65]], fp(3.0))
     # clipped on one side only: the inner end and the crossing
-    I = cp.tolerant_intersection([[1.0, 1.0], [1.0, 5.0]], SQUARE, TOL)
+    I = pg.tolerant_intersection([[1.0, 1.0], [1.0, 5.0]], SQUARE, TOL)
     assert same_set(I, [[1.0, 1.0], [1.0, 2.0]], 0.0)
 
 
 def test_a_segment_touching_a_face_by_one_end_gives_one_point():
-    I = cp.tolerant_intersection([[2.0, 1.0], [4.0, 1.0]], SQUARE, TOL)
+    I = pg.tolerant_intersection([[2.0, 1.0], [4.0, 1.0]], SQUARE, TOL)
     assert same_set(I, [[2.0, 1.0]], 0.0)
 
 
 def test_a_point_inside_a_polygon_gives_one_point():
-    I = cp.tolerant_intersection([[0.75, 1.25]], SQUARE, TOL)
+    I = pg.tolerant_intersection([[0.75, 1.25]], SQUARE, TOL)
     assert I.tolist() == [[0.75, 1.25]]
-    assert len(cp.tolerant_intersection([[2.5, 1.25]], SQUARE, TOL)) == 0
+    assert len(pg.tolerant_intersection([[2.5, 1.25]], SQUARE, TOL)) == 0
 
 
 def test_two_overlapping_squares_give_the_corners_of_their_overlap_exactly():
-    I = cp.tolerant_intersection(SQUARE, SQUARE + [1.0, 0.5], TOL)
+    I = pg.tolerant_intersection(SQUARE, SQUARE + [1.0, 0.5], TOL)
     assert same_set(I, [[1.0, 0.5], [2.0, 0.5], [2.0, 2.0], [1.0, 2.0]], 0.0)
-    I = cp.tolerant_intersection(SQUARE, SQUARE * 0.25 + 0.5, TOL)           # one inside the other
+    I = pg.tolerant_intersection(SQUARE, SQUARE * 0.25 + 0.5, TOL)           # one inside the other
     assert same_set(I, SQUARE * 0.25 + 0.5, 0.0)
 
 
 def test_two_faces_side_by_side_meet_along_a_segment():
     """Faces touching along an edge (no area: planplan gives nothing): the
     two ends of the common stretch."""
-    I = cp.tolerant_intersection(SQUARE, SQUARE + [2.0, 1.0], TOL)
+    I = pg.tolerant_intersection(SQUARE, SQUARE + [2.0, 1.0], TOL)
     assert same_set(I, [[2.0, 1.0], [2.0, 2.0]], 0.0)
     # a sliver narrower than tol is a segment too
-    I = cp.tolerant_intersection(SQUARE, SQUARE + [2.0 - 0.5 * TOL, 1.0], TOL)
+    I = pg.tolerant_intersection(SQUARE, SQUARE + [2.0 - 0.5 * TOL, 1.0], TOL)
     assert len(I) == 2
 
 
 def test_collinear_segments_give_the_ends_of_their_overlap():
-    I = cp.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [3.0, 0.0]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [3.0, 0.0]], TOL)
     assert same_set(I, [[1.0, 0.0], [2.0, 0.0]], 0.0)
     # one inside the other, and within tol of one line
-    I = cp.tolerant_intersection([[0.0, 0.0], [4.0, 0.0]], [[3.0, 0.5 * TOL], [1.0, -0.5 * TOL]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.0], [4.0, 0.0]], [[3.0, 0.5 * TOL], [1.0, -0.5 * TOL]], TOL)
     assert same_set(I, [[1.0, -0.5 * TOL], [3.0, 0.5 * TOL]], 0.0)
     # end to end: one point
-    I = cp.tolerant_intersection([[0.0, 0.0], [1.0, 0.0]], [[1.0 + 0.5 * TOL, 0.0], [3.0, 0.0]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.0], [1.0, 0.0]], [[1.0 + 0.5 * TOL, 0.0], [3.0, 0.0]], TOL)
     assert len(I) == 1
     # apart along their line by more than tol: nothing
-    assert len(cp.tolerant_intersection([[0.0, 0.0], [1.0, 0.0]], [[1.0 + 2 * TOL, 0.0], [3.0, 0.0]], TOL)) == 0
+    assert len(pg.tolerant_intersection([[0.0, 0.0], [1.0, 0.0]], [[1.0 + 2 * TOL, 0.0], [3.0, 0.0]], TOL)) == 0
 
 
 def test_crossing_segments_give_the_crossing():
-    I = cp.tolerant_intersection([[0.0, 0.0], [2.0, 2.0]], [[0.0, 2.0], [2.0, 0.0]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.0], [2.0, 2.0]], [[0.0, 2.0], [2.0, 0.0]], TOL)
     assert I.tolist() == [[1.0, 1.0]]
-    I = cp.tolerant_intersection([[0.0, 0.25], [3.0, 0.25]], [[1.5, -1.0], [1.5, 1.0]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.25], [3.0, 0.25]], [[1.5, -1.0], [1.5, 1.0]], TOL)
     assert I.tolist() == [[1.5, 0.25]]
     # a T: one end on the other segment
-    I = cp.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [1.0, 1.0]], TOL)
+    I = pg.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[1.0, 0.0], [1.0, 1.0]], TOL)
     assert I.tolist() == [[1.0, 0.0]]
     # parallel, apart by more than tol: nothing
-    assert len(cp.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[0.0, 2 * TOL], [2.0, 2 * TOL]], TOL)) == 0
+    assert len(pg.tolerant_intersection([[0.0, 0.0], [2.0, 0.0]], [[0.0, 2 * TOL], [2.0, 2 * TOL]], TOL)) == 0
 
 
 @pytest.mark.parametrize("factor,points", [(1 - MARGIN, 2), (1 + MARGIN, 0)])
@@ -162,7 +164,7 @@ def test_a_segment_just_outside_a_face(factor, points):
     within tol, nothing beyond."""
     off = factor * TOL
     seg = [[0.5, -off], [1.5, -off]]
-    I = cp.tolerant_intersection(seg, SQUARE, TOL)
+    I = pg.tolerant_intersection(seg, SQUARE, TOL)
     assert len(I) == points
     if points:
         assert same_set(I, seg, 0.0)
@@ -171,9 +173,9 @@ def test_a_segment_just_outside_a_face(factor, points):
 @pytest.mark.parametrize("factor,points", [(1 - MARGIN, 1), (1 + MARGIN, 0)])
 def test_a_point_just_outside(factor, points):
     off = factor * TOL
-    assert len(cp.tolerant_intersection([[1.0, 2.0 + off]], SQUARE, TOL)) == points
-    assert len(cp.tolerant_intersection([[1.0, off]], [[0.0, 0.0], [2.0, 0.0]], TOL)) == points
-    assert len(cp.tolerant_intersection([[1.0, off]], [[1.0, 0.0]], TOL)) == points
+    assert len(pg.tolerant_intersection([[1.0, 2.0 + off]], SQUARE, TOL)) == points
+    assert len(pg.tolerant_intersection([[1.0, off]], [[0.0, 0.0], [2.0, 0.0]], TOL)) == points
+    assert len(pg.tolerant_intersection([[1.0, off]], [[1.0, 0.0]], TOL)) == points
 
 
 def test_more_than_four_corners_keeps_the_four_sharpest():
@@ -181,10 +183,10 @@ def test_more_than_four_corners_keeps_the_four_sharpest():
     their neighbours' line, so they are corners): the square's four."""
     hexagon = [[0.0, 0.0], [1.0, -10 * TOL], [2.0, 0.0], [2.0, 2.0], [1.0, 2.0 + 10 * TOL], [0.0, 2.0]]
     big = SQUARE * 10 - 9.0
-    assert len(cp.convex_set_2d(hexagon, TOL)) == 6
-    I = cp.tolerant_intersection(hexagon, big, TOL)       # the big square clipped by the hexagon's edges
+    assert len(pg.convex_set_2d(hexagon, TOL)) == 6
+    I = pg.tolerant_intersection(hexagon, big, TOL)       # the big square clipped by the hexagon's edges
     assert same_set(I, SQUARE, fp(11.0))
-    assert len(cp.tolerant_intersection(hexagon, big, TOL, max_points=6)) == 6
+    assert len(pg.tolerant_intersection(hexagon, big, TOL, max_points=6)) == 6
 
 
 CASES = {
@@ -206,15 +208,15 @@ def test_rigid_motions_of_the_plane_and_swapped_sides(case):
     """Rotating and translating the plane coordinates moves the points with
     them; swapping the two sides gives the same points."""
     P, Q = (np.asarray(x, float) for x in CASES[case])
-    I = cp.tolerant_intersection(P, Q, TOL)
+    I = pg.tolerant_intersection(P, Q, TOL)
     assert len(I)
-    assert same_set(cp.tolerant_intersection(Q, P, TOL), I, fp(4.0))
+    assert same_set(pg.tolerant_intersection(Q, P, TOL), I, fp(4.0))
     rng = np.random.default_rng(7)
     for _ in range(5):
         a = rng.uniform(0, 2 * np.pi)
         R = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
         x = rng.uniform(-4, 4, 2)
-        J = cp.tolerant_intersection(P @ R.T + x, Q @ R.T + x, TOL)
+        J = pg.tolerant_intersection(P @ R.T + x, Q @ R.T + x, TOL)
         assert same_set(J, I @ R.T + x, fp(10.0)), a
 
 
@@ -223,10 +225,10 @@ def test_bad_input_one_line_errors():
                       ([[np.nan, 0.0]], SQUARE, TOL), ([[0.0, 0.0]], SQUARE, -1.0),
                       ([[0.0, 0.0]], SQUARE, np.inf), ([[0.0, 0.0]], "abc", TOL)):
         with pytest.raises(InputError) as e:
-            cp.tolerant_intersection(P, Q, tol)
+            pg.tolerant_intersection(P, Q, tol)
         assert "\n" not in str(e.value)
     with pytest.raises(InputError):
-        cp.tolerant_intersection(SQUARE, SQUARE, TOL, max_points=0)
+        pg.tolerant_intersection(SQUARE, SQUARE, TOL, max_points=0)
 
 
 # ---------------------------------------------------------------- whole pairs of cubes
@@ -250,7 +252,7 @@ def cube(h):
 
 
 BIG, SMALL = cube(2 * H), cube(H)
-SHAPES = [cp.lmgc90_shape(*BIG), cp.lmgc90_shape(*SMALL)]
+SHAPES = [lshape.lmgc90_shape(*BIG), lshape.lmgc90_shape(*SMALL)]
 I3 = np.eye(3)
 RX45 = Rotation.from_euler("x", 45, degrees=True).as_matrix()
 RY45 = Rotation.from_euler("y", 45, degrees=True).as_matrix()
@@ -289,7 +291,7 @@ PAIRS = {
 
 def _bodies(case):
     sa, Ra, xa, sc, Rc, xc = PAIRS[case][0]
-    return cp._Body(SHAPES[sc], Rc, xc), cp._Body(SHAPES[sa], Ra, xa)
+    return lmgc._Body(SHAPES[sc], Rc, xc), lmgc._Body(SHAPES[sa], Ra, xa)
 
 
 @pytest.mark.parametrize("case", sorted(PAIRS))
@@ -300,8 +302,8 @@ def test_hand_built_pairs(case):
     _, want, n_planplan, group, _ = PAIRS[case]
     cd, an = _bodies(case)
     alert = 0.1 * H
-    r = cp.lmgc90_pair(cd, an, alert, route="lmgc90-2009")
-    old = cp.lmgc90_pair(cd, an, alert, route="lmgc90-planplan")
+    r = lmgc.lmgc90_pair(cd, an, alert, route="lmgc90-2009")
+    old = lmgc.lmgc90_pair(cd, an, alert, route="lmgc90-planplan")
     assert len(old["points"]) == n_planplan
     n = len(r["points"])
     assert n in {SIMPLE: (0, 1), DOUBLE: (2,), TRIPLE: (3, 4)}[group]
@@ -322,7 +324,7 @@ def test_parallel_edges_give_the_ends_of_their_overlap():
     along x meets the other's and no faces do: the two ends of the stretch
     the edges share, x from -H + 0.005 to H."""
     cd, an = _bodies("parallel edges")
-    r = cp.lmgc90_pair(cd, an, 0.1 * H, route="lmgc90-2009")
+    r = lmgc.lmgc90_pair(cd, an, 0.1 * H, route="lmgc90-2009")
     assert np.allclose(np.sort(r["points"][:, 0]), [-H + 0.005, H], rtol=0, atol=fp(0.05))
     assert np.ptp(r["points"][:, 1]) <= fp(0.05)
 
@@ -337,28 +339,28 @@ def test_the_block_path_and_the_groups():
     lmgc90_pair, and the paper's group and pair labels."""
     names = sorted(PAIRS)
     rows = [PAIRS[k][0] for k in names]
-    tables = cp.LmgcTables(SHAPES)
+    tables = lshape.LmgcTables(SHAPES)
     args = (tables, np.array([r[3] for r in rows]), np.array([r[5] for r in rows]),
             np.array([_quat(r[4]) for r in rows]), np.array([r[0] for r in rows]),
             np.array([r[2] for r in rows]), np.array([_quat(r[1]) for r in rows]))
-    out = cp.lmgc90_points(*args, 0.1 * H, route="lmgc90-2009", min_radius=H)
-    old = cp.lmgc90_points(*args, 0.1 * H, route="lmgc90-planplan", min_radius=H)
+    out = lmgc.lmgc90_points(*args, 0.1 * H, route="lmgc90-2009", min_radius=H)
+    old = lmgc.lmgc90_points(*args, 0.1 * H, route="lmgc90-planplan", min_radius=H)
     assert out["group"].tolist() == [PAIRS[k][3] for k in names]
     assert [PAIR_TYPES[p] for p in out["pair"]] == [PAIRS[k][4] for k in names]
     assert old["group"].tolist() == [TRIPLE if PAIRS[k][2] else SIMPLE for k in names]
     for k, name in enumerate(names):
         cd, an = _bodies(name)
-        r = cp.lmgc90_pair(cd, an, 0.1 * H, route="lmgc90-2009", min_radius=H)
+        r = lmgc.lmgc90_pair(cd, an, 0.1 * H, route="lmgc90-2009", min_radius=H)
         assert same_set(out["xyz"][k], r["points"], fp(0.05)), name
 
 
 def test_the_route_is_listed_and_checked():
-    assert "lmgc90-2009" in cp.LMGC90_ROUTES
+    assert "lmgc90-2009" in lmgc.LMGC90_ROUTES
     check_options("lmgc90-2009", tolerance=0.1)
     with pytest.raises(InputError):
         check_options("lmgc90-2009", tolerance=-1.0)
     with pytest.raises(InputError):
-        cp.check_route("lmgc90-2008")
+        lmgc.check_route("lmgc90-2008")
 
 
 def test_lmgc90s_hand_built_fixture_pairs():
@@ -372,8 +374,8 @@ def test_lmgc90s_hand_built_fixture_pairs():
     shapes = _shapes(F)
     for ci, case in enumerate(FCASES):
         rows = np.flatnonzero(F["body_case"] == ci)
-        cd, an = (cp._Body(shapes[F["body_shape"][k]], F["body_R"][k], F["body_x"][k]) for k in rows)
-        r = cp.lmgc90_pair(cd, an, float(F["alert"]), route="lmgc90-2009")
+        cd, an = (lmgc._Body(shapes[F["body_shape"][k]], F["body_R"][k], F["body_x"][k]) for k in rows)
+        r = lmgc.lmgc90_pair(cd, an, float(F["alert"]), route="lmgc90-2009")
         new = (F["lmgc_case"] == ci) & (F["lmgc_route"] == "new")
         old = (F["lmgc_case"] == ci) & (F["lmgc_route"] == "old")
         assert len(r["points"]) == new.sum(), case

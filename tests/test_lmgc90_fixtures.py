@@ -1,4 +1,4 @@
-"""LMGC90's own count (postproc.commonplane.lmgc90_points, --types lmgc90
+"""LMGC90's own count (postproc.lmgc90count.lmgc90_points, --types lmgc90
 and lmgc90-planplan) against LMGC90's compiled code.
 
 The fixtures (tests/data/lmgc90, made by make_fixtures.py with the
@@ -34,7 +34,8 @@ import numpy as np
 import pytest
 from scipy.spatial import cKDTree
 
-from postproc import commonplane as cp
+from postproc import lmgc90count as lmgc
+from postproc import lmgc90shape as lshape
 from postproc.classify import Classifier, check_options
 from postproc.contacttypes import PAIR_TYPES
 from postproc.errors import InputError
@@ -56,7 +57,7 @@ def _load(name):
 
 def _shapes(F):
     vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
-    return [cp.lmgc90_shape(F["shape_vertices"][vo[i]:vo[i + 1]], F["shape_triangles"][to[i]:to[i + 1]])
+    return [lshape.lmgc90_shape(F["shape_vertices"][vo[i]:vo[i + 1]], F["shape_triangles"][to[i]:to[i + 1]])
             for i in range(len(vo) - 1)]
 
 
@@ -89,7 +90,7 @@ def test_provenance_of_the_fixtures():
         assert prov["wheel"] == "compas_lmgc90==0.1.11"
         assert len(prov["library_sha256"]) == 64
         assert prov["detection"].startswith("CpCundall")
-        assert prov["cundall_iterations"] == cp.LMGC90_ITERATIONS
+        assert prov["cundall_iterations"] == lmgc.LMGC90_ITERATIONS
     assert len(PACKINGS) >= 2
 
 
@@ -107,10 +108,10 @@ def test_hand_built_pairs(case, route):
     ci = CASES.index(case)
     alert = float(F["alert"])
     rows = np.flatnonzero(F["body_case"] == ci)
-    bodies = [cp._Body(shapes[F["body_shape"][k]], F["body_R"][k], F["body_x"][k]) for k in rows]
+    bodies = [lmgc._Body(shapes[F["body_shape"][k]], F["body_R"][k], F["body_x"][k]) for k in rows]
     m = (F["lmgc_case"] == ci) & (F["lmgc_route"] == route)
     assert set(F["lmgc_cd"][m]) <= {1} and set(F["lmgc_an"][m]) <= {2}   # candidate: the lower number
-    r = cp.lmgc90_pair(bodies[0], bodies[1], alert, route=ROUTES[route])
+    r = lmgc.lmgc90_pair(bodies[0], bodies[1], alert, route=ROUTES[route])
     assert len(r["points"]) == m.sum()
     assert _same_points(F["lmgc_point"][m], r["points"], TOL_POINT)
     assert np.allclose(np.sort(F["lmgc_gap"][m]), np.sort(r["gaps"]), rtol=0, atol=TOL_GAP)
@@ -119,7 +120,7 @@ def test_hand_built_pairs(case, route):
     # the same through the block path the analysis uses
     R = F["body_R"][rows]
     q = np.array([_quat(M) for M in R])
-    v = cp.lmgc90_points(shapes, F["body_shape"][rows[:1]], F["body_x"][rows[:1]], q[:1],
+    v = lmgc.lmgc90_points(shapes, F["body_shape"][rows[:1]], F["body_x"][rows[:1]], q[:1],
                          F["body_shape"][rows[1:2]], F["body_x"][rows[1:2]], q[1:2], alert, route=ROUTES[route])
     assert v["points"].tolist() == [m.sum()]
     assert _same_points(F["lmgc_point"][m], v["xyz"][0], TOL_POINT)
@@ -161,7 +162,7 @@ def test_packing_pairs(packing, alert, route):
     the search's last step on at least 97 %."""
     F = _load(packing)
     vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
-    tables = cp.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
+    tables = lshape.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
                               [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)])
     row = {s: k for k, s in enumerate(F["shape_rows"])}
     srow = np.array([row[s] for s in F["shape_index"]])
@@ -176,7 +177,7 @@ def test_packing_pairs(packing, alert, route):
     pairs = sorted(set(where) | dumped)
     i, j = np.array(pairs).T
     x, q = F["positions"], F["orientations"]
-    r = cp.lmgc90_points(tables, srow[i], x[i], q[i], srow[j], x[j], q[j], adist, route=ROUTES[route])
+    r = lmgc.lmgc90_points(tables, srow[i], x[i], q[i], srow[j], x[j], q[j], adist, route=ROUTES[route])
     equal, geometry, close = {}, [], []
     for k, p in enumerate(pairs):
         ks = where.get(p, [])
@@ -268,12 +269,12 @@ def test_classifier_labels_and_variants(route):
     lo, hi = np.minimum(i1, i2), np.maximum(i1, i2)
     x, q, s = small.positions, small.orientations, small.shape_index
     for tag, f in (("base", 1.0), ("lo", 0.5), ("hi", 2.0)):
-        r = cp.lmgc90_points(tables, s[lo], x[lo], q[lo], s[hi], x[hi], q[hi], f * alert, route=ROUTES[route])
+        r = lmgc.lmgc90_points(tables, s[lo], x[lo], q[lo], s[hi], x[hi], q[hi], f * alert, route=ROUTES[route])
         labels = cl.labels if tag == "base" else cl.variants[tag]
         assert labels.tolist() == np.array(PAIR_TYPES)[r["pair"]].tolist()
 
 
-@pytest.mark.parametrize("route", cp.LMGC90_ROUTES)
+@pytest.mark.parametrize("route", lmgc.LMGC90_ROUTES)
 def test_several_alerts_at_once_are_each_alert_alone(route):
     """lmgc90_points_alerts (one detection for the band test's three
     alert distances, given out of order) gives, value for value, what
@@ -284,7 +285,7 @@ def test_several_alerts_at_once_are_each_alert_alone(route):
     the pairs kept per alert distance are exercised)."""
     F = _load(PACKINGS[-1])
     vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
-    tables = cp.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
+    tables = lshape.lmgc90_tables([F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)],
                               [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)])
     row = {s: k for k, s in enumerate(F["shape_rows"])}
     srow = np.array([row[s] for s in F["shape_index"]])
@@ -299,11 +300,11 @@ def test_several_alerts_at_once_are_each_alert_alone(route):
     args = (tables, srow[i], x[i], q[i], srow[j], x[j], q[j])
     a = float(F["alerts"][0])
     alerts = [a, 2 * a, a / 2]
-    together = cp.lmgc90_points_alerts(*args, alerts, route=route)
+    together = lmgc.lmgc90_points_alerts(*args, alerts, route=route)
     assert len(together) == 3
     same = lambda u, v: u.dtype == v.dtype and u.shape == v.shape and u.tobytes() == v.tobytes()
     for alert, got in zip(alerts, together):
-        alone = cp.lmgc90_points(*args, alert, route=route)
+        alone = lmgc.lmgc90_points(*args, alert, route=route)
         assert sorted(got) == sorted(alone)
         for key in alone:
             if key in ("xyz", "gaps"):
@@ -316,10 +317,10 @@ def test_several_alerts_at_once_are_each_alert_alone(route):
     # each alert distance's points are arrays of its own
     assert not any(u is v for u, v in zip(together[0]["xyz"], together[1]["xyz"]))
     with pytest.raises(InputError, match="no alert distance"):
-        cp.lmgc90_points_alerts(*args, [], route=route)
+        lmgc.lmgc90_points_alerts(*args, [], route=route)
     for bad in ([a, -a], [a, float("nan")], [10 ** 400], "12", a, [[a]]):
         with pytest.raises(InputError, match="alert"):
-            cp.lmgc90_points_alerts(*args, bad, route=route)
+            lmgc.lmgc90_points_alerts(*args, bad, route=route)
 
 
 def test_options_and_bad_input():
@@ -334,16 +335,16 @@ def test_options_and_bad_input():
     args = (np.array([0]), one(np.zeros(3)), one([1.0, 0, 0, 0]), np.array([1]), one([0.0, 0, 0.05]),
             one([1.0, 0, 0, 0]))
     with pytest.raises(InputError, match="route"):
-        cp.lmgc90_points(tables, *args, 1e-5, route="lmgc")
+        lmgc.lmgc90_points(tables, *args, 1e-5, route="lmgc")
     with pytest.raises(InputError, match="out of range"):
-        cp.lmgc90_points(tables, np.array([99]), *args[1:], 1e-5)
+        lmgc.lmgc90_points(tables, np.array([99]), *args[1:], 1e-5)
     with pytest.raises(InputError, match="not finite"):
-        cp.lmgc90_points(tables, args[0], one([np.nan, 0, 0]), *args[2:], 1e-5)
+        lmgc.lmgc90_points(tables, args[0], one([np.nan, 0, 0]), *args[2:], 1e-5)
     with pytest.raises(InputError, match="coincide"):
-        cp.lmgc90_points(tables, args[0], args[1], args[2], args[3], one(np.zeros(3)), args[5], 1e-5)
+        lmgc.lmgc90_points(tables, args[0], args[1], args[2], args[3], one(np.zeros(3)), args[5], 1e-5)
     with pytest.raises(InputError, match="alert"):
-        cp.lmgc90_points(tables, *args, 0.0)
-    r = cp.lmgc90_points(tables, *args, 1e-5)               # far apart: no point, counted simple
+        lmgc.lmgc90_points(tables, *args, 0.0)
+    r = lmgc.lmgc90_points(tables, *args, 1e-5)               # far apart: no point, counted simple
     assert r["points"].tolist() == [0] and r["stage"].tolist() == [-1]
 
 
@@ -374,9 +375,9 @@ def test_cli_analyze_with_lmgc90s_count(tmp_path, capsys):
         out = tmp_path / types
         assert main(["analyze", path, "--out", str(out), "--types", types, "--no-errors", "--no-figures"]) == 0
         s = pd.read_csv(out / "summary.csv")
-        assert (s["ct_method"] == types).all() and (s["ct_threshold"] == cp.DEFAULT_ALERT).all()
-        r_min = cp.lmgc90_tables([v for v, _ in SHAPES], [t for _, t in SHAPES]).rmin
-        assert s["ct_alert_m"].iloc[0] == pytest.approx(cp.DEFAULT_ALERT * r_min, rel=1e-12)
+        assert (s["ct_method"] == types).all() and (s["ct_threshold"] == lmgc.DEFAULT_ALERT).all()
+        r_min = lshape.lmgc90_tables([v for v, _ in SHAPES], [t for _, t in SHAPES]).rmin
+        assert s["ct_alert_m"].iloc[0] == pytest.approx(lmgc.DEFAULT_ALERT * r_min, rel=1e-12)
         fr = s[[c for c in s.columns if c.startswith("ct_frac_")]].iloc[-1]
         assert fr[["ct_frac_simple", "ct_frac_double", "ct_frac_triple"]].sum() == pytest.approx(1.0)
     capsys.readouterr()
@@ -393,7 +394,7 @@ def test_agreement_command_needs_its_fixtures(tmp_path, capsys):
     test_packing_pairs above.)"""
     from postproc.cli import main
 
-    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "lmgc90-agreement", "--fixtures", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "no packing-*.npz fixture" in capsys.readouterr().err
-    assert main(["lmgc90-agreement", "--fixtures", str(tmp_path / "none"), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "lmgc90-agreement", "--fixtures", str(tmp_path / "none"), "--out", str(tmp_path / "o")]) == 2
     assert capsys.readouterr().err.count("\n") == 1 and not (tmp_path / "o").exists()

@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from postproc import schema
-from yade_scripts import attempt, checkpoint
-from yade_scripts.loading import ISO_CHECK_EVERY, LOG_HEADER, TriaxialLoading
+from yade_scripts.runs import attempt, checkpoint
+from yade_scripts.scene.loading import ISO_CHECK_EVERY, LOG_HEADER, TriaxialLoading
 
 SIGMA0, K, LF = 1e4, 3e6, np.array([0.1, 0.1, 0.2])   # Pa, Pa per unit log strain, stress-free box (m)
 DT = 1e-5
@@ -178,7 +178,7 @@ def new_attempt(dump, params, resume, said):
 
 
 def test_attempt_starts_afresh_resumes_or_finds_the_run_complete(tmp_path):
-    from yade_scripts.runstate import RunFiles
+    from yade_scripts.runs.runstate import RunFiles
 
     dump = str(tmp_path / "run.h5")
     files = RunFiles(dump)
@@ -260,7 +260,7 @@ def test_the_approach_runs_faster_until_half_the_target_stress_then_never_again(
     mean wall stress has never reached sigma0 / 2, at the compaction rate
     from then on, even if the stress falls back; the latch survives a
     checkpoint; the isotropic state is the same as without the approach."""
-    from yade_scripts.loading import APPROACH_STRESS
+    from yade_scripts.scene.loading import APPROACH_STRESS
 
     L = LF * 1.5
     slow, fast = program(), program(approach_factor=3.0)

@@ -13,8 +13,8 @@ from shapes.__main__ import main
 from shapes.descriptors import grain_descriptors
 from shapes.generate import generate_library
 from shapes.library import ShapeLibrary
-from shapes.meshimport import (Budget, ImportRefused, check_closed, distance_to_convex, hausdorff_to_convex, import_mesh, read_mesh,
-                               import_paths, merge_vertices, reduce_hull)
+from shapes.hullreduce import Budget, distance_to_convex, hausdorff_to_convex, reduce_hull
+from shapes.meshimport import ImportRefused, check_closed, import_mesh, import_paths, merge_vertices, read_mesh
 from shapes.polyhedron import check_polyhedron
 
 FP = 1e-12          # float64 round-off on O(1) quantities, with room for sums over a few hundred terms

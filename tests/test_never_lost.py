@@ -21,11 +21,12 @@ from test_pool import fake, jobs_in  # noqa: F401  (the stand-in for YADE, a fix
 from test_slurm import make, task
 
 from postproc.schema import DumpWriter
-from yade_scripts import runstate, task as task_mod
-from yade_scripts.pool import run_pool
-from yade_scripts.runstate import DumpUnreadable, clear_attempt, dump_condition, set_aside, state_of
-from yade_scripts.study import main as study_main
-from yade_scripts.task import SIGTERM_WORDS, sigterm_cause
+from yade_scripts.runs import runstate
+from yade_scripts.launch import task as task_mod
+from yade_scripts.launch.pool import run_pool
+from yade_scripts.runs.runstate import DumpUnreadable, clear_attempt, dump_condition, set_aside, state_of
+from yade_scripts.campaign.study import main as study_main
+from yade_scripts.launch.task import SIGTERM_WORDS, sigterm_cause
 
 HOLD = ("import h5py, sys, time\n"
         "f = h5py.File(sys.argv[1], 'a')\n"
@@ -200,7 +201,7 @@ def test_a_task_checks_a_complete_dump_whole(tmp_path, monkeypatch, capsys):
         jobs[0].verdict = None
         return {jobs[0].description: "stopped"}
 
-    monkeypatch.setattr("yade_scripts.pool.run_pool", no_yade)
+    monkeypatch.setattr("yade_scripts.launch.task.run_pool", no_yade)
     code = _run_task_keeping_signals(out)
     said = capsys.readouterr().out
     assert code == runstate.EXIT_TERM and ran == [False]
@@ -245,12 +246,12 @@ def test_a_sigterm_is_named_after_what_slurm_says(show, restarts, cause):
 
 
 def test_the_scene_never_removes_a_dump_it_cannot_open_or_check(tmp_path, holder):
-    """The scene's own start (yade_scripts.attempt): a locked dump is refused
+    """The scene's own start (yade_scripts.runs.attempt): a locked dump is refused
     as a busy run (exit 4 in triaxial.py), untouched; a cut one is moved
     aside and the attempt starts afresh."""
     from test_loading import new_attempt
 
-    from yade_scripts.runlock import RunBusy
+    from yade_scripts.runs.runlock import RunBusy
 
     d = tmp_path / "run.h5"
     finished_dump(d)
@@ -277,7 +278,7 @@ def test_the_scene_never_removes_a_dump_it_cannot_open_or_check(tmp_path, holder
 def test_the_task_s_final_line_after_slurm_s_sigterm(tmp_path, monkeypatch, capsys, show, final):
     """A task inside SLURM stopped by SIGTERM: its FINAL line and comment say
     what SLURM recorded, never a scancel it cannot know of."""
-    from yade_scripts.runstate import Verdict
+    from yade_scripts.runs.runstate import Verdict
 
     out = make(tmp_path, (1,))
     comments = []
@@ -288,7 +289,7 @@ def test_the_task_s_final_line_after_slurm_s_sigterm(tmp_path, monkeypatch, caps
         jobs[0].verdict = Verdict("resume", "stopped on request")
         return {jobs[0].description: "stopped"}
 
-    monkeypatch.setattr("yade_scripts.pool.run_pool", stopped_run)
+    monkeypatch.setattr("yade_scripts.launch.task.run_pool", stopped_run)
     monkeypatch.setattr(task_mod, "show_job", lambda job: show)
     monkeypatch.setattr(task_mod, "scontrol", lambda *a: comments.append(a[-1]))
     for k, v in {"SLURM_JOB_ID": "5", "SLURM_ARRAY_JOB_ID": "4", "SLURM_ARRAY_TASK_ID": "1",

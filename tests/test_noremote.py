@@ -14,11 +14,12 @@ import time
 
 import pytest
 
-from yade_scripts import checkpoint, noremote, yadeplugin
-from yade_scripts.generate import generate
-from yade_scripts.runlock import RunLock
-from yade_scripts.runstate import EXIT_TERM, judge
-from yade_scripts.slurm import write_slurm
+from yade_scripts.runs import checkpoint, noremote
+from yade_scripts import yadeplugin
+from yade_scripts.campaign.generate import generate
+from yade_scripts.runs.runlock import RunLock
+from yade_scripts.runs.runstate import EXIT_TERM, judge
+from yade_scripts.launch.slurm import write_slurm
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 YADE = shutil.which("yade")
@@ -259,7 +260,7 @@ def test_scenes_doc_says_what_a_run_opens_writes_and_trusts():
     assert m, "docs/scenes.md lacks the section"
     sec = " ".join(m.group(1).split())
     for claim in ("**Opens: nothing.**", "**Writes: its folder.**", "**Trusts: its own files.**",
-                  "yade_scripts/noremote.py", "umask", "paused from outside", "exits 75",
+                  "yade_scripts/runs/noremote.py", "umask", "paused from outside", "exits 75",
                   "closed YADE's remote prompt and XMLRPC server"):
         assert claim in sec, claim
     assert "closes both servers at its start" in sec      # the hand-started scene closes, not refuses

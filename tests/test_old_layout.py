@@ -13,10 +13,10 @@ import tarfile
 import numpy as np
 import pytest
 
-from yade_scripts.batch import read_table
-from yade_scripts.parameters import changed
-from yade_scripts.presets import resolve
-from yade_scripts.runstate import state_of
+from yade_scripts.launch.batch import read_table
+from yade_scripts.scene.parameters import changed
+from yade_scripts.campaign.presets import resolve
+from yade_scripts.runs.runstate import state_of
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TARBALL = os.path.join(HERE, "data", "old-layout", "old-layout.tar.gz")
@@ -51,7 +51,7 @@ def test_old_folders_are_recognised(old):
 @pytest.mark.skipif(YADE is None, reason="Debian yade is not installed")
 def test_make_study_on_old_folders_resumes_the_unfinished_run_and_reruns_nothing(old, capsys):
     from postproc.schema import DumpReader
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     study = old / "study"
     done = {p: os.path.getmtime(study / p) for p in ("polyhedra-ensemble/polyhedra-seed1.h5",
@@ -86,8 +86,8 @@ def test_todays_scene_writes_the_old_code_s_dump_bit_for_bit(old, tmp_path):
     repeats bit for bit only where glibc picks the same code)."""
     import h5py
 
-    from yade_scripts.generate import generate
-    from yade_scripts.host import host_info
+    from yade_scripts.campaign.generate import generate
+    from yade_scripts.runs.host import host_info
 
     folder = old / "study" / "polyhedra-ensemble"
     made = json.loads((folder / "polyhedra-seed1.info.json").read_text())["host"]
@@ -97,7 +97,7 @@ def test_todays_scene_writes_the_old_code_s_dump_bit_for_bit(old, tmp_path):
         pytest.skip(f"the fixture was made on another host ({made['cpu']}, {made['libc']})")
     new = tmp_path / "new"
     generate(str(new), "tiny", "polyhedra", seeds=[1, 2], library=str(folder / "shapes.h5"))
-    from yade_scripts.pool import Job, run_pool
+    from yade_scripts.launch.pool import Job, run_pool
 
     job = Job(str(new), 2, "polyhedra-seed1", str(new / "polyhedra-seed1.h5"), tag="polyhedra")
     assert run_pool([job], 1, echo=lambda m: None) == {"polyhedra-seed1": 0}
@@ -109,7 +109,7 @@ def test_todays_scene_writes_the_old_code_s_dump_bit_for_bit(old, tmp_path):
             x, y = np.asarray(a[n][()]), np.asarray(b[n][()])
             assert x.dtype == y.dtype and x.shape == y.shape and x.tobytes() == y.tobytes(), n
         # the same parameters, a parameter added since (at its default) counting as absent
-        from yade_scripts.parameters import changed
+        from yade_scripts.scene.parameters import changed
         assert changed(json.loads(a.attrs["parameters"]), json.loads(b.attrs["parameters"])) == []
         # (the compaction's gain, and the kernel's plugin, which steps the same kernel inside YADE)
         assert (set(json.loads(b.attrs["parameters"])) - set(json.loads(a.attrs["parameters"]))

@@ -1,4 +1,4 @@
-"""Placing polyhedra with their exact shapes (yade_scripts.sample.place_exact,
+"""Placing polyhedra with their exact shapes (yade_scripts.scene.sample.place_exact,
 shapes.overlap.OrientedGrains): no two grains overlap, the solid fraction
 asked for is the one in the box, and the cheap proof of separation never
 calls an overlapping pair apart."""
@@ -9,7 +9,7 @@ import pytest
 
 from shapes import overlap
 from shapes.generate import generate_library
-from yade_scripts import sample
+from yade_scripts.scene import sample
 
 
 @pytest.fixture(scope="module")
@@ -138,3 +138,60 @@ def test_shape_table_subset_holds_the_same_shapes(grains):
     for key in ("volume", "centroid", "normal", "footprint", "area", "status"):
         np.testing.assert_array_equal(part[key], whole[key])
     assert np.sum(whole["volume"] > 0) > 5
+
+
+# ------------------------------------------------------------ the scene's draws (yade_scripts.scene.grains)
+def test_the_scene_s_spheres_are_drawn_sizes_first_then_places():
+    """draw_grains draws from one generator in the scene's order: the sizes,
+    then the places; the same seed gives the same sample, bit for bit, and
+    no two bounding spheres overlap."""
+    from shapes.sizes import sample_diameters
+    from yade_scripts.scene.grains import draw_grains
+
+    g = draw_grains(50, 11, False, initial_fraction=0.3, aspect=2.0)
+    rng = np.random.default_rng(11)
+    d = sample_diameters(50, rng)
+    box0, centres = sample.place_in_box(d, 0.3, 2.0, rng)
+    assert g.d.tobytes() == d.tobytes() and g.centres.tobytes() == centres.tobytes()
+    assert g.box0.tobytes() == box0.tobytes() and g.d_mean == float(d.mean()) and not g.poly
+    gap = np.linalg.norm(g.centres[:, None] - g.centres[None], axis=2) - (g.d[:, None] + g.d[None]) / 2
+    assert np.all(gap[~np.eye(50, dtype=bool)] >= -1e-12)
+    assert draw_grains(50, 11, False, initial_fraction=0.3).centres.tobytes() == g.centres.tobytes()
+
+
+@pytest.mark.parametrize("placement", ["grains", "spheres"])
+def test_the_scene_s_polyhedra_are_drawn_sizes_shapes_orientations_then_places(shape_library, placement):
+    """For polyhedra: the sizes, the shapes, the orientations, then the
+    places (the grains themselves tested exactly, or their bounding spheres),
+    and the library's grains scaled: volumes d^3 V, vertices d v, the mean
+    face area of the library (d = 1)."""
+    from shapes.library import ShapeLibrary
+    from shapes.sizes import sample_diameters
+    from yade_scripts.scene.grains import draw_grains
+
+    g = draw_grains(24, 3, True, shape_library, placement, 0.12, 2.0)
+    lib = ShapeLibrary(shape_library)
+    rng = np.random.default_rng(3)
+    d = sample_diameters(24, rng)
+    shape_of = rng.integers(len(lib), size=24)
+    quats = sample.random_quaternions(24, rng)
+    if placement == "grains":
+        oriented = overlap.OrientedGrains([(lib[s][0] * d[k], lib[s][1]) for k, s in enumerate(shape_of)], quats)
+        box0, centres = sample.place_exact_in_box(d ** 3 * lib.volume[shape_of], d / 2, 0.12, 2.0, rng,
+                                                  oriented.overlaps)
+    else:
+        box0, centres = sample.place_in_box(d, 0.12, 2.0, rng)
+    for got, want in ((g.d, d), (g.shape_of, shape_of), (g.quats, quats), (g.centres, centres), (g.box0, box0)):
+        assert got.dtype == want.dtype and got.tobytes() == want.tobytes()
+    assert np.allclose(np.linalg.norm(g.quats, axis=1), 1.0, rtol=0, atol=1e-12)
+    assert np.array_equal(g.volumes(), d ** 3 * lib.volume[shape_of])
+    k = 5
+    assert np.array_equal(g.vertices()[k], lib[int(shape_of[k])][0] * d[k])
+    assert np.array_equal(g.triangles()[k], lib[int(shape_of[k])][1])
+    # the mean face area (d = 1) by hand, over every triangle of the library
+    per_shape = []
+    for s in range(len(lib)):
+        v, t, _ = lib[s]
+        per_shape.append([0.5 * np.linalg.norm(np.cross(v[b] - v[a], v[c] - v[a])) for a, b, c in t])
+    assert g.a_face == pytest.approx(np.mean(np.concatenate(per_shape)), rel=1e-12)
+    assert np.allclose(g.max_face, [max(a) for a in per_shape], rtol=1e-12, atol=0) and g.poly

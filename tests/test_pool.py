@@ -1,4 +1,4 @@
-"""The schedule of many runs (yade_scripts.pool): longest first, a freed core
+"""The schedule of many runs (yade_scripts.launch.pool): longest first, a freed core
 to a running kernel job, resumes, the idle core-time. The runs here are a
 stand-in for YADE (a shell script with the scene's exit contract: it writes
 a checkpoint and exits 75 on SIGTERM, a complete dump and 0 at the end), so
@@ -16,8 +16,9 @@ import time
 
 import pytest
 
-from yade_scripts import pool, runstate
-from yade_scripts.pool import Job, idle_core_seconds, order, run_pool, time_left, widen_choice
+from yade_scripts.launch import pool
+from yade_scripts.runs import runstate
+from yade_scripts.launch.pool import Job, idle_core_seconds, order, run_pool, time_left, widen_choice
 
 # a stand-in for yade: `fake -j N -n -x triaxial.py` in a run folder, table
 # line from YADE_BATCH; runs WORK core-seconds (from the table) split over N
@@ -266,7 +267,7 @@ def test_stopping_stops_the_work_after_runs(tmp_path, fake):
 # a study or sweep: run_pool without ``stopping``, in a process of its own
 POOL_ALONE = textwrap.dedent("""\
     import json, os, sys
-    from yade_scripts import pool
+    from yade_scripts.launch import pool
     pool.POLL_SECONDS, pool.STARTING_SECONDS = 0.05, 0.3
     folder, fake = sys.argv[1:3]
     job = pool.Job(folder, 2, "a", os.path.join(folder, "a.h5"), 30.0, tag="t")

@@ -122,7 +122,7 @@ def test_the_code_hash_follows_every_source_file(tmp_path, monkeypatch):
 
 
 def test_the_study_keeps_a_current_analysis(analysed, capsys):
-    from yade_scripts.study import analyse_dump
+    from yade_scripts.campaign.study import analyse_dump
 
     dump, out = analysed
     mtime = os.path.getmtime(os.path.join(out, "summary.csv"))
@@ -135,7 +135,7 @@ def test_the_study_keeps_a_current_analysis(analysed, capsys):
 
 
 def test_analyse_refuses_a_dump_that_is_not_complete(tmp_path, capsys):
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     assert main(["--analyse", str(tmp_path / "nothing.h5")]) == 2
     err = capsys.readouterr().err.strip().splitlines()

@@ -4,10 +4,11 @@ reach, a box smaller than the largest grain, more memory than the machine."""
 import pytest
 
 from shapes.sizes import CLASS_DIAMETERS
-from yade_scripts import parameters, resources
-from yade_scripts.parameters import ConfigError
-from yade_scripts.presets import resolve
-from yade_scripts.study import main as study_main
+from yade_scripts.scene import parameters
+from yade_scripts.launch import resources
+from yade_scripts.scene.parameters import ConfigError
+from yade_scripts.campaign.presets import resolve
+from yade_scripts.campaign.study import main as study_main
 
 
 def test_placement_limits_and_the_box():

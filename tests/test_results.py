@@ -120,7 +120,7 @@ def test_the_claims_table_quotes_the_results(tmp_path):
     points, common = lines[7], lines[8]
     assert "our contact-point count" in points and "VF +0.028 [0.014, 0.043] axial, EE +0.080 [0.069, 0.091] axial" in points
     assert "VF stable/stable, EE stable/stable" in points and points.endswith("| not reproduced |")
-    assert "LMGC90's common-plane count" in common and "VF −0.026 [−0.043, −0.010] lateral" in common
+    assert "the earlier band count on a common plane" in common and "VF −0.026 [−0.043, −0.010] lateral" in common
     assert "VF undecided/undecided, EE moves/undecided" in common and common.endswith("| reproduced |")
     assert "simple / double / triple contacts 0.70 / 0.15 / 0.15" in points
 

@@ -1,5 +1,5 @@
-"""One writer per run (yade_scripts/runlock.py) and the attempts record
-that survives a killed launcher (yade_scripts/runstate.py): real processes
+"""One writer per run (yade_scripts/runs/runlock.py) and the attempts record
+that survives a killed launcher (yade_scripts/runs/runstate.py): real processes
 and real POSIX locks, no YADE."""
 import json
 import os
@@ -11,11 +11,11 @@ import time
 
 import pytest
 
-from yade_scripts import runlock
-from yade_scripts.pool import Job, hold_runs
-from yade_scripts.runlock import RunBusy, RunLock, holder, inherited, lock_path
-from yade_scripts.runstate import (KILLED, end_attempt, judge, mark_requeued, read_attempts, reclaim_killed,
-                                   start_attempt, state_of, task_requeues)
+from yade_scripts.runs import runlock
+from yade_scripts.launch.pool import Job, hold_runs
+from yade_scripts.runs.runlock import RunBusy, RunLock, holder, inherited, lock_path
+from yade_scripts.runs.runstate import (KILLED, end_attempt, judge, mark_requeued, read_attempts, reclaim_killed,
+                                        start_attempt, state_of, task_requeues)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -23,7 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 def child(code, *args, env=None):
     """Run ``code`` in another Python process (the repository on its path);
     returns (exit code, stdout)."""
-    pre = f"import sys, os, json; sys.path.insert(0, {ROOT!r})\nfrom yade_scripts import runlock\n"
+    pre = f"import sys, os, json; sys.path.insert(0, {ROOT!r})\nfrom yade_scripts.runs import runlock\n"
     r = subprocess.run([sys.executable, "-c", pre + textwrap.dedent(code), *map(str, args)], capture_output=True,
                        text=True, env=env, timeout=60)
     return r.returncode, r.stdout.strip() + r.stderr.strip()
@@ -38,7 +38,7 @@ except runlock.RunBusy as exc:
 """
 
 #: another process that holds a lock (as a study: its record says so) until ``then`` returns
-HOLD = ("import sys, time; sys.path.insert(0, {root!r}); from yade_scripts import runlock; "
+HOLD = ("import sys, time; sys.path.insert(0, {root!r}); from yade_scripts.runs import runlock; "
         "l = runlock.RunLock(sys.argv[1], 'study').acquire(); print('HELD', flush=True); {then}")
 
 
@@ -122,7 +122,7 @@ def test_the_child_of_the_holder_inherits_it_and_nobody_else_does(tmp_path):
     # the parent said so but no longer holds it: False
     code, out = child("l = runlock.RunLock(sys.argv[1]).acquire(); env = dict(os.environ, **l.environment()); "
                       "l.release(); import subprocess; print(subprocess.run([sys.executable, '-c', "
-                      "f'import sys; sys.path.insert(0, {sys.path[0]!r}); from yade_scripts import runlock; "
+                      "f'import sys; sys.path.insert(0, {sys.path[0]!r}); from yade_scripts.runs import runlock; "
                       "print(runlock.inherited(sys.argv[1]))', sys.argv[1]], env=env, capture_output=True, "
                       "text=True).stdout.strip())", path)
     assert (code, out) == (0, "False")
@@ -131,7 +131,7 @@ def test_the_child_of_the_holder_inherits_it_and_nobody_else_does(tmp_path):
 def test_a_launcher_takes_every_run_or_none(tmp_path):
     jobs = [Job(str(tmp_path), k, f"seed{k}", str(tmp_path / f"seed{k}.h5")) for k in (1, 2, 3)]
     # a holder that stays: a process that waits on stdin
-    p = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {ROOT!r}); from yade_scripts "
+    p = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {ROOT!r}); from yade_scripts.runs "
                           "import runlock; l = runlock.RunLock(sys.argv[1], 'task').acquire(); print('HELD', "
                           "flush=True); sys.stdin.read()", lock_path(jobs[1].dump)],
                          stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
@@ -149,7 +149,7 @@ def test_a_launcher_takes_every_run_or_none(tmp_path):
 
 
 def test_a_launcher_that_cannot_make_a_lock_file_gives_back_those_it_took(tmp_path):
-    from yade_scripts.pool import ConfigError
+    from yade_scripts.launch.pool import ConfigError
 
     jobs = [Job(str(tmp_path), 1, "seed1", str(tmp_path / "seed1.h5")),
             Job(str(tmp_path), 2, "seed2", str(tmp_path / "gone" / "seed2.h5"))]     # its folder does not exist
@@ -162,7 +162,7 @@ def test_a_launcher_that_cannot_make_a_lock_file_gives_back_those_it_took(tmp_pa
 def test_state_of_a_run_another_process_holds_is_running(tmp_path):
     dump = str(tmp_path / "run.h5")
     assert state_of(dump).state == "not started"
-    p = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {ROOT!r}); from yade_scripts "
+    p = subprocess.Popen([sys.executable, "-c", f"import sys; sys.path.insert(0, {ROOT!r}); from yade_scripts.runs "
                           "import runlock; l = runlock.RunLock(sys.argv[1], 'scene').acquire(); print('HELD', "
                           "flush=True); sys.stdin.read()", lock_path(dump)],
                          stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
@@ -217,7 +217,7 @@ def test_a_second_study_on_one_folder_refuses_before_touching_it(tmp_path, capsy
     """The study holds OUT/study.lock: a second study on the folder (here:
     another process holds the lock, as the first study would) exits 4 at
     once, naming it, before it generates or sets aside anything."""
-    from yade_scripts.study import main as study_main
+    from yade_scripts.campaign.study import main as study_main
 
     out = tmp_path / "study"
     out.mkdir()
@@ -242,9 +242,9 @@ def test_collect_refuses_while_another_process_writes_the_manifest_and_report(tm
     lock) writes them exits 4 in one line naming it, and writes nothing;
     once it is free, the same collect writes both and leaves the lock
     free."""
-    from yade_scripts.generate import generate
-    from yade_scripts.study import REPORT_LOCK
-    from yade_scripts.study import main as study_main
+    from yade_scripts.campaign.generate import generate
+    from yade_scripts.campaign.study import REPORT_LOCK
+    from yade_scripts.campaign.study import main as study_main
 
     out = tmp_path / "t1"
     generate(str(out), "tiny", "spheres", seeds=[1])
@@ -274,7 +274,7 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
     ``analyse_and_report`` alone, not waiting, is refused."""
     import argparse
 
-    from yade_scripts import study
+    from yade_scripts.campaign import study
 
     out = tmp_path / "study"
     out.mkdir()
@@ -316,7 +316,7 @@ def test_the_study_s_end_waits_for_the_report_lock(tmp_path, monkeypatch, capsys
 def test_the_report_lock_is_let_go_when_the_report_fails(tmp_path, monkeypatch):
     """An analysis or report that raises leaves the lock free (a collect
     after it is not refused), and a collect that holds it is named so."""
-    from yade_scripts import study
+    from yade_scripts.campaign import study
 
     def fails(*a):
         code, said = child(TRY, os.path.join(a[0], study.REPORT_LOCK))

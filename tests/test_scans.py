@@ -5,7 +5,8 @@ import pytest
 
 from shapes import scans
 from shapes.generate import generate_library
-from shapes.meshimport import Budget, import_mesh, read_mesh
+from shapes.hullreduce import Budget
+from shapes.meshimport import import_mesh, read_mesh
 
 
 def test_ray_cast_reaches_the_surface_of_a_cube():

@@ -6,10 +6,10 @@ import re
 import numpy as np
 import pytest
 
-from yade_scripts import sample, servo, timestep
-from yade_scripts.generate import generate, render_scene
-from yade_scripts.presets import PRESETS, ConfigError, resolve
-from yade_scripts.tangential import update_shear
+from yade_scripts.scene import sample, servo, timestep
+from yade_scripts.campaign.generate import generate, render_scene
+from yade_scripts.campaign.presets import PRESETS, ConfigError, resolve
+from yade_scripts.scene.tangential import update_shear
 
 
 def test_presets_resolve_and_reject_bad_config():
@@ -72,19 +72,22 @@ def test_the_bare_scene_is_the_default_preset():
     """The template's parameter block is the one rendered from the
     parameter table's defaults, which are the default preset's S1: running
     the bare triaxial.py is the default experiment."""
-    from yade_scripts.parameters import BLOCK_END, BLOCK_START, DEFAULTS, PARAMETERS, render_block
+    from yade_scripts.scene.parameters import BLOCK_END, BLOCK_START, DEFAULTS, PARAMETERS, render_block
 
-    text = open(os.path.join(os.path.dirname(__file__), "..", "yade_scripts", "triaxial.py")).read()
+    text = open(os.path.join(os.path.dirname(__file__), "..", "yade_scripts", "scene", "triaxial.py")).read()
     block = text[text.index(BLOCK_START):text.index(BLOCK_END)]
     assert block == render_block(DEFAULTS)
     assert resolve("default", "polyhedra") == DEFAULTS
+    # read by the scene's body, or by its controller from the scene's parameters (p["name"])
     body = text[text.index(BLOCK_END):]
-    unused = [q.name for q in PARAMETERS if not re.search(rf"\b{q.name}\b", body)]
+    controller = open(os.path.join(os.path.dirname(__file__), "..", "yade_scripts", "scene", "controller.py")).read()
+    unused = [q.name for q in PARAMETERS if not re.search(rf"\b{q.name}\b", body)
+              and f'p["{q.name}"]' not in controller and f"p['{q.name}']" not in controller]
     assert not unused, f"parameters the scene never reads: {unused}"
 
 
 def test_a_batch_table_is_checked_before_any_run(tmp_path):
-    from yade_scripts.batch import read_table
+    from yade_scripts.launch.batch import read_table
 
     out = tmp_path / "run"
     generate(str(out), "tiny", "spheres", seeds=[3, 4])
@@ -194,8 +197,8 @@ def test_tangential_kernel_elastic_then_coulomb():
 
 
 def test_study_sets_aside_runs_made_with_other_parameters(tmp_path):
-    from yade_scripts.presets import ConfigError
-    from yade_scripts.study import _set_aside_if_changed, finished
+    from yade_scripts.campaign.presets import ConfigError
+    from yade_scripts.campaign.study import _set_aside_if_changed, finished
 
     folder = tmp_path / "spheres"
     generate(str(folder), "tiny", "spheres")
@@ -213,7 +216,7 @@ def test_a_parameter_missing_from_an_older_run_counts_as_its_default():
     """A run made before a parameter existed was made with what its default
     does, so it is not set aside for it; it is when the parameter is asked
     for with another value."""
-    from yade_scripts.parameters import DEFAULTS, changed
+    from yade_scripts.scene.parameters import DEFAULTS, changed
 
     wanted = {"preset": "intermediate", **resolve("intermediate", "polyhedra")}
     older = {k: v for k, v in wanted.items() if k != "compaction_gain"}
@@ -230,7 +233,7 @@ def test_presets_choose_the_contact_engine_and_the_study_its_threads():
     one thread (stock polyhedra crashed with several)."""
     import os
 
-    from yade_scripts.study import _threads
+    from yade_scripts.campaign.study import _threads
 
     p = resolve("default", "polyhedra")
     assert p["contact_engine"] == "kernel" and p["kernel_threads"] == 0 and p["verlet_skin"] == 0.1
@@ -245,10 +248,10 @@ def test_presets_choose_the_contact_engine_and_the_study_its_threads():
 
 
 def test_a_study_on_a_folder_of_other_parameters_refuses_and_renames_nothing(tmp_path, capsys, shape_library):
-    """``python -m yade_scripts.study`` on a study folder whose ensemble was
+    """``python -m yade_scripts.campaign.study`` on a study folder whose ensemble was
     made with other parameters exits 2 in one line and renames nothing; the
     other sample's folder is not touched either."""
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     out = tmp_path / "study"
     generate(str(out / "polyhedra-ensemble"), "tiny", "polyhedra", seeds=[1, 2], library=shape_library)

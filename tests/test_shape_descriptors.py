@@ -14,7 +14,8 @@ from shapes.descriptors import NAMES, compare, grain_descriptors, library_descri
 from shapes.generate import Recipe, generate_library
 from shapes.library import ShapeLibrary, write_library
 from shapes.match import generate_like, smoothed_bootstrap, stretch_to
-from shapes.meshimport import Budget, import_paths
+from shapes.hullreduce import Budget
+from shapes.meshimport import import_paths
 from shapes.polyhedron import check_polyhedron, hull
 from shapes.report import study_section
 

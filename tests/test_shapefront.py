@@ -140,9 +140,9 @@ def test_bad_inputs_are_one_line(tmp_path, capsys):
         sh.write_shape_front([gen], str(tmp_path / "f"))
     with pytest.raises(InputError, match=r"different numbers of grains \(\[1000, 5000\]\)"):
         sh.write_shape_front([gen, big], str(tmp_path / "f"))
-    assert main(["shape-front", gen, str(tmp_path / "none"), "--out", str(tmp_path / "g")]) == 2
-    assert main(["shape-front", gen, gen, "--out", str(tmp_path / "g"), "--labels", "one"]) == 2
+    assert main(["investigate", "shape-front", gen, str(tmp_path / "none"), "--out", str(tmp_path / "g")]) == 2
+    assert main(["investigate", "shape-front", gen, gen, "--out", str(tmp_path / "g"), "--labels", "one"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 2 and "no manifest.json" in err[0] and "1 labels for 2 studies" in err[1]
-    assert main(["shape-front", gen, gen, "--out", str(tmp_path / "h"), "--labels", "a", "b"]) == 0
+    assert main(["investigate", "shape-front", gen, gen, "--out", str(tmp_path / "h"), "--labels", "a", "b"]) == 0
     assert "| q/p plateau | polyhedra | 0.440 [" in (tmp_path / "h" / "shape.md").read_text()

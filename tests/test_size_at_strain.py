@@ -37,7 +37,7 @@ def sizes(tmp_path):
 def test_bins_seeds_and_tables(sizes):
     tmp_path = sizes
     out = tmp_path / "out"
-    assert main(["size-at-strain", str(tmp_path / "a"), str(tmp_path / "b"), "--bins", "0.04", "0.075", "0.1",
+    assert main(["investigate", "size-at-strain", str(tmp_path / "a"), str(tmp_path / "b"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
     per = pd.read_csv(out / "size-at-strain.csv")
     assert len(per) == 6 and set(per["N"]) == {1000, 5000}
@@ -50,14 +50,14 @@ def test_bins_seeds_and_tables(sizes):
 
 
 def test_bad_input_is_one_line(tmp_path, capsys):
-    assert main(["size-at-strain", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "size-at-strain", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "no polyhedra-seed<K>/summary.csv under it" in capsys.readouterr().err
     (tmp_path / "x" / "polyhedra-seed1").mkdir(parents=True)
     (tmp_path / "x" / "polyhedra-seed1" / "summary.csv").write_text("step,eps_1\n1,0.1\n")
-    assert main(["size-at-strain", str(tmp_path / "x"), "--out", str(tmp_path / "o")]) == 2
+    assert main(["investigate", "size-at-strain", str(tmp_path / "x"), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "not a postproc analyze summary" in err
-    assert main(["size-at-strain", str(tmp_path / "x"), "--bins", "0.1", "0.05"]) == 2
+    assert main(["investigate", "size-at-strain", str(tmp_path / "x"), "--bins", "0.1", "0.05"]) == 2
 
 
 def test_difference_is_welch_over_the_seeds(sizes):
@@ -67,7 +67,7 @@ def test_difference_is_welch_over_the_seeds(sizes):
 
     tmp_path = sizes
     out = tmp_path / "out"
-    assert main(["size-at-strain", str(tmp_path / "a"), str(tmp_path / "c"), "--bins", "0.04", "0.075", "0.1",
+    assert main(["investigate", "size-at-strain", str(tmp_path / "a"), str(tmp_path / "c"), "--bins", "0.04", "0.075", "0.1",
                      "--out", str(out)]) == 0
     x, y = np.array([0.10, 0.14]), np.array([0.35, 0.37])       # each seed's mean over the bin
     v1, v2 = x.var(ddof=1) / 2, y.var(ddof=1) / 2

@@ -180,9 +180,9 @@ def test_cli_size_front(tmp_path, capsys):
     from postproc.cli import main
 
     studies = [_study(tmp_path, 200, 0.50), _study(tmp_path, 1000, 0.45)]
-    assert main(["size-front", *studies, "--out", str(tmp_path / "f")]) == 0
+    assert main(["investigate", "size-front", *studies, "--out", str(tmp_path / "f")]) == 0
     assert (tmp_path / "f" / "size.md").exists()
     capsys.readouterr()
-    assert main(["size-front", str(tmp_path / "nothing"), str(tmp_path / "n200"), "--out", str(tmp_path / "g")]) == 2
+    assert main(["investigate", "size-front", str(tmp_path / "nothing"), str(tmp_path / "n200"), "--out", str(tmp_path / "g")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "no manifest.json" in err[0]

@@ -15,17 +15,17 @@ import time
 import h5py
 import pytest
 
-from yade_scripts.generate import main as generate_main
-from yade_scripts.presets import resolve
-from yade_scripts.slurm import (COMPACTION_STEPS, CONTACTS_PER_GRAIN, PLACEMENT_FACTOR, SHEAR_STEPS,
-                                US_PER_CONTACT_STEP, estimate, shear_step_factor)
+from yade_scripts.campaign.generate import main as generate_main
+from yade_scripts.campaign.presets import resolve
+from yade_scripts.launch.slurm import (COMPACTION_STEPS, CONTACTS_PER_GRAIN, PLACEMENT_FACTOR, SHEAR_STEPS,
+                                       US_PER_CONTACT_STEP, estimate, shear_step_factor)
 
 #: the reference run's 1/dt over the expected 1/dt of 1000 grains drawn from
 #: the library (its dt 3.953 us, the library's limit 3.276 us = 1/(1.11 x the
 #: expectation)), and the expected 1/dt of N grains over that of 1000
 REF_RATE = 3.276 * 1.1100 / 3.953
 DRAWS = {200: 0.8725, 1000: 1.0, 2000: 1.0479, 5000: 1.0967, 10_000: 1.1089, 36_933: 1.1100}
-from yade_scripts.study import main as study_main
+from yade_scripts.campaign.study import main as study_main
 
 YADE = shutil.which("yade")
 
@@ -60,9 +60,9 @@ def test_script_is_valid_bash_with_one_task_per_line(tmp_path):
     assert f"#SBATCH --output={out}/slurm-%A_%a.out" in script and "#SBATCH --open-mode=append" in script
     assert "#SBATCH --signal=B:USR1@300" in script and "#SBATCH --requeue" in script
     assert f'HERE="${{RUN_DIR:-{out}}}"' in script
-    assert 'exec "$PY" -m yade_scripts.task "$HERE" --requeues 10' in script
+    assert 'exec "$PY" -m yade_scripts.launch.task "$HERE" --requeues 10' in script
     # task k is the k-th run line of the table
-    from yade_scripts.batch import table_lines
+    from yade_scripts.launch.batch import table_lines
     assert [(t.task, t.number, t.description) for t in table_lines(str(out))] == [
         (1, 2, "spheres-seed1"), (2, 3, "spheres-seed2"), (3, 4, "spheres-seed3")]
     # out-of-range and missing task ids are refused without running anything
@@ -108,14 +108,14 @@ def test_the_script_runs_from_any_folder_and_names_a_missing_table(tmp_path):
     r = task(out, 1, elsewhere, SLURM_SUBMIT_DIR=str(elsewhere))
     assert r.returncode == 2 and r.stderr.strip() == (
         f"slurm.sh: {out}/table.txt is missing: not the generated run folder (moved? write slurm.sh again "
-        f"there: python -m yade_scripts.slurm FOLDER)")
+        f"there: python -m yade_scripts.launch.slurm FOLDER)")
     assert list(elsewhere.iterdir()) == [] and not (out / "spheres-seed1").exists()
     # RUN_DIR names the folder instead (a moved one)
     moved = tmp_path / "moved"
     shutil.copytree(out, moved, symlinks=True)
     r = task(out, 1, elsewhere, RUN_DIR=str(moved))
     assert r.returncode == 2 and f"{moved}/table.txt is missing" in r.stderr
-    from yade_scripts.slurm import main as slurm_main
+    from yade_scripts.launch.slurm import main as slurm_main
     (out / "table.txt").write_text("description seed out\nspheres-seed1 1 'spheres-seed1.h5'\n")
     assert slurm_main([str(out), "--cpus", "1"]) == 0
     assert "#SBATCH --array=1-1" in (out / "slurm.sh").read_text()
@@ -168,7 +168,7 @@ def test_cost_model_scaling():
     with pytest.raises(ValueError, match="kernel_path"):
         estimate(p, "python")
     # the cost per contact-step from 1000 to 5000 grains, linear in log N; the compaction above 1000 only
-    from yade_scripts.slurm import _grains_factor
+    from yade_scripts.launch.slurm import _grains_factor
     assert [_grains_factor(n, 5000, 1.08) for n in (200, 1000, 5000, 36933)] == [1.0, 1.0, 1.08, 1.08]
     assert _grains_factor(math.sqrt(5) * 1000, 5000, 1.08) == pytest.approx(1.04, rel=1e-12)
     # the shear's time step: the table's points, linear in log N between, flat beyond
@@ -278,7 +278,7 @@ def test_sigterm_stops_the_task_resumably_and_every_attempt_is_kept(tmp_path, ca
     p.send_signal(signal.SIGTERM)
     text = p.communicate(timeout=300)[0]
     assert p.returncode == 75, text
-    from yade_scripts.runstate import checkpoint_position
+    from yade_scripts.runs.runstate import checkpoint_position
     step, stage = checkpoint_position(str(d / "spheres-seed1.h5"))
     assert text.count("task: FINAL") == 1
     assert f"task: FINAL stopped on request (SIGTERM) (resumable at step {step} ({stage})); to resume: run the " \

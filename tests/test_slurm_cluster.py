@@ -107,9 +107,9 @@ def datasets(path):
 
 
 def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys, monkeypatch):
-    from yade_scripts.batch import run_batch
-    from yade_scripts.generate import main as generate
-    from yade_scripts.study import main as study
+    from yade_scripts.launch.batch import run_batch
+    from yade_scripts.campaign.generate import main as generate
+    from yade_scripts.campaign.study import main as study
 
     t_start = time.time()
     env = cluster
@@ -141,7 +141,7 @@ def test_arrays_on_a_real_cluster(cluster, tmp_path, shape_library, capsys, monk
     # SIGUSR1 comes up to 30 s off the gap asked for: a fifth of the line, at least 20 s
     gap, lead = max(20, int(line_seconds / 5)), 30
     limit = gap + lead
-    from yade_scripts.slurm import main as write_slurm
+    from yade_scripts.launch.slurm import main as write_slurm
     # each attempt nets 15-30 s of the line (SIGUSR1 about 25 s after its start, YADE's start and the
     # checkpoint's load first): 3 requeues a task on a quiet host, 11-12 beside a study on both cores
     assert write_slurm([str(a), "--cpus", "1", "--time", f"{limit // 60}:{limit % 60:02d}", "--signal", str(lead),
@@ -240,9 +240,9 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     runs to the end by itself; plain ``scancel`` of line 1 resubmitted
     stops it too, with one FINAL line (SLURM takes no comment for a
     cancelled job); submitted once more, it resumes to the end."""
-    from yade_scripts.generate import main as generate
-    from yade_scripts.runstate import checkpoint_position
-    from yade_scripts.study import main as study
+    from yade_scripts.campaign.generate import main as generate
+    from yade_scripts.runs.runstate import checkpoint_position
+    from yade_scripts.campaign.study import main as study
 
     env = cluster
     monkeypatch.setenv("SLURM_CONF", env["SLURM_CONF"])       # --collect below asks squeue, in this process
@@ -253,7 +253,7 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     d1, d2 = b / "spheres-seed1", b / "spheres-seed2"
     # a first job on a node just up: one submitted within a second of slurmctld's start once ended at once
     wait_for(env, sbatch(env, "--wrap", "true", cwd=tmp_path), 120)
-    first = run(env, sys_python(), "-m", "yade_scripts.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
+    first = run(env, sys_python(), "-m", "yade_scripts.launch.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
     job1 = json.loads((b / "slurm-jobs.json").read_text())[-1]["job"]
     scene_started(d1, "spheres-seed1")
     twice = sbatch(env, "--array=1", str(b / "slurm.sh"), cwd=tmp_path)        # the same line again
@@ -297,7 +297,7 @@ def test_one_writer_stops_and_collect_on_a_real_cluster(cluster, tmp_path, capsy
     out = (b / f"slurm-{held}_2.out").read_text()
     assert out.count("task: FINAL") == 2      # one per job of the task
     # line 1 again: plain scancel stops it too (one FINAL line, no comment), then it resumes to the end
-    again = run(env, sys_python(), "-m", "yade_scripts.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
+    again = run(env, sys_python(), "-m", "yade_scripts.launch.slurm", str(b), "--submit", "--array", "1", cwd=tmp_path)
     job3 = json.loads((b / "slurm-jobs.json").read_text())[-1]["job"]
     t0 = time.time()
     while "resumed from spheres-seed1.ckpt" not in (d1 / "triaxial.log").read_text():

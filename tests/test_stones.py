@@ -9,7 +9,8 @@ import pytest
 
 from shapes import stones
 from shapes.library import ShapeLibrary
-from shapes.meshimport import Budget, import_mesh, read_mesh
+from shapes.hullreduce import Budget
+from shapes.meshimport import import_mesh, read_mesh
 
 ROOT = os.path.join(os.path.dirname(__file__), os.pardir)
 LIB = os.path.join(ROOT, stones.DEFAULT_OUT)

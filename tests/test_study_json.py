@@ -57,7 +57,7 @@ def test_a_manifest_of_the_wrong_shape_is_named(tmp_path, capsys, manifest, mess
         read_manifest(str(path))
     for argv in (["report", str(tmp_path), "--no-figures"],
                  ["results", str(tmp_path), "--out", str(tmp_path / "r.json")],
-                 ["size-front", str(tmp_path), "--out", str(tmp_path / "front")]):
+                 ["investigate", "size-front", str(tmp_path), "--out", str(tmp_path / "front")]):
         assert main(argv) == 2, argv
         err = capsys.readouterr().err.strip().splitlines()
         assert len(err) == 1 and "not a study manifest" in err[0] and "Traceback" not in err[0], (argv, err)

@@ -1,5 +1,5 @@
 """The whole study pipeline on the tiny preset, two seeds per sample in one
-schedule (yade_scripts.pool): runs, analyses, report, figures, the claims
+schedule (yade_scripts.launch.pool): runs, analyses, report, figures, the claims
 table and the schedule's record."""
 import json
 import math
@@ -28,7 +28,7 @@ FIGURES = ("fig_qp.png", "fig_anisotropies.png", "fig_sff.png", "fig_polar.png",
 def study(tmp_path_factory, shape_library):
     """The study folder, main's exit code and every figure saved in this
     process meanwhile (saved_figures.record: the report's own figures)."""
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     out = tmp_path_factory.mktemp("study")
     with pytest.MonkeyPatch.context() as mp:
@@ -259,7 +259,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
         f"after {r}" for r in runs)
     assert all(a["exit"] == 0 for a in sched["attempts"] if a.get("kind") == "after")
     assert "4 analyses of finished runs on free cores" in md
-    from yade_scripts.pool import idle_core_seconds
+    from yade_scripts.launch.pool import idle_core_seconds
     assert sched["summary"]["idle_core_s"] == pytest.approx(idle_core_seconds(sched["attempts"], 2))
     assert sched["summary"]["busy_core_s"] > 0
     assert "Schedule (`schedule.json`)" in md and "idle" in md
@@ -270,7 +270,7 @@ def test_report_figures_and_claims_are_produced(study, capsys):
 
 def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, monkeypatch):
     from postproc.study.report import build_report
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     out, _, _ = study
     mtime = os.path.getmtime(out / "polyhedra-ensemble" / "polyhedra-seed1.h5")
@@ -309,7 +309,7 @@ def test_rerun_skips_finished_runs_and_a_failed_run_is_reported(study, capsys, m
 
 
 def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_library, tmp_path, capsys):
-    """``python -m yade_scripts.archive`` keeps every analysed run's numbers
+    """``python -m yade_scripts.campaign.archive`` keeps every analysed run's numbers
     without its dump or figures; a new study folder (a new host) with
     ``--archive`` refuses an archive holding a record of another analysis
     version (replacing nothing), runs none of the usable archived seeds and
@@ -317,9 +317,9 @@ def test_an_archive_carries_the_analysed_seeds_to_a_new_host(study, shape_librar
     study made from the dumps; ``--collect --archive`` reads it the same way."""
     import hashlib
 
-    from yade_scripts.archive import RUN_RECORD, archived
-    from yade_scripts.archive import main as archive_main
-    from yade_scripts.study import ARCHIVED, collect, main
+    from yade_scripts.campaign.archive_store import RUN_RECORD, archived
+    from yade_scripts.campaign.archive import main as archive_main
+    from yade_scripts.campaign.study import ARCHIVED, collect, main
 
     out, _, _ = study
     arch = tmp_path / "arch"
@@ -420,7 +420,7 @@ def test_study_runs_s1_on_an_imported_library(tmp_path, monkeypatch):
     from postproc.schema import DumpReader
     from shapes.__main__ import main as shapes_main
     from shapes.library import ShapeLibrary
-    from yade_scripts.study import main
+    from yade_scripts.campaign.study import main
 
     rng = np.random.default_rng(7)
     scans = tmp_path / "scans"

@@ -1,4 +1,4 @@
-"""yade_scripts.timestep_draws: the exact order statistics of the most
+"""yade_scripts.campaign.timestep_draws: the exact order statistics of the most
 limiting grain against brute-force enumeration of every draw, and the
 command on a small library."""
 import itertools
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from shapes import sizes
-from yade_scripts import timestep_draws as td
+from yade_scripts.campaign import timestep_draws as td
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 5])
@@ -29,14 +29,14 @@ def test_expected_rate_grows_to_the_library_limit():
 
 
 def test_the_command_help_and_a_small_library(tmp_path, capsys):
-    """``python -m yade_scripts.timestep_draws`` on an 8-grain library: the
+    """``python -m yade_scripts.campaign.timestep_draws`` on an 8-grain library: the
     table's rows, 1.0000 at 1000 grains, and one line per N and seed."""
     from shapes.generate import Recipe, generate_library
     from shapes.library import write_library
 
     with pytest.raises(SystemExit) as exc:
         td.main(["--help"])
-    assert exc.value.code == 0 and "usage: python -m yade_scripts.timestep_draws" in capsys.readouterr().out
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.campaign.timestep_draws" in capsys.readouterr().out
     path = str(tmp_path / "lib.h5")
     shapes, _ = generate_library(8, seed=5)
     write_library(path, shapes, 5, Recipe().as_dict(), {})

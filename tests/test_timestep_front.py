@@ -56,19 +56,19 @@ def test_the_command_on_a_folder_of_the_plan(tmp_path, monkeypatch, capsys):
     plan = {"plan": "timestep", "polyhedra": [[f"dt{s:g}-s{k}", {"safety": s, "seed": k}]
                                               for k in SEEDS for s in SAFETIES]}
     (tmp_path / "front-plan.json").write_text(json.dumps(plan))
-    assert main(["timestep-front", str(tmp_path)]) == 0
+    assert main(["investigate", "timestep-front", str(tmp_path)]) == 0
     assert len(pd.read_csv(tmp_path / "timestep-runs.csv")) == 12
     assert set(pd.read_csv(tmp_path / "timestep.csv")["safety"]) == set(SAFETIES)
     assert (tmp_path / "timestep.md").read_text() in capsys.readouterr().out
-    assert main(["timestep-front", str(tmp_path / "none")]) == 2
+    assert main(["investigate", "timestep-front", str(tmp_path / "none")]) == 2
     assert "not a readable plan" in capsys.readouterr().err
 
 
 def test_the_driver_answers_help(capsys):
-    """``python -m yade_scripts.timestep_front`` (runs the plan, then this
+    """``python -m yade_scripts.campaign.timestep_sweep`` (runs the plan, then this
     table) answers --help without running anything."""
-    from yade_scripts import timestep_front
+    from yade_scripts.campaign import timestep_sweep as timestep_front
 
     with pytest.raises(SystemExit) as exc:
         timestep_front.main(["--help"])
-    assert exc.value.code == 0 and "usage: python -m yade_scripts.timestep_front" in capsys.readouterr().out
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.campaign.timestep_sweep" in capsys.readouterr().out

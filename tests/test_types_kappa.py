@@ -44,7 +44,7 @@ def kernel_dump(tmp_path_factory):
 def kappa_table(kernel_dump, tmp_path_factory):
     """``postproc contact-types-kappa`` on the dump (both shear snapshots)."""
     out = tmp_path_factory.mktemp("ctk")
-    assert main(["contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "contact-types-kappa", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     return out
 
 
@@ -64,16 +64,16 @@ def test_commonplane_reference_command(kernel_dump, kappa_table, tmp_path, capsy
     """The band from the extreme vertex is the common-plane count the
     analysis uses: its proportions are contact-types-kappa's, exactly."""
     out = tmp_path / "cpref"
-    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     tab = pd.read_csv(out / "commonplane_reference.csv").set_index("reference")
     assert sorted(tab.index) == ["normal", "vertex"] and (tab["snapshots"] == 2).all()
     cp = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion").loc["commonplane"]
     for col in [g + s for g in GROUPS for s in ("", "_lo", "_hi")] + ["move", "contacts"]:
         assert tab.loc["vertex", col] == pytest.approx(cp[col], abs=1e-12), col
     assert "| normal | 1 |" in capsys.readouterr().out
-    assert main(["commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--from-eps1", "0.5"]) == 2
     assert "no shear snapshot with eps_1 >= 0.5" in capsys.readouterr().err
-    assert main(["commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
+    assert main(["investigate", "commonplane-reference", str(out), kernel_dump, "--every", "0"]) == 2
 
 
 def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
@@ -81,10 +81,10 @@ def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
     whose triple shares are the two criteria's FF share (the same labels
     as contact-types-kappa's triple), the random contacts' row, the figure;
     the driver that runs the plan first answers --help."""
-    from yade_scripts import facepair_tilt
+    from yade_scripts.campaign import facepair_sweep as facepair_tilt
 
     out = tmp_path / "fp"
-    assert main(["facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
+    assert main(["investigate", "facepair-tilt", str(out), kernel_dump, "--from-eps1", "0"]) == 0
     rows = pd.read_csv(out / "facepair_tilt.csv.gz")
     tab = pd.read_csv(out / "facepair_tilt.csv")
     ctk = pd.read_csv(kappa_table / "contact_types_kappa.csv").set_index("criterion")
@@ -96,4 +96,4 @@ def test_facepair_tilt_command(kernel_dump, kappa_table, tmp_path, capsys):
     assert (out / "facepair-tilt.png").stat().st_size > 0
     with pytest.raises(SystemExit) as exc:
         facepair_tilt.main(["--help"])
-    assert exc.value.code == 0 and "usage: python -m yade_scripts.facepair_tilt" in capsys.readouterr().out
+    assert exc.value.code == 0 and "usage: python -m yade_scripts.campaign.facepair_sweep" in capsys.readouterr().out

@@ -16,10 +16,10 @@ import pytest
 from postproc.contactset import resolve
 from postproc.schema import DumpReader
 from postproc.stress import contact_stress, wall_stress
-from yade_scripts.generate import generate
-from yade_scripts.host import SIMD_FLAGS
-from yade_scripts.pool import yade_env
-from yade_scripts.servo import wall_stresses
+from yade_scripts.campaign.generate import generate
+from yade_scripts.runs.host import SIMD_FLAGS
+from yade_scripts.launch.pool import yade_env
+from yade_scripts.scene.servo import wall_stresses
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 YADE = shutil.which("yade")
@@ -406,7 +406,7 @@ def test_the_thread_count_and_its_change_mid_run_leave_the_run_bit_for_bit(tiny_
     out = p.communicate(timeout=300)[0]
     # stopped with its checkpoint, and out cleanly: a process that saved or loaded a scene
     # with the plugin stepping could abort among YADE's static destructors at exit (double
-    # free, -6); the scene now leaves by yade_scripts.attempt.leave
+    # free, -6); the scene now leaves by yade_scripts.runs.attempt.leave
     assert "run again in this folder to resume (exit 75)" in out and p.returncode == 75, out[-3000:]
     again = subprocess.run([YADE, "-j2", "-n", "-x", "triaxial.py"], cwd=d, env=env, capture_output=True,
                            text=True, timeout=600, stdin=subprocess.DEVNULL)

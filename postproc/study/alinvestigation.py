@@ -1,6 +1,6 @@
 """Why is the branch-length anisotropy a_l about 0 for our polyhedra?
 
-    postproc al-investigation DUMP [DUMP ...] [--axis z] [--pairs 20000]
+    postproc investigate al-investigation DUMP [DUMP ...] [--axis z] [--pairs 20000]
 
 (:func:`investigate`; one dump at a time: :func:`analyse`.)
 

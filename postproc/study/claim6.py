@@ -1,7 +1,7 @@
 """Claim 6 (face-face contacts strong and axial, vertex-face and edge-edge
 weak and lateral) on one study, decided with each contact-type criterion.
 
-    postproc claim6-criteria STUDY [--types points commonplane] [--tolerance T ...]
+    postproc investigate claim6-criteria STUDY [--types points commonplane] [--tolerance T ...]
 
 (:func:`write_claim6`.)
 
@@ -41,8 +41,7 @@ import numpy as np
 import pandas as pd
 from scipy.stats import linregress, t
 
-from ..commonplane import DEFAULT_NEIGHBOR
-from ..contactpoints import DEFAULT_ALPHA
+from ..classify import CRITERIA
 from ..errors import InputError
 from ..pipeline import AnalysisOptions, analyze_path
 from ..plots import plot_leanings_by_tolerance
@@ -50,15 +49,13 @@ from ..statistics import plateau_estimate, seed_scatter, seeds_needed, steady_in
 from .claims import evaluate
 from .report import run_summaries, usable_runs, discover
 
-NOMINAL = {"points": DEFAULT_ALPHA, "commonplane": DEFAULT_NEIGHBOR}   # each criterion's own tolerance
+#: the criteria claim 6 is decided with by default
+DEFAULT_CRITERIA = ("points", "commonplane")
 STABLE = 0.03   # the band the contact-type proportions must stay in at half and double the tolerance
 LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
-CRITERION = {"points": "our contact-point count", "commonplane": "the earlier band count on a common plane",
-             "lmgc90": "LMGC90's own count", "lmgc90-planplan": "LMGC90's own count, its planplan stage",
-             "lmgc90-2009": "LMGC90's own count, planplan with its 2009 intersection"}
 
 
-def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
+def write_claim6(study, criteria=DEFAULT_CRITERIA, tolerances=(None,)):
     """Claim 6 decided with each criterion on one study (see the module
     docstring): analyses into STUDY/claim6/ (numbers only: no figures), the tables in
     STUDY/claim6/claim6.md and, with tolerances, the figures
@@ -127,7 +124,7 @@ def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
             series = _steady_leanings(frames)
             means = {c: np.array([np.nanmean(x) for x in series[c]]) for c in LEANINGS}
             scatter += _scatter_lines(name, s1, series, means)
-            rows.append((NOMINAL.get(types) if tol is None else tol, means))
+            rows.append((_nominal(types) if tol is None else tol, means))
         if len(rows) > 1:
             band += _band_lines(types, rows)
             if all(x is not None for x, _ in rows):
@@ -135,11 +132,18 @@ def write_claim6(study, criteria=("points", "commonplane"), tolerances=(None,)):
                 plot_leanings_by_tolerance(
                     [rows[k][0] for k in order],
                     {c[-2:]: np.array([rows[k][1][c] for k in order]) for c in LEANINGS},
-                    os.path.join(out, f"{types}-tolerance.png"), criterion=CRITERION.get(types, types),
-                    unit="(tau x the radius)" if types == "commonplane" else "(alpha x V/area)")
+                    os.path.join(out, f"{types}-tolerance.png"), criterion=CRITERIA[types].label,
+                    unit=CRITERIA[types].unit)
     with open(os.path.join(out, "claim6.md"), "w") as fh:
         fh.write("\n".join(lines + band + scatter) + "\n")
     return "\n".join(band + scatter)
+
+
+def _nominal(types):
+    """The criterion's own --tolerance (the registry's default), or None when
+    its parameter is set by another option (footprint, angular)."""
+    c = CRITERIA[types]
+    return c.default if c.option == "--tolerance" else None
 
 
 def _tolerances(types, asked):
@@ -148,7 +152,7 @@ def _tolerances(types, asked):
     the asked values other than the nominal one."""
     if asked == [None]:
         return [None]
-    nominal = NOMINAL.get(types)
+    nominal = _nominal(types)
     return [None] + [x for x in asked if x is not None and not (nominal is not None and np.isclose(x, nominal))]
 
 

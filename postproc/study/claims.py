@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..classify import CRITERIA
 from ..statistics import (Estimate, difference, leaning_words, plateau_estimate, seed_scatter, seeds_needed,
                           seeds_to_decide, steady_indices)
 
@@ -43,16 +44,27 @@ LEANINGS = ("VF", "EE")
 NO_LEANING = 0.03
 BAND = {"lo": 0.5, "hi": 2.0}   # the criterion's parameter halved, doubled (summary columns *_lo, *_hi)
 
-CLAIMS = (
-    "q/p of polyhedra is higher than that of spheres throughout shear.",
-    "Branch-vector fabric anisotropy a is lower for polyhedra than for spheres.",
-    "a_l is negligible for spheres, not for polyhedra.",
-    "a_n and, much more, a_t are higher for polyhedra.",
-    "q/p ~ (2/5)(a + a_l + a_n + a_t) for both, all along the shear.",
-    "Face-face contacts sit in strong chains along the major principal stress; "
-    "vertex-face and edge-edge contacts carry weak forces and lean toward the minor "
-    "principal direction.",
+#: the six claims: (the claim as the paper states it, its short form in the
+#: README's claims table, the comparison-table quantities that table quotes;
+#: claim 6 quotes its leanings instead); results.py builds the table from it
+TABLE = (
+    ("q/p of polyhedra is higher than that of spheres throughout shear.",
+     "q/p of polyhedra above that of spheres throughout shear", ("q/p plateau",)),
+    ("Branch-vector fabric anisotropy a is lower for polyhedra than for spheres.",
+     "branch-vector anisotropy a lower for polyhedra", ("a",)),
+    ("a_l is negligible for spheres, not for polyhedra.",
+     "a_l negligible for spheres, not for polyhedra", ("a_l",)),
+    ("a_n and, much more, a_t are higher for polyhedra.",
+     "a_n and, much more, a_t higher for polyhedra", ("a_n + a_t", "a_t")),
+    ("q/p ~ (2/5)(a + a_l + a_n + a_t) for both, all along the shear.",
+     "q/p ≈ (2/5)(a + a_l + a_n + a_t) for both, all along the shear", ("(2/5)(a+a_l+a_n+a_t)", "q/p plateau")),
+    ("Face-face contacts sit in strong chains along the major principal stress; "
+     "vertex-face and edge-edge contacts carry weak forces and lean toward the minor "
+     "principal direction.",
+     "face–face contacts strong and axial; vertex–face and edge–edge weak and lateral", ()),
 )
+#: the claims as the paper states them, claim k at k - 1
+CLAIMS = tuple(sentence for sentence, _, _ in TABLE)
 
 
 def plateau(frames, column):
@@ -271,17 +283,10 @@ def _criterion_text(df, tag=""):
     """How the contacts of a summary were typed, with the parameter used."""
     method = df["ct_method"].iloc[0] if "ct_method" in df else None
     factor = BAND.get(tag, 1.0)
-    if method == "footprint":
-        return f"footprint criterion, threshold {factor * df['ct_threshold'].iloc[0]:g} d"
-    if method == "points":
-        return f"contact-point count, tolerance {factor * df['ct_threshold'].iloc[0]:g} V/area"
-    if method == "commonplane":
-        return f"the earlier band count on a common plane, band {factor * df['ct_threshold'].iloc[0]:g} x the radius"
-    if method in ("lmgc90", "lmgc90-planplan", "lmgc90-2009"):
-        stage = {"lmgc90": "today's point stage", "lmgc90-planplan": "its older planplan point stage",
-                 "lmgc90-2009": "planplan with its older length-tolerant intersection"}[method]
-        return (f"LMGC90's own count ({stage}), alert distance {factor * df['ct_threshold'].iloc[0]:g} x the "
-                f"smallest grain radius")
+    c = CRITERIA.get(method)
+    if c is not None:
+        value = df["ct_theta_deg" if c.option == "--theta" else "ct_threshold"].iloc[0]
+        return c.reading.format(factor * value)
     if "ct_theta_deg" in df:
         return f"angular criterion, tolerance {factor * df['ct_theta_deg'].iloc[0]:g} deg"
     return None

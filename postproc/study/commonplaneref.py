@@ -3,7 +3,7 @@ band tau ref measured from the centre to the extreme vertex (``vertex``, the
 older routine, our default) or along the common plane's normal (``normal``,
 LMGC90's current routine), each at tau, tau/2 and 2 tau.
 
-    postproc commonplane-reference OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--every 2] [--tau 0.1]
+    postproc investigate commonplane-reference OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--every 2] [--tau 0.1]
 
 (:func:`write_reference`.)
 

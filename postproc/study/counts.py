@@ -21,7 +21,7 @@ doubled (the ``*_lo``/``*_hi`` columns of
 :func:`postproc.study.claims.band_test` decides the band test.
 
 Outputs go next to the primary analysis: ``<analysis>-<count>/summary.csv``.
-A study can be given other counts (``python -m yade_scripts.study --counts
+A study can be given other counts (``python -m yade_scripts.campaign.study --counts
 lmgc90 lmgc90-2009``, ``make study COUNTS="lmgc90 lmgc90-2009"``,
 :func:`check_counts`); on a finished study only the missing analyses are
 made, and its report then reads claim 6 by each.
@@ -34,7 +34,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import InputError
-from ..classify import DEFAULT_METHOD, METHODS
+from ..classify import CRITERIA, DEFAULT_METHOD
 from ..pipeline import BAD_INPUT, AnalysisOptions, analyze_path
 from ..provenance import is_current
 from ..schema import DumpReader
@@ -51,7 +51,7 @@ def check_counts(counts):
     ----------
     counts : sequence of str
         Contact-type criteria of ``postproc analyze --types``
-        (:data:`postproc.classify.METHODS`) other than the primary one
+        (:data:`postproc.classify.CRITERIA`) other than the primary one
         ("points"), e.g. ``("lmgc90", "lmgc90-2009")``; an empty sequence
         means the primary count only.
 
@@ -78,8 +78,8 @@ def check_counts(counts):
     for c in counts:
         if c == DEFAULT_METHOD:
             raise InputError(f"--counts: {c} is the primary count, always analysed; give the others (lmgc90, ...)")
-        if c not in METHODS:
-            others = ", ".join(m for m in METHODS if m != DEFAULT_METHOD)
+        if c not in CRITERIA:
+            others = ", ".join(m for m in CRITERIA if m != DEFAULT_METHOD)
             raise InputError(f"--counts: unknown count {c!r}; one of {others}")
         if c not in out:
             out.append(c)

@@ -1,11 +1,11 @@
 """Do face-face contacts vanish as the grains stiffen? The face-pair tilt
 against the overlap thickness, at kappa = 300, 1000, 3000 and 10 000.
 
-    python -m yade_scripts.facepair_tilt [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
+    python -m yade_scripts.campaign.facepair_sweep [--out runs/facepair] [--jobs 2] [--from-eps1 0.1]
         [--figure docs/figures/facepair-tilt.png]
-    postproc facepair-tilt OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--figure PNG]
+    postproc investigate facepair-tilt OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1] [--figure PNG]
 
-The first runs the ``facepair`` plan of :mod:`yade_scripts.front` (S1 on
+The first runs the ``facepair`` plan of :mod:`yade_scripts.campaign.sweeps` (S1 on
 the default preset, 200 grains, I = 5e-3, sheared to eps_1 = 0.15, seeds
 1-3; a seed starts from the same grains and positions at every kappa;
 finished runs are not run again), then analyses its dumps as the second

@@ -487,7 +487,7 @@ def analysis_front(sizes=(100, 300, 1000, 3000, 10000), bins=(6, 9, 18, 36), rep
     return pd.DataFrame(rows)
 
 
-#: the columns of the analysis front that ``postproc analysis-front`` prints
+#: the columns of the analysis front that ``postproc investigate analysis-front`` prints
 ANALYSIS_FRONT_COLUMNS = ("estimator", "n", "seconds", "rms_a", "rms_a_l", "rms_a_n", "rms_a_t", "rms_max",
                           "bias_a_n", "bias_a_t")
 
@@ -497,7 +497,7 @@ def write_analysis_front(out="runs/front-analysis", reps=40):
     and truth (a, a_l, a_n, a_t) = (0.3, 0.1, 0.5, 0.2)) written to a
     folder: ``analysis_front.csv`` (every column) and ``analysis_front.png``
     (:func:`postproc.plots.plot_analysis_front`). ``make front`` runs it as
-    ``postproc analysis-front``.
+    ``postproc investigate analysis-front``.
 
     Parameters
     ----------

@@ -1,7 +1,7 @@
 """Does the scatter of claim 6's leanings fall as N^(-1/2)? Block averaging
 inside the packings of one or more studies.
 
-    postproc leaning-blocks STUDY [STUDY ...] [--types points lmgc90] \
+    postproc investigate leaning-blocks STUDY [STUDY ...] [--types points lmgc90] \
         [--grids 1 2 3 4] [--min-grains 25] [--out runs/leaning-blocks]
 
 (:func:`write_blocks`; ``make size-front`` runs it on its three studies.)
@@ -256,7 +256,11 @@ def _fmt(x, d=3):
     return "–" if x is None or not np.isfinite(x) else f"{x:.{d}f}"
 
 
-def write_blocks(studies, out="runs/leaning-blocks", types=("points", "lmgc90"), grids=(1, 2, 3, 4),
+#: the counts whose analyses the block leanings read by default
+DEFAULT_COUNTS = ("points", "lmgc90")
+
+
+def write_blocks(studies, out="runs/leaning-blocks", types=DEFAULT_COUNTS, grids=(1, 2, 3, 4),
                  min_grains=25.0):
     """The block leanings of one or more studies, tabulated (see the module
     docstring): writes OUT/blocks.csv, OUT/blocks.md and ``OUT/cache/*.npz``.

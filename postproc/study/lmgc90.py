@@ -1,6 +1,6 @@
 """Our counts against LMGC90's compiled code, on the committed fixtures.
 
-    postproc lmgc90-agreement [--out runs/lmgc90] [--fixtures tests/data/lmgc90]
+    postproc investigate lmgc90-agreement [--out runs/lmgc90] [--fixtures tests/data/lmgc90]
 
 (:func:`write_agreement`.) For every packing fixture of tests/data/lmgc90
 (``packing-*.npz``: a snapshot of a 1000-grain
@@ -26,6 +26,8 @@ import numpy as np
 import pandas as pd
 
 from .. import commonplane as cp
+from .. import lmgc90count as lmgc
+from .. import lmgc90shape as lshape
 from ..errors import InputError
 
 #: the committed fixtures, beside the package in a source checkout
@@ -79,7 +81,7 @@ def one(name, fixtures=FIXTURES):
     vo, to = F["shape_vertex_offsets"], F["shape_triangle_offsets"]
     verts = [F["shape_vertices"][vo[i]:vo[i + 1]] for i in range(len(vo) - 1)]
     tris = [F["shape_triangles"][to[i]:to[i + 1]] for i in range(len(to) - 1)]
-    tables = cp.lmgc90_tables(verts, tris)
+    tables = lshape.lmgc90_tables(verts, tris)
     row = {s: k for k, s in enumerate(F["shape_rows"])}
     srow = np.array([row[s] for s in F["shape_index"]])
     x, q = F["positions"], F["orientations"]
@@ -97,7 +99,7 @@ def one(name, fixtures=FIXTURES):
             cnt = collections.Counter(zip((F[f"{route}{ia}_cd"] - 1).tolist(), (F[f"{route}{ia}_an"] - 1).tolist()))
             pairs = sorted(set(cnt) | set(dumped))
             i, k = np.array(pairs).T
-            n = cp.lmgc90_points(tables, srow[i], x[i], q[i], srow[k], x[k], q[k], float(alert),
+            n = lmgc.lmgc90_points(tables, srow[i], x[i], q[i], srow[k], x[k], q[k], float(alert),
                                  route=name_route)["points"]
             ours = dict(zip(pairs, n.tolist()))
             lm_d = [cnt.get(p, 0) for p in dumped]

@@ -1,5 +1,5 @@
 """A study's manifest.json: the runs of each sample, their dumps, analyses
-and status, as the study (:mod:`yade_scripts.study`) writes it; read and
+and status, as the study (:mod:`yade_scripts.campaign.study`) writes it; read and
 checked here for the report and the results."""
 from __future__ import annotations
 

@@ -6,7 +6,7 @@ packing's proportions against these show what its contact mechanics
 selects (docs/contact-types.md: a packing's face-face share at 5 degrees is
 about 40 times the chance).
 
-    postproc random-types [--library runs/shapes/library.h5] [--pairs 100000]
+    postproc investigate random-types [--library runs/shapes/library.h5] [--pairs 100000]
 
 (:func:`random_type_fractions`.) The draws are those of the angular
 criterion's throughput benchmark (``benchmarks/bench_contact_types.py``),

@@ -1,7 +1,7 @@
 """The study report: ``postproc report STUDY_DIR`` → ``STUDY_DIR/report/``.
 
 Reads what the study wrote (no simulation here): for each sample the runs
-listed in ``STUDY_DIR/manifest.json`` (written by ``yade_scripts.study``:
+listed in ``STUDY_DIR/manifest.json`` (written by ``yade_scripts.campaign.study``:
 label, dump, analysis folder and status of every run), or, without a
 manifest, ``STUDY_DIR/<sample>/run.h5`` and its ``analysis/``. Writes
 
@@ -16,7 +16,7 @@ manifest, ``STUDY_DIR/<sample>/run.h5`` and its ``analysis/``. Writes
 A failed or missing run is listed in the report and left out of the
 numbers; the rest of the report still builds. A partial run (status
 "partial": failed after the start of the steady state, see
-``yade_scripts.study.partial_progress``) is marked PARTIAL with the strain it
+``yade_scripts.campaign.study.partial_progress``) is marked PARTIAL with the strain it
 reached, and its steady snapshots are used.
 """
 from __future__ import annotations
@@ -87,7 +87,7 @@ def usable_runs(runs, sample):
 def figure_runs(runs, sample):
     """:func:`usable_runs` of ``sample`` with those whose dump is on this
     host first (a run taken from an archive of analysed runs,
-    :mod:`yade_scripts.archive`, has none): the runs the figures that read
+    :mod:`yade_scripts.campaign.archive`, has none): the runs the figures that read
     a dump, or copy an analysis's figures, start from."""
     return sorted(usable_runs(runs, sample), key=lambda r: not os.path.exists(r.get("dump") or ""))
 
@@ -239,7 +239,7 @@ def _cost_rows(infos):
 
 def host_lines(infos):
     """Lines naming the hosts the runs ran on (the ``host`` of each
-    run.info.json, :mod:`yade_scripts.host`), one per distinct host with
+    run.info.json, :mod:`yade_scripts.runs.host`), one per distinct host with
     the runs it ran; [] when no run recorded one. A run repeats step for
     step only on hosts whose CPUs make glibc's maths library pick the same
     code (docs/scenes.md, "Preparation"), so this says which per-seed
@@ -258,7 +258,7 @@ def host_lines(infos):
 
 def _schedule_lines(study, problems):
     """Lines on the schedule of the study's runs (``schedule.json``,
-    :mod:`yade_scripts.pool`): makespan, busy and idle core-time; an
+    :mod:`yade_scripts.launch.pool`): makespan, busy and idle core-time; an
     unreadable schedule is named in ``problems``."""
     path = os.path.join(study, "schedule.json")
     if not os.path.exists(path):

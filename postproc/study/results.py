@@ -29,7 +29,9 @@ import shutil
 
 import pandas as pd
 
+from ..classify import CRITERIA
 from ..errors import InputError, read_json_object
+from .claims import TABLE
 from .manifest import read_manifest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -44,18 +46,10 @@ PENDING = ("No results of the default study are committed yet "
            "and this table.")
 
 #: the claims table: claim id, short text, the comparison quantities
-#: (published and ours) it quotes
-ROWS = (
-    (1, "q/p of polyhedra above that of spheres throughout shear", ("q/p plateau",)),
-    (2, "branch-vector anisotropy a lower for polyhedra", ("a",)),
-    (3, "a_l negligible for spheres, not for polyhedra", ("a_l",)),
-    (4, "a_n and, much more, a_t higher for polyhedra", ("a_n + a_t", "a_t")),
-    (5, "q/p ≈ (2/5)(a + a_l + a_n + a_t) for both, all along the shear",
-     ("(2/5)(a+a_l+a_n+a_t)", "q/p plateau")),
-)
-CLAIM6 = ("face–face contacts strong and axial; vertex–face and edge–edge weak and lateral")
-COUNT_NAMES = {"points": "our contact-point count", "commonplane": "LMGC90's common-plane count",
-               "footprint": "the footprint count", "angular": "the angular criterion"}
+#: (published and ours) it quotes, of claims 1-5 (postproc.study.claims.TABLE)
+ROWS = tuple((k, short, quantities) for k, (_, short, quantities) in enumerate(TABLE[:5], start=1))
+#: claim 6's short text
+CLAIM6 = TABLE[5][1]
 
 
 def _clean(value):
@@ -285,7 +279,7 @@ def claims_table(results):
                 w = [_word(band[f].get(f"{k}_shift")) for f in (0.5, 2) if f in band]
                 words.append(f"{k} {'/'.join(w)}" if w else "")
             test = ("; under ½ and 2 × its parameter: " + ", ".join(w for w in words if w)) if any(words) else ""
-            name = COUNT_NAMES.get(r["count"], r["count"])
+            name = CRITERIA[r["count"]].label if r["count"] in CRITERIA else r["count"]
             lines.append(f"| 6 | {CLAIM6} ({name}) | {pub6} | leanings (negative: lateral) VF {r['VF']} "
                          f"{leaning_word(r['VF'])}, EE {r['EE']} {leaning_word(r['EE'])}{test} | {r['verdict']} |")
     else:

@@ -19,7 +19,7 @@ mean over the library's grains).
 
 ::
 
-    postproc shape-front GENERATED_STUDY REAL_STUDY --out DIR
+    postproc investigate shape-front GENERATED_STUDY REAL_STUDY --out DIR
 """
 from __future__ import annotations
 
@@ -239,7 +239,7 @@ def write_shape_front(studies, out, labels=None):
     ns = {int(f["n_particles"].iloc[0]) for f in frames if len(f)}
     if len(ns) > 1:
         raise InputError(f"the studies have different numbers of grains ({sorted(ns)}): compare shapes at one size "
-                         "(postproc size-front compares sizes)")
+                         "(postproc investigate size-front compares sizes)")
     values = pd.concat(frames, ignore_index=True)
     table = shape_table(values, names)
     verdicts = {name: study_verdicts(s) for name, s in zip(names, studies)}

@@ -40,26 +40,24 @@ from scipy.stats import f as f_dist
 
 from .claims import claim6, evaluate
 from .report import REFERENCE, run_summaries, usable_runs, count_summaries, discover
+from ..columns import GROUPS, label
 from ..errors import InputError, read_json_object
 from ..statistics import Estimate, difference, plateau_estimate, steady_indices
 
 SAMPLES = ("polyhedra", "spheres")
 #: quantity -> (summary column or None for a derived one, label)
 QUANTITIES = {
-    "q_over_p": ("q_over_p", "q/p plateau"),
-    "a": ("a", "a"), "a_l": ("a_l", "a_l"), "a_n": ("a_n", "a_n"), "a_t": ("a_t", "a_t"),
-    "sff": ("sff", "(2/5)Σa"),
+    "q_over_p": ("q_over_p", f"{label('q_over_p')} plateau"),
+    **{k: (k, label(k)) for k in ("a", "a_l", "a_n", "a_t", "sff")},
     "sff_rel_residual": (None, "(q/p − (2/5)Σa) / (q/p)"),
-    "z": ("z", "z"),
-    "frac_below_mean": ("frac_below_mean", "forces below the mean"),
+    **{k: (k, label(k)) for k in ("z", "frac_below_mean")},
     "phi_iso": (None, "solid fraction after compaction"),
 }
 #: claim 6 and contact-type quantities of S1, per count
 COUNT_QUANTITIES = {
-    "ct_frac_simple": "simple", "ct_frac_double": "double", "ct_frac_triple": "triple",
-    "ct_fratio_FF": "FF f/⟨f⟩", "ct_fratio_VF": "VF f/⟨f⟩", "ct_fratio_EE": "EE f/⟨f⟩",
-    "ct_fabric_FF": "FF leaning", "ct_fabric_VF": "VF leaning", "ct_fabric_EE": "EE leaning",
-    "strong_frac_FF": "FF share of strong", "weak_frac_FF": "FF share of weak",
+    **{f"ct_frac_{g}": g for g in GROUPS},
+    **{k: label(k) for k in ("ct_fratio_FF", "ct_fratio_VF", "ct_fratio_EE", "ct_fabric_FF", "ct_fabric_VF",
+                             "ct_fabric_EE", "strong_frac_FF", "weak_frac_FF")},
 }
 LEANINGS = ("ct_fabric_VF", "ct_fabric_EE")
 

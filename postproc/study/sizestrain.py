@@ -2,7 +2,7 @@
 axial strain: for runs that have not reached their steady state yet (a
 5000-grain study under way), or to see where along the shear two sizes part.
 
-    postproc size-at-strain FOLDER [FOLDER ...] [--sample polyhedra] \
+    postproc investigate size-at-strain FOLDER [FOLDER ...] [--sample polyhedra] \
         [--bins 0.04 0.075 0.105 0.145] [--out runs/size-at-strain]
 
 (:func:`write_size_at_strain`.)

@@ -1,10 +1,10 @@
 """Speed against error along the time step: S1 at the default kappa and I
 with dt = safety x the critical step, safety 0.3 (the default), 0.45, 0.6, 0.9.
 
-    python -m yade_scripts.timestep_front [--out runs/timestep] [--jobs 2]
-    postproc timestep-front OUT
+    python -m yade_scripts.campaign.timestep_sweep [--out runs/timestep] [--jobs 2]
+    postproc investigate timestep-front OUT
 
-The first runs the ``timestep`` plan of :mod:`yade_scripts.front` (200
+The first runs the ``timestep`` plan of :mod:`yade_scripts.campaign.sweeps` (200
 polyhedra, the default preset, 3 seeds; finished runs are not run again)
 and analyses each dump, then tabulates the front as the second does on a
 folder it left (:func:`write_timestep_front`): OUT/timestep.csv and
@@ -35,7 +35,7 @@ from ..statistics import plateau_estimate
 from .front import COMPARISON, collect_runs
 
 #: the safety the others are compared with: the default, the first of the
-#: plan's (``yade_scripts.front.TIMESTEP_SAFETIES``)
+#: plan's (``yade_scripts.campaign.sweeps.TIMESTEP_SAFETIES``)
 REFERENCE_SAFETY = 0.3
 QUANTITIES = tuple(COMPARISON) + ("phi_iso",)
 
@@ -165,7 +165,7 @@ def plan_runs(folder):
     Parameters
     ----------
     folder : str
-        A folder of :func:`yade_scripts.front.run_front` (its
+        A folder of :func:`yade_scripts.campaign.sweeps.run_front` (its
         front-plan.json).
 
     Returns

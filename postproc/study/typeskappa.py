@@ -2,7 +2,7 @@
 (``--types points``) and LMGC90's common-plane count (``--types
 commonplane``) on the same dumps.
 
-    postproc contact-types-kappa OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1]
+    postproc investigate contact-types-kappa OUT DUMP.h5 [DUMP.h5 ...] [--from-eps1 0.1]
 
 (:func:`write_types_kappa`.)
 

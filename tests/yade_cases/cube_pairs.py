@@ -5,8 +5,8 @@ shear force (x component, on the top cube) of each pair.
     yade -n -x cube_pairs.py stock|ours|kernel ROOT
 
 stock:  YADE's volumetric law with its own shear (poisson 0.3);
-ours:   the same normal law with poisson ~ 0 and yade_scripts.tangential;
-kernel: no InteractionLoop; the compiled kernel (yade_scripts.kernel_contacts)
+ours:   the same normal law with poisson ~ 0 and yade_scripts.scene.tangential;
+kernel: no InteractionLoop; the compiled kernel (yade_scripts.scene.kernel_contacts)
         with the same k_V = young / 2 and k_t.
 Cubes of side 2 cm, overlap 0.1 mm, young 1e8, friction 0.5, dt 1e-5.
 """
@@ -19,10 +19,10 @@ from yade import log, polyhedra_utils
 
 mode, root = sys.argv[1], sys.argv[2]
 sys.path.insert(0, root)
-from yade_scripts.kernel_contacts import KernelContacts  # noqa: E402
-from yade_scripts.tangential import TangentialLaw  # noqa: E402
-from yade_scripts.yadedump import polyhedra_shapes  # noqa: E402
-from yade_scripts.attempt import remove_scratch_at_exit  # noqa: E402
+from yade_scripts.scene.kernel_contacts import KernelContacts  # noqa: E402
+from yade_scripts.scene.tangential import TangentialLaw  # noqa: E402
+from yade_scripts.scene.yadedump import polyhedra_shapes  # noqa: E402
+from yade_scripts.runs.attempt import remove_scratch_at_exit  # noqa: E402
 
 remove_scratch_at_exit(O.tmpFilename())      # YADE's /tmp/yade-XXXXXX of this process
 

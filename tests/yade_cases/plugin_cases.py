@@ -23,7 +23,7 @@ import sys
 mode, root = sys.argv[1], sys.argv[2]
 sys.path.insert(0, root)
 from yade_scripts.yadeplugin.scene import compare_paths, small_box, snapshot, step_path  # noqa: E402
-from yade_scripts.attempt import remove_scratch_at_exit  # noqa: E402
+from yade_scripts.runs.attempt import remove_scratch_at_exit  # noqa: E402
 
 remove_scratch_at_exit(O.tmpFilename())      # YADE's /tmp/yade-XXXXXX of this process
 

@@ -5,7 +5,7 @@
 positions from YADE's bodies, calls the compiled kernel (``shapes/polycontact.c``,
 the library Python loaded with ctypes) and adds the forces and torques to
 YADE's force container, without the Python round trip of the ``PyRunner``
-path (:mod:`yade_scripts.kernel_contacts` drives both).
+path (:mod:`yade_scripts.scene.kernel_contacts` drives both).
 
 This module builds it against the installed YADE and decides whether it may
 be used:
@@ -55,7 +55,7 @@ import subprocess
 import sys
 import tempfile
 
-from .. import noremote
+from ..runs import noremote
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "PolyhedraKernelEngine.cpp")

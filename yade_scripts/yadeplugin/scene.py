@@ -16,8 +16,8 @@ import math
 
 import numpy as np
 
-from yade_scripts.kernel_contacts import KernelContacts
-from yade_scripts.yadedump import polyhedra_shapes
+from yade_scripts.scene.kernel_contacts import KernelContacts
+from yade_scripts.scene.yadedump import polyhedra_shapes
 
 D = 0.02            # m
 K_V = 2.0e9         # N/m^3

@@ -13,7 +13,7 @@ diagonal, so the stress has off-diagonal terms and the cell is tilted. At three 
 
 * ``yade.h5``: the project's own dump (postproc/schema.py's DumpWriter, the
   cell as a (3, 3) matrix, bodies and contacts gathered by
-  yade_scripts/yadedump.py, as the scene does);
+  yade_scripts/scene/yadedump.py, as the scene does);
 * ``table-K.csv``: a flat contact table as a YADE user writes it from
   ``O.interactions`` (ids, centres, contact point, force on id2 by id1,
   the branch vector pos2 - pos1 + hSize * cellDist);
@@ -32,7 +32,7 @@ HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith(".py"
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(HERE)))
 sys.path.insert(0, ROOT)
 from postproc.schema import DumpWriter  # noqa: E402
-from yade_scripts import yadedump  # noqa: E402
+from yade_scripts.scene import yadedump  # noqa: E402
 
 SIGMA0, N, R = 1e4, 150, 0.004
 O.periodic = True

@@ -1,0 +1,193 @@
+"""The shape of ``yade_scripts``: its rooms in layers that import only
+downward, with no import loop (imports inside functions and under ``if``
+included, and the package ``__init__`` every dotted import runs), and no
+import of our own modules hidden inside a function.
+
+From the bottom: ``runs/`` (one run's lock, state, checkpoints and attempt,
+the host, YADE without its servers), the YADE plugin's builder and loader
+(``yadeplugin/__init__``), ``scene/`` (the scene ``triaxial.py`` and its
+parts), the plugin's probe (``yadeplugin/scene.py``, a small scene of its
+own, and the script that runs it), ``launch/`` (the pool, the table's batch,
+SLURM) and ``campaign/`` (presets, run folders, the study, its archive, the
+sweeps). Every room sits in one layer but ``yadeplugin/``, whose loader is
+below the scene (the kernel's engine asks it for the plugin's class) and
+whose probe box is above it (it steps the scene's kernel on both paths).
+Read with ``ast``, without importing: the scene's modules import YADE."""
+import ast
+import os
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FOLDER = os.path.join(ROOT, "yade_scripts")
+
+#: the layers, from the bottom: a module may import its own layer or lower
+#: ones, never a higher one (modules named from yade_scripts: "runs.attempt";
+#: a package by its own name: "runs" is runs/__init__.py)
+LAYERS = [
+    ("runs", {"runs", "runs.runlock", "runs.checkpoint", "runs.host", "runs.noremote", "runs.runstate",
+              "runs.attempt"}),
+    ("plugin", {"yadeplugin", "yadeplugin.__main__"}),
+    ("scene", {"scene", "scene.parameters", "scene.servo", "scene.loading", "scene.timestep", "scene.sample",
+               "scene.grains", "scene.tangential", "scene.yadedump", "scene.kernel_contacts", "scene.controller",
+               "scene.triaxial"}),
+    ("probe", {"yadeplugin.scene", "yadeplugin.probe_scene"}),
+    ("launch", {"launch", "launch.batch", "launch.pool", "launch.resources", "launch.slurm", "launch.task"}),
+    ("campaign", {"campaign", "campaign.presets", "campaign.generate", "campaign.runfolders",
+                  "campaign.archive_store", "campaign.archive_commit", "campaign.study", "campaign.archive",
+                  "campaign.sweeps", "campaign.timestep_sweep", "campaign.facepair_sweep",
+                  "campaign.timestep_draws"}),
+]
+LEVEL = {m: k for k, (_, mods) in enumerate(LAYERS) for m in mods}
+
+
+def module_files():
+    """{module: path} of every Python file of yade_scripts (the root's
+    ``__init__`` left out: it must import nothing, see below)."""
+    out = {}
+    for dirpath, dirnames, names in os.walk(FOLDER):
+        dirnames[:] = [d for d in dirnames if d not in ("_build", "include", "__pycache__")]
+        package = os.path.relpath(dirpath, FOLDER).replace(os.sep, ".")
+        package = "" if package == "." else package
+        for name in sorted(names):
+            if not name.endswith(".py"):
+                continue
+            if name == "__init__.py":
+                mod = package
+            else:
+                mod = (package + "." if package else "") + name[:-3]
+            out[mod] = os.path.join(dirpath, name)
+    return out
+
+
+def _imports(path, mod, modules):
+    """[(imported module, inside a function?)] of the file ``path`` of module
+    ``mod`` (our modules only; ``from P import m`` counts as module P.m when
+    there is one, else P; a dotted module brings its packages too)."""
+    tree = ast.parse(open(path).read())
+    is_package = os.path.basename(path) == "__init__.py"
+    here = mod.split(".") if mod else []
+    package = here if is_package else here[:-1]
+    found = []
+
+    def add(name, nested):
+        parts = name.split(".") if name else []
+        for k in range(1, len(parts) + 1):          # the packages a dotted import runs
+            found.append((".".join(parts[:k]), nested))
+
+    def visit(node, nested):
+        for child in ast.iter_child_nodes(node):
+            inner = nested or isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+            if isinstance(child, ast.ImportFrom):
+                if child.level:
+                    base = package[:len(package) - (child.level - 1)] if child.level > 1 else package
+                    target = ".".join(base + (child.module.split(".") if child.module else []))
+                elif child.module == "yade_scripts" or (child.module or "").startswith("yade_scripts."):
+                    target = child.module[len("yade_scripts."):] if "." in child.module else ""
+                else:
+                    target = None
+                if target is not None:
+                    for a in child.names:
+                        sub = (target + "." if target else "") + a.name
+                        add(sub if sub in modules else target, inner)
+            elif isinstance(child, ast.Import):
+                for a in child.names:
+                    if a.name.startswith("yade_scripts."):
+                        add(a.name[len("yade_scripts."):], inner)
+            visit(child, inner)
+
+    visit(tree, False)
+    return [(d, nested) for d, nested in found if d != mod and d in modules]
+
+
+def yade_imports():
+    """{module: {our module it imports, at any depth of its code}}."""
+    files = module_files()
+    return {m: {d for d, _ in _imports(p, m, files)} for m, p in files.items() if m}
+
+
+def hidden_imports():
+    """[(module, our module it imports inside a function)]."""
+    files = module_files()
+    return sorted({(m, d) for m, p in files.items() if m for d, nested in _imports(p, m, files) if nested})
+
+
+def test_every_module_has_a_layer():
+    missing = sorted(set(yade_imports()) - set(LEVEL))
+    assert not missing, f"yade_scripts modules without a layer in tests/test_yade_layers.py: {missing}"
+    gone = sorted(set(LEVEL) - set(yade_imports()))
+    assert not gone, f"layers name modules that do not exist: {gone}"
+
+
+def test_the_package_root_imports_nothing():
+    """``import yade_scripts.X`` runs yade_scripts/__init__.py first: it
+    must not pull in any room."""
+    files = module_files()
+    assert _imports(files[""], "", files) == []
+
+
+def test_layers_import_only_downward():
+    up = [(m, d) for m, deps in yade_imports().items() for d in deps
+          if d in LEVEL and m in LEVEL and LEVEL[d] > LEVEL[m]]
+    assert not up, "imports going up a layer: " + ", ".join(f"{m} -> {d}" for m, d in sorted(up))
+
+
+def test_no_import_loop():
+    graph = yade_imports()
+    state = {}
+
+    def visit(m, path):
+        if state.get(m) == "open":
+            raise AssertionError("import loop: " + " -> ".join(path[path.index(m):] + [m]))
+        if state.get(m) == "done":
+            return
+        state[m] = "open"
+        for d in sorted(graph.get(m, ())):
+            if d in graph:
+                visit(d, path + [m])
+        state[m] = "done"
+
+    for m in sorted(graph):
+        visit(m, [])
+
+
+def test_no_import_of_our_own_hidden_in_a_function():
+    """An import of our own modules inside a function hides a loop from
+    whoever reads the module's head: every one is at the top."""
+    hidden = hidden_imports()
+    assert not hidden, "imports inside functions: " + ", ".join(f"{m} -> {d}" for m, d in hidden)
+
+
+def test_the_reader_sees_every_form_of_import(tmp_path):
+    """Relative (``.``, ``..``, ``from .. import m``), absolute, inside a
+    function and under ``if``: each is found, with its packages."""
+    src = tmp_path / "mod.py"
+    src.write_text("from ..runs import checkpoint\nfrom .. import yadeplugin\nfrom .servo import x\n"
+                   "import yade_scripts.launch.pool\nif True:\n    from yade_scripts.scene import loading\n"
+                   "def f():\n    from yade_scripts.campaign.study import main\n")
+    files = {m: None for m in ("runs", "runs.checkpoint", "yadeplugin", "scene", "scene.servo", "scene.loading",
+                               "launch", "launch.pool", "campaign", "campaign.study", "scene.mod")}
+    got = _imports(str(src), "scene.mod", files)
+    assert set(got) == {("runs", False), ("runs.checkpoint", False), ("yadeplugin", False), ("scene", False),
+                        ("scene.servo", False), ("launch", False), ("launch.pool", False), ("scene.loading", False),
+                        ("campaign", True), ("campaign.study", True)}
+
+
+@pytest.mark.parametrize("bad", ["upward", "loop", "hidden"])
+def test_the_checks_can_fail(bad, monkeypatch):
+    """The checks above do catch an upward import, a loop and a hidden import."""
+    mod = __import__(__name__)
+    if bad == "loop":
+        monkeypatch.setattr(mod, "yade_imports", lambda: {"a": {"b"}, "b": {"a"}})
+        with pytest.raises(AssertionError, match="import loop"):
+            test_no_import_loop()
+    elif bad == "upward":
+        graph = yade_imports()
+        graph["runs.runstate"] = graph["runs.runstate"] | {"campaign.study"}
+        monkeypatch.setattr(mod, "yade_imports", lambda: graph)
+        with pytest.raises(AssertionError, match="going up"):
+            test_layers_import_only_downward()
+    else:
+        monkeypatch.setattr(mod, "hidden_imports", lambda: [("launch.slurm", "launch.task")])
+        with pytest.raises(AssertionError, match="inside functions"):
+            test_no_import_of_our_own_hidden_in_a_function()
