@@ -256,7 +256,7 @@ class SceneContacts:
         return grains, facets, walls
 
     def _grain_shape(self, b):
-        from yade_scripts.yadedump import outward_triangles
+        from yade_scripts.scene.yadedump import outward_triangles
 
         if b.id not in self.shapes:
             v = np.array([tuple(x) for x in b.shape.v], float)
