@@ -139,9 +139,9 @@ def block(kind, steps):
 
 
 kernel = None
-from yade_scripts import yadeplugin  # noqa: E402
+from yade_scripts.yadeplugin import load as plugin_load  # noqa: E402
 
-KINDS = ("yade", "kernel") + (("plugin", "framework") if yadeplugin.loaded_class()[0] is not None else ())
+KINDS = ("yade", "kernel") + (("plugin", "framework") if plugin_load.loaded_class()[0] is not None else ())
 results = {k: [] for k in KINDS}
 for b in range(BLOCKS):
     for kind in KINDS:

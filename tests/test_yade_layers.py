@@ -5,9 +5,11 @@ import of our own modules hidden inside a function.
 
 From the bottom: ``runs/`` (one run's lock, state, checkpoints and attempt,
 the host, YADE without its servers), the YADE plugin's builder and loader
-(``yadeplugin/__init__``), ``scene/`` (the scene ``triaxial.py`` and its
-parts), the plugin's probe (``yadeplugin/scene.py``, a small scene of its
-own, and the script that runs it), ``launch/`` (the pool, the table's batch,
+(``yadeplugin/__init__``, ``yadeplugin/load.py``), ``scene/`` (the scene
+``triaxial.py`` and its parts), the plugin's probe (``yadeplugin/scene.py``,
+a small scene of its own, and the script that runs it) and the engine for a
+user's own scene (``yadeplugin/contacts.py``, which writes YADE's
+interactions as the scene's dump writer reads them), ``launch/`` (the pool, the table's batch,
 SLURM) and ``campaign/`` (presets, run folders, the study, its archive, the
 sweeps). Every room sits in one layer but ``yadeplugin/``, whose loader is
 below the scene (the kernel's engine asks it for the plugin's class) and
@@ -27,11 +29,11 @@ FOLDER = os.path.join(ROOT, "yade_scripts")
 LAYERS = [
     ("runs", {"runs", "runs.runlock", "runs.checkpoint", "runs.host", "runs.noremote", "runs.runstate",
               "runs.attempt"}),
-    ("plugin", {"yadeplugin", "yadeplugin.__main__"}),
+    ("plugin", {"yadeplugin", "yadeplugin.__main__", "yadeplugin.load"}),
     ("scene", {"scene", "scene.parameters", "scene.servo", "scene.loading", "scene.timestep", "scene.sample",
                "scene.grains", "scene.tangential", "scene.yadedump", "scene.kernel_contacts", "scene.controller",
                "scene.triaxial"}),
-    ("probe", {"yadeplugin.scene", "yadeplugin.probe_scene"}),
+    ("probe", {"yadeplugin.scene", "yadeplugin.probe_scene", "yadeplugin.contacts"}),
     ("launch", {"launch", "launch.batch", "launch.pool", "launch.resources", "launch.slurm", "launch.task"}),
     ("campaign", {"campaign", "campaign.presets", "campaign.generate", "campaign.runfolders",
                   "campaign.archive_store", "campaign.archive_commit", "campaign.study", "campaign.archive",

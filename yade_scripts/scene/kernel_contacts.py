@@ -48,7 +48,7 @@ import numpy as np
 
 from shapes.engine import ContactEngine, EngineError
 
-from .. import yadeplugin
+from ..yadeplugin import load as plugin_load
 
 #: the label of the engine that steps the kernel, on either path
 LABEL = "kernel_contacts"
@@ -153,7 +153,7 @@ class KernelContacts:
         :attr:`path` ("plugin" or "pyrunner") and :attr:`path_note` (why)
         say which."""
         self._command, self._check, self._label = command, check, label
-        cls, why = yadeplugin.loaded_class() if plugin else (None, "the plugin is switched off (kernel_plugin=False)")
+        cls, why = plugin_load.loaded_class() if plugin else (None, "the plugin is switched off (kernel_plugin=False)")
         if cls is None:
             self.plugin, self.path, self.path_note = None, "pyrunner", why
             return [self._pyrunner()]

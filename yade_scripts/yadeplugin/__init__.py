@@ -571,33 +571,3 @@ def copy_build(dest_here, here=HERE):
     return st
 
 
-def loaded_class():
-    """(class, why) in YADE's Python: the plugin's engine class when YADE
-    loaded it and it was built from this copy's sources, else (None, why)."""
-    if os.environ.get(SKIP_VARIABLE):
-        return None, f"{SKIP_VARIABLE} is set"
-    try:
-        import yade.wrapper as wrapper
-    except ImportError:
-        return None, "not running in YADE"
-    cls = getattr(wrapper, CLASS_NAME, None)
-    prefix = os.environ.get("YADE_PREFIX")
-    where = f"loaded by YADE from YADE_PREFIX={prefix}"
-    if cls is None:                 # YADE did not load it: this copy's ready build, loaded here (yadeplugin.load)
-        from .load import load_library
-
-        try:
-            where = load_library()
-        except (PluginError, OSError) as exc:
-            if not prefix:
-                return None, ("YADE was started without YADE_PREFIX and this copy's plugin could not be loaded "
-                              f"({exc}; the study, batch and SLURM launchers set it; by hand: "
-                              "YADE_PREFIX=$(python3 -m yade_scripts.yadeplugin prefix) yade ...)")
-            return None, f"YADE_PREFIX={prefix} holds no {CLASS_NAME} ({exc})"
-        cls = getattr(wrapper, CLASS_NAME, None)
-        if cls is None:
-            return None, f"the plugin loaded ({where}) but yade.wrapper has no {CLASS_NAME}"
-    built, ours = cls().sourceHash, source_hash()
-    if built != ours:
-        return None, f"the loaded plugin was built from other sources (hash {built}, this copy's {ours})"
-    return cls, where

@@ -59,6 +59,7 @@ import numpy as np
 from shapes import ckernel
 from shapes.engine import ContactEngine, EngineError
 
+from ..scene.yadedump import outward_triangles
 from . import load
 
 #: kernel body state for a body that is new: far from its neighbour-list position, so the list is rebuilt
@@ -256,8 +257,6 @@ class SceneContacts:
         return grains, facets, walls
 
     def _grain_shape(self, b):
-        from yade_scripts.scene.yadedump import outward_triangles
-
         if b.id not in self.shapes:
             v = np.array([tuple(x) for x in b.shape.v], float)
             if len(v) < 4:

@@ -5,7 +5,7 @@ script typed as ``yade script.py`` has no such prefix; :func:`engine_class`
 then loads this copy's ready build itself (``ctypes``, ``RTLD_GLOBAL``: the
 library's constructors register its classes with YADE's class factory) and
 asks it to add its classes to ``yade.wrapper`` (``pke_register_python``).
-The rules of :func:`yade_scripts.yadeplugin.loaded_class` hold either way: a
+The rules of :func:`loaded_class` hold either way: a
 build of other sources, or of another YADE, is refused in one line.
 
 Standard library only.
@@ -15,8 +15,8 @@ from __future__ import annotations
 import ctypes
 import os
 
-from . import (LIBRARY_NAME, MEASURED_CLASSES, PluginError, allocated_sizes, find_yade, prefix_libdir,
-               source_hash, status)
+from . import (CLASS_NAME, LIBRARY_NAME, MEASURED_CLASSES, SKIP_VARIABLE, PluginError, allocated_sizes, find_yade,
+               prefix_libdir, source_hash, status)
 
 USER_CLASS = "PolyhedraContactEngine"
 _loaded = {}
@@ -72,3 +72,33 @@ def measured_sizes():
         y = find_yade()
         _loaded["sizes"] = allocated_sizes(os.path.join(y["lib_dir"], "libpkg_polyhedra.so"), MEASURED_CLASSES)
     return _loaded["sizes"]
+
+
+def loaded_class():
+    """(class, why) in YADE's Python: the plugin's engine class when YADE
+    loaded it and it was built from this copy's sources, else (None, why)."""
+    if os.environ.get(SKIP_VARIABLE):
+        return None, f"{SKIP_VARIABLE} is set"
+    try:
+        import yade.wrapper as wrapper
+    except ImportError:
+        return None, "not running in YADE"
+    cls = getattr(wrapper, CLASS_NAME, None)
+    prefix = os.environ.get("YADE_PREFIX")
+    where = f"loaded by YADE from YADE_PREFIX={prefix}"
+    if cls is None:                 # YADE did not load it: this copy's ready build, loaded here
+        try:
+            where = load_library()
+        except (PluginError, OSError) as exc:
+            if not prefix:
+                return None, ("YADE was started without YADE_PREFIX and this copy's plugin could not be loaded "
+                              f"({exc}; the study, batch and SLURM launchers set it; by hand: "
+                              "YADE_PREFIX=$(python3 -m yade_scripts.yadeplugin prefix) yade ...)")
+            return None, f"YADE_PREFIX={prefix} holds no {CLASS_NAME} ({exc})"
+        cls = getattr(wrapper, CLASS_NAME, None)
+        if cls is None:
+            return None, f"the plugin loaded ({where}) but yade.wrapper has no {CLASS_NAME}"
+    built, ours = cls().sourceHash, source_hash()
+    if built != ours:
+        return None, f"the loaded plugin was built from other sources (hash {built}, this copy's {ours})"
+    return cls, where
