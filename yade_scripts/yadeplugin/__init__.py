@@ -249,7 +249,10 @@ def source_files(here=HERE):
     """The plugin's source and the vendored headers, sorted (of the copy of
     this package in ``here``)."""
     heads = sorted(glob.glob(os.path.join(here, "include", "**", "*.hpp"), recursive=True))
-    return [os.path.join(here, os.path.basename(SOURCE)), os.path.join(here, os.path.basename(USER_SOURCE))] + heads
+    # a run folder's copy made before the user-scene engine existed holds only the first
+    # source: its hash is over what it holds, as it was computed when it was made
+    sources = [os.path.join(here, os.path.basename(f)) for f in (SOURCE, USER_SOURCE)]
+    return [f for f in sources if f == sources[0] or os.path.exists(f)] + heads
 
 
 def source_hash(here=HERE):
