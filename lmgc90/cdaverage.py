@@ -7,12 +7,20 @@ snapshot that stands for the packing's quasi-static state takes, as CD
 practitioners do, the impulses summed over the K steps before it divided
 by K dt: the mean force over the window.
 
-Points are matched across steps by LMGC90's identity of an interaction:
+Points are matched across steps by LMGC90's identity of an interaction,
 (interaction type, candidate body, antagonist body, candidate contactor,
 antagonist contactor, candidate sub-contactor, antagonist sub-contactor)
 (``getInteractions`` fields ``inter``, ``icdbdy``, ``ianbdy``, ``icdtac``,
-``iantac``, ``icdsci``, ``iansci``: for PRPRx the sub-contactors are the
-vertex / face numbers of the common-plane point). A point absent from some
+``iantac``, ``icdsci``, ``iansci``), and, since LMGC90 gives every point of a
+PRPRx (common-plane) pair the same identity (sub-contactors 0), by the
+point's rank among its pair's points in LMGC90's order (``icdan``): the
+k-th point of a pair in one step is matched with the k-th in another. When a
+pair's number of points changes inside the window, the ranks past the
+smaller number are points that appear or vanish; which geometric point
+carries which rank is then LMGC90's order, not a geometric match. A pair's
+total force, every body's net force and the stress identities do not
+depend on the matching; only the split of a pair's mean force among its
+points does. A point absent from some
 steps of the window counts zero impulse there, so every point's mean force
 is (sum of its impulses) / (K dt) and the forces on any body sum to its
 mean reaction over the window exactly. The averaged state keeps every point
@@ -83,7 +91,8 @@ class ForceWindow:
         Parameters
         ----------
         keys : array_like, shape (P, 7)
-            int, each point's identity (module docstring).
+            int, each point's LMGC90 identity in LMGC90's order (module
+            docstring); points sharing one are told apart by their rank.
         candidate, antagonist : array_like, shape (P,)
             int, body rows (any numbering, kept as given).
         point : array_like, shape (P, 3)
@@ -103,6 +112,7 @@ class ForceWindow:
         None
         """
         k = np.asarray(keys, np.int64).reshape(-1, 7)
+        k = np.concatenate([k, rank_among_equals(k)[:, None]], axis=1)
         uc = np.asarray(frames, float).reshape(-1, 3, 3)
         r = np.asarray(reactions, float).reshape(-1, 3)
         P = len(k)
@@ -164,3 +174,37 @@ class ForceWindow:
         r = np.einsum("pji,pj->pi", uc, fmean[keep])        # global -> local (the frame is orthonormal)
         walls = sum(s["walls"] for s in self._window) / K
         return cat["cd"][sel], cat["an"][sel], cat["x"][sel], uc, r, cat["gap"][sel], walls
+
+
+def rank_among_equals(keys):
+    """Each row's rank among the rows equal to it, in their order.
+
+    Parameters
+    ----------
+    keys : array_like, shape (P, M)
+        int rows.
+
+    Returns
+    -------
+    ndarray of int64, shape (P,)
+        0 for a row's first occurrence, 1 for its second, ...
+
+    Examples
+    --------
+    >>> from lmgc90.cdaverage import rank_among_equals
+    >>> print(rank_among_equals([[1, 2], [3, 4], [1, 2], [1, 2]]).tolist())
+    [0, 0, 1, 2]
+    """
+    k = np.asarray(keys, np.int64)
+    k = k.reshape(len(k), -1)
+    if len(k) == 0:
+        return np.zeros(0, np.int64)
+    _, inv = np.unique(k, axis=0, return_inverse=True)
+    inv = inv.reshape(-1)
+    order = np.argsort(inv, kind="stable")
+    g = inv[order]
+    start = np.r_[0, np.flatnonzero(np.diff(g)) + 1]
+    first = np.repeat(start, np.diff(np.r_[start, len(g)]))
+    rank = np.empty(len(k), np.int64)
+    rank[order] = np.arange(len(k)) - first
+    return rank

@@ -112,3 +112,22 @@ def test_bad_input_is_refused_in_one_line():
     s["gap"] = s["gap"][:1]
     with pytest.raises(ValueError, match="gap has 1 entries for 2 points"):
         w.add(**s)
+
+
+def test_points_sharing_lmgc90_s_identity_are_matched_by_rank():
+    """LMGC90 gives every point of a PRPRx pair one identity: the k-th point
+    of the pair in one step meets the k-th of another; a third point present
+    in one step of two gets half its force, the two others their means."""
+    rng = np.random.default_rng(6)
+    w = ForceWindow(2)
+    a = _step([_key(1, 2, 0)] * 3, rng)
+    b = _step([_key(1, 2, 0)] * 2, rng)
+    w.add(**a)
+    w.add(**b)
+    cd, an, x, uc, r, gap, _ = w.mean()
+    glob = np.einsum("pij,pj->pi", uc, r)
+    fa = np.einsum("pij,pj->pi", a["frames"], a["reactions"])
+    fb = np.einsum("pij,pj->pi", b["frames"], b["reactions"])
+    assert len(cd) == 3
+    assert np.allclose(glob, np.vstack([(fa[:2] + fb) / 2, fa[2:] / 2]), rtol=0, atol=1e-14)
+    assert np.array_equal(x[:2], b["point"]) and np.array_equal(x[2], a["point"][2])
