@@ -135,8 +135,14 @@ class CDSystem:
         """
         return np.array([self.chipy.RBDY3_GetBodyMatrix(name, int(i) + 1) for i in bodies], float)
 
-    def interactions(self):
+    def interactions(self, keys=False):
         """This step's interactions (contact points).
+
+        Parameters
+        ----------
+        keys : bool
+            Also return each point's identity across steps
+            (:mod:`lmgc90.cdaverage`).
 
         Returns
         -------
@@ -152,12 +158,20 @@ class CDSystem:
             m, negative for an interpenetration.
         law : ndarray, shape (P,)
             int, the contact law's number.
+        keys : ndarray, shape (P, 7)
+            int, only with ``keys=True``: interaction type, candidate and
+            antagonist bodies, contactors and sub-contactors.
         """
         inters = self.chipy.getInteractions(this=True, human=False)
-        return (np.asarray(inters["icdbdy"], np.int64) - 1, np.asarray(inters["ianbdy"], np.int64) - 1,
+        out = (np.asarray(inters["icdbdy"], np.int64) - 1, np.asarray(inters["ianbdy"], np.int64) - 1,
                 np.asarray(inters["coor"], float).reshape(-1, 3), np.asarray(inters["uc"], float).reshape(-1, 3, 3),
                 np.asarray(inters["rl"], float).reshape(-1, 3), np.asarray(inters["gapTT"], float).reshape(-1),
                 np.asarray(inters["behav"], np.int64).reshape(-1))
+        if keys:
+            out += (np.stack([np.asarray(inters[n], np.int64).reshape(-1) for n in
+                              ("inter", "icdbdy", "ianbdy", "icdtac", "iantac", "icdsci", "iansci")],
+                             axis=1).reshape(-1, 7),)
+        return out
 
     def n_interactions(self):
         """The number of this step's interactions (contact points within the alert distance).

@@ -76,6 +76,8 @@ PARAMETERS = dict(
     iso_volume_tolerance=1e-4,    # ... the box's volume changing by less than this over the window
     iso_min_steps=100,            # ... and at least this many isotropic steps
     dump_strain=0.01,             # a snapshot every delta eps_1 in shear
+    average_steps=20,             # K: a snapshot's contact forces and wall forces are the mean over its last K steps (1: that step's)
+    iso_snapshot_steps=0,         # also a snapshot every this many isotropic steps (0: none; a steadiness check)
     final_strain=0.3,             # eps_1 at the end of shear
     max_steps=0,                  # stop (a failure) after this many steps (0: no limit)
     checkpoint_seconds=300.0,     # s of wall time between checkpoints (0: only on SIGTERM)
@@ -120,9 +122,12 @@ def parse(argv):
             ap.error(f"--set {item}: {name} takes a {kind.__name__}")
     if p["start"] == "yade" and not p["source"]:
         ap.error("--start yade needs --source DUMP")
-    for name in ("sigma0", "dt", "nlgs_tol", "alert_factor", "wall_mass_factor", "dump_strain", "final_strain"):
+    for name in ("sigma0", "dt", "nlgs_tol", "alert_factor", "wall_mass_factor", "dump_strain", "final_strain",
+                 "average_steps"):
         if not p[name] > 0:
             ap.error(f"{name} must be > 0, got {p[name]}")
+    if p["iso_snapshot_steps"] < 0:
+        ap.error(f"iso_snapshot_steps must be >= 0, got {p['iso_snapshot_steps']}")
     return os.path.abspath(a.folder), p
 
 
@@ -146,7 +151,7 @@ def main(argv=None):
     from postproc.schema import DumpFormatError, DumpWriter
     from yade_scripts.runs.runlock import RunBusy, RunLock, lock_path
 
-    from lmgc90 import cdcontacts, cdcontrol, cdmodel, cdstart, grains
+    from lmgc90 import cdaverage, cdcontacts, cdcontrol, cdmodel, cdstart, grains
     from lmgc90.cdsystem import CDSystem
 
     os.makedirs(folder, exist_ok=True)
@@ -183,7 +188,7 @@ def main(argv=None):
     if resumed:
         with open(os.path.join(resumed, "scene.json")) as fh:
             saved = json.load(fh)
-        P = saved["parameters"]             # the first attempt's parameters
+        P = {"average_steps": 1, "iso_snapshot_steps": 0, **saved["parameters"]}   # the first attempt's
     # ------------------------------------------------------------ the grains
     try:
         if P["start"] == "yade":
@@ -289,9 +294,23 @@ def main(argv=None):
     def wall_forces():
         return system.vectors("Reac_", wall_rows)[:, :3]
 
+    K = int(P.get("average_steps", 1))
+    forces_window = cdaverage.ForceWindow(K)     # the last K steps' points and wall forces
+
+    def record():
+        """This step into the averaging window (after system.step)."""
+        if K > 1:
+            cd, an, x, uc, r, gap, _, keys = system.interactions(keys=True)
+            forces_window.add(keys, cd, an, x, uc, r, gap, system.vectors("Reac_", range(N + 6))[:, :3])
+
     def snapshot(stage):
         lo, hi = box()
-        cd, an, x, uc, r, gap, _ = system.interactions()
+        if K > 1 and len(forces_window):       # the window's mean forces (a resumed run's first window may hold fewer steps)
+            cd, an, x, uc, r, gap, reac_mean = forces_window.mean()
+        else:
+            cd, an, x, uc, r, gap, _ = system.interactions()
+            reac_mean = system.vectors("Reac_", range(N + 6))[:, :3]
+        walls_f = reac_mean[N:]
         contacts, points = cdcontacts.pairs_and_points(dump_id[cd], dump_id[an], x, uc, r, gap)
         q = grains.orientation_now(start.orientations, frame0, system.frames(grain_rows))
         bodies = {"id": start.ids, "kind": np.full(N, 1 if POLY else 0, np.int8),
@@ -305,10 +324,11 @@ def main(argv=None):
         tmp = os.path.join(reactions_dir, f"{writer.n_snapshots:06d}.tmp.npz")
         np.savez(tmp, step=system.step_number, ids=dump_id, reac=system.vectors("Reac_", every),
                  coor=system.vectors("Coor_", every)[:, :3], velocity=system.vectors("V____", every),
-                 dt=system.dt)
+                 dt=system.dt, average_steps=K, steps_averaged=max(len(forces_window), 1),
+                 reac_mean=reac_mean)
         os.replace(tmp, os.path.join(reactions_dir, f"{writer.n_snapshots:06d}.npz"))
         writer.write_snapshot(step=system.step_number, time=system.time, stage=stage, box_lo=lo, box_hi=hi,
-                              wall_ids=start.wall_ids, wall_forces=wall_forces(), bodies=bodies,
+                              wall_ids=start.wall_ids, wall_forces=walls_f, bodies=bodies,
                               contacts=contacts, **({"points": points} if with_points else {}))
 
     def checkpoint():
@@ -381,6 +401,7 @@ def main(argv=None):
         L = hi - lo
         sig = cdcontrol.wall_stresses(wall_forces(), L)
         n_inter = system.n_interactions()
+        record()
         log.write(f"{system.step_number},{system.time:.9g},{st['stage']},{L[0]:.9g},{L[1]:.9g},{L[2]:.9g},"
                   + ",".join(f"{s:.9g}" for s in sig) + ","
                   + ",".join(f"{v:.9g}" for v in wall_normal_velocities())
@@ -398,6 +419,8 @@ def main(argv=None):
             window.add(sig)
             vol_window.append(float(np.prod(L)))
             vol_window[:] = vol_window[-P["iso_window"]:]
+            if P.get("iso_snapshot_steps", 0) and st["iso_steps"] % P["iso_snapshot_steps"] == 0:
+                snapshot("isotropic")
             dv = (vol_window[-1] - vol_window[0]) / vol_window[-1]
             if window.full and st["iso_steps"] >= P["iso_min_steps"] and cdcontrol.isotropic_reached(
                     window.mean(), P["sigma0"], P["iso_tolerance"], dv, P["iso_volume_tolerance"]):
@@ -405,6 +428,7 @@ def main(argv=None):
                 say(f"isotropic state at step {system.step_number}: mean sigma/sigma0 "
                     f"{np.round(window.mean() / P['sigma0'], 3)}, solid fraction {phi:.4f}")
                 snapshot("isotropic")
+                forces_window.clear()           # the shear's snapshots average shear steps only
                 st.update(stage="shear", shear_start_step=system.step_number, H0=float(L[2]), phi_iso=phi)
                 st["v_top"] = P["wall_speed"] if P["wall_speed"] > 0 else rate_shear * float(L[2])
                 writer.update_parameters(top_wall_speed=st["v_top"], solid_fraction_isotropic=phi,

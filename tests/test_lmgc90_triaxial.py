@@ -51,6 +51,7 @@ TINY = ["--set", "n_particles=24", "--set", "seed=3", "--set", "initial_fraction
         "--set", "iso_min_steps=40", "--set", "final_strain=0.01", "--set", "dump_strain=0.005",
         "--set", "inertial_number=0.02", "--set", "compaction_speed=0.2", "--set", "report_seconds=1000",
         "--set", "max_steps=4000"]
+AVERAGED = 10       # the averaged run's window, steps
 
 
 def scene(folder, *args, timeout=600):
@@ -69,9 +70,26 @@ def log_rows(folder):
 @pytest.fixture(scope="module")
 def tiny_run(tmp_path_factory, shape_library):
     folder = tmp_path_factory.mktemp("cd") / "run"
-    rc, out = scene(folder, "--start", "loose", "--set", f"library={shape_library}", *TINY)
+    rc, out = scene(folder, "--start", "loose", "--set", f"library={shape_library}", *TINY,
+                    "--set", "average_steps=1")
     assert rc == 0, out
     return folder
+
+
+@pytest.fixture(scope="module")
+def tiny_avg(tmp_path_factory, shape_library):
+    """The same run with snapshots averaged over the last AVERAGED steps."""
+    folder = tmp_path_factory.mktemp("cd") / "run"
+    rc, out = scene(folder, "--start", "loose", "--set", f"library={shape_library}", *TINY,
+                    "--set", f"average_steps={AVERAGED}")
+    assert rc == 0, out
+    return folder
+
+
+@pytest.fixture(params=["tiny_run", "tiny_avg"])
+def any_run(request):
+    """Each of the two runs: one step's forces (K = 1) and averaged ones."""
+    return request.getfixturevalue(request.param)
 
 
 def test_a_missing_build_is_refused_in_one_line(tmp_path):
@@ -108,11 +126,16 @@ def _reactions(folder, k):
 
 
 @needs_lmgc90
-def test_each_body_s_net_force_is_lmgc90_s_reaction(tiny_run):
+def test_each_body_s_net_force_is_lmgc90_s_reaction(any_run):
     """The dumped rows' net force on every grain and wall equals LMGC90's RBDY3
     'Reac_' (which LMGC90 assembles from its local reactions by its own
     H^T): the conventions of lmgc90/cdcontacts.py (id1 the antagonist, force
-    on the candidate) and the pair sums, to round-off."""
+    on the candidate) and the pair sums, to round-off. For the averaged run
+    the rows are the window's mean forces and the reference is the mean of
+    LMGC90's 'Reac_' over the same K steps (``reac_mean``): a point absent
+    from some steps counts zero there, so the identity stays exact; and the
+    mean is not the last step's."""
+    tiny_run = any_run
     from postproc.schema import DumpReader
 
     from lmgc90.cdcontacts import body_forces
@@ -124,13 +147,20 @@ def test_each_body_s_net_force_is_lmgc90_s_reaction(tiny_run):
             assert int(lm["step"]) == snap.step
             mine = body_forces({"id1": snap.id1, "id2": snap.id2, "force_normal": snap.force_normal,
                                 "force_tangential": snap.force - snap.force_normal}, lm["ids"])
-            scale = np.abs(lm["reac"][:, :3]).max()
-            assert np.abs(mine - lm["reac"][:, :3]).max() < 1e-9 * scale
-            assert np.allclose(snap.wall_forces, lm["reac"][-6:, :3], rtol=0, atol=1e-12 * scale)
+            ref = lm["reac_mean"]
+            scale = np.abs(ref).max()
+            assert np.abs(mine - ref).max() < 1e-9 * scale
+            assert np.allclose(snap.wall_forces, ref[-6:], rtol=0, atol=1e-12 * scale)
+            if int(lm["average_steps"]) == 1:
+                assert np.array_equal(ref, lm["reac"][:, :3])
+            else:
+                assert 1 <= int(lm["steps_averaged"]) <= int(lm["average_steps"]) == AVERAGED
+                if int(lm["steps_averaged"]) > 1:
+                    assert np.abs(ref - lm["reac"][:, :3]).max() > 1e-6 * scale
 
 
 @needs_lmgc90
-def test_love_weber_stress_equals_the_stress_of_lmgc90_s_reactions(tiny_run):
+def test_love_weber_stress_equals_the_stress_of_lmgc90_s_reactions(any_run):
     """postproc's stress (the Love-Weber sum of the dumped contact forces)
     equals sum_i R^i (x) x^i + sum_w sum_c F^{w,c} (x) x^c with R^i LMGC90's
     grain reactions (the identity of the module docstring), to round-off.
@@ -139,7 +169,14 @@ def test_love_weber_stress_equals_the_stress_of_lmgc90_s_reactions(tiny_run):
     wall planes, also to round-off: with c the box's centre and all forces
     internal (sum_i R^i + sum_w F^w = 0), V sigma_bb = sum_i R^i_b (x^i_b - c_b)
     + V sigma^wall_bb + sum_{c at the b walls} F^{w,c}_b (x^c_b - h_w) (the
-    walls are frictionless, so a wall's forces lie along its normal)."""
+    walls are frictionless, so a wall's forces lie along its normal).
+    Averaged snapshots: the same identities with every force the window's
+    mean (impulses / (K dt)) and every position the snapshot's step's, so
+    R^i is grain i's mean reaction and the inertial term
+    m^i (v^i_end - v^i_start) / (K dt) x^i: the Love-Weber stress of the
+    mean forces equals the mean wall reactions' stress up to the window's
+    change of momentum and the wall points' offsets, to round-off."""
+    tiny_run = any_run
     from postproc.contactset import resolve
     from postproc.schema import WALL_ORDER, DumpReader
     from postproc.stress import contact_stress, wall_stress
@@ -156,7 +193,7 @@ def test_love_weber_stress_equals_the_stress_of_lmgc90_s_reactions(tiny_run):
             grain = np.isin(lm["ids"], snap.body_ids)
             pos = dict(zip(snap.body_ids.tolist(), snap.positions))
             x = np.array([pos[int(i)] for i in lm["ids"][grain]])
-            R = lm["reac"][grain, :3]
+            R = lm["reac_mean"][grain]
             slot = {int(w): n for n, w in enumerate(snap.wall_ids)}
             wall = np.array([slot.get(a, slot.get(b, -1)) for a, b in zip(snap.id1.tolist(), snap.id2.tolist())])
             at_wall = wall >= 0
