@@ -5,6 +5,7 @@ import ast
 import os
 
 import pytest
+from layering import import_loop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -77,21 +78,8 @@ def test_layers_import_only_downward():
 
 def test_no_import_loop():
     graph = postproc_imports()
-    state = {}
-
-    def visit(m, path):
-        if state.get(m) == "open":
-            raise AssertionError("import loop: " + " -> ".join(path[path.index(m):] + [m]))
-        if state.get(m) == "done":
-            return
-        state[m] = "open"
-        for d in sorted(graph.get(m, ())):
-            if d in graph:
-                visit(d, path + [m])
-        state[m] = "done"
-
-    for m in graph:
-        visit(m, [])
+    loop = import_loop(graph)
+    assert loop is None, "import loop: " + " -> ".join(loop or [])
 
 
 def test_postproc_never_imports_yade_or_the_scenes():

@@ -19,6 +19,7 @@ import ast
 import os
 
 import pytest
+from layering import import_loop
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FOLDER = os.path.join(ROOT, "yade_scripts")
@@ -136,21 +137,8 @@ def test_layers_import_only_downward():
 
 def test_no_import_loop():
     graph = yade_imports()
-    state = {}
-
-    def visit(m, path):
-        if state.get(m) == "open":
-            raise AssertionError("import loop: " + " -> ".join(path[path.index(m):] + [m]))
-        if state.get(m) == "done":
-            return
-        state[m] = "open"
-        for d in sorted(graph.get(m, ())):
-            if d in graph:
-                visit(d, path + [m])
-        state[m] = "done"
-
-    for m in sorted(graph):
-        visit(m, [])
+    loop = import_loop(graph)
+    assert loop is None, "import loop: " + " -> ".join(loop or [])
 
 
 def test_no_import_of_our_own_hidden_in_a_function():
