@@ -19,7 +19,7 @@ from .coordination import coordination, force_bearing, fraction_below_mean
 from .errors import InputError
 from .fabric import anisotropies, stress_force_fabric
 from .networks import network_statistics, strong_mask
-from .pertype import class_statistics, partial_stresses, stress_contributions
+from .pertype import class_columns, class_statistics, partial_stresses, stress_contributions
 from .schema import WALL_ORDER, Snapshot
 from .strain import box_strains
 from .stress import contact_stress, invariants, relative_difference, wall_stress
@@ -165,14 +165,7 @@ def contact_type_columns(snap, cs, sel, classifier, p, total, axis):
     row = dict(res.columns)
     fn, L = cs.normal_force[sel], cs.arm[sel]
     for lab, classes in ((labels[sel], PAIR_TYPES), (group_labels[sel], GROUPS)):
-        st = class_statistics(lab, fn, L, axis)
-        for k in classes:
-            d = st.get(k)
-            row[f"ct_frac_{k}"] = d["fraction"] if d else 0.0
-            row[f"ct_fratio_{k}"] = d["mean_force_ratio"] if d else np.nan
-            row[f"ct_fshare_{k}"] = d["force_share"] if d else 0.0
-            row[f"ct_fabric_{k}"] = d["fabric_a"] if d else np.nan
-            row[f"ct_fabric_{k}_se"] = d["fabric_a_se"] if d else np.nan
+        row.update(class_columns(class_statistics(lab, fn, L, axis), classes, "ct_"))
     row.update({f"ct_qp_{k}": 0.0 for k in PAIR_TYPES + GROUPS})   # a class with no contact carries 0
     for lab in (labels, group_labels):
         parts = partial_stresses(lab, cs.force, cs.arm, cs.volume)

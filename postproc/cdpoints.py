@@ -28,7 +28,7 @@ from .axes import axis_vector
 from .contactset import resolve
 from .errors import InputError
 from .networks import strong_mask
-from .pertype import class_statistics, partial_stresses, stress_contributions
+from .pertype import class_columns, class_statistics, partial_stresses, stress_contributions
 from .schema import POINT_FIELDS
 from .stress import contact_stress
 
@@ -260,14 +260,7 @@ def cd_type_columns(snap, axis=2, alert=None):
         row[f"cd_alert_frac_{g}_all"] = float(np.mean(lab["alert"][seen] == g)) if seen.any() else np.nan
     for count in COUNTS:
         labels = lab[count]
-        st = class_statistics(labels[pop], fn, L, e)
-        for g in GROUPS:
-            d = st.get(g)
-            row[f"cd_{count}_frac_{g}"] = d["fraction"] if d else 0.0
-            row[f"cd_{count}_fratio_{g}"] = d["mean_force_ratio"] if d else np.nan
-            row[f"cd_{count}_fshare_{g}"] = d["force_share"] if d else 0.0
-            row[f"cd_{count}_fabric_{g}"] = d["fabric_a"] if d else np.nan
-            row[f"cd_{count}_fabric_{g}_se"] = d["fabric_a_se"] if d else np.nan
+        row.update(class_columns(class_statistics(labels[pop], fn, L, e), GROUPS, f"cd_{count}_"))
         qp = stress_contributions(partial_stresses(labels, cs.force, cs.arm, cs.volume), p, e)
         for g in GROUPS:
             row[f"cd_{count}_qp_{g}"] = float(qp[g][1]) if g in qp else 0.0

@@ -147,6 +147,46 @@ def class_statistics(labels, normal_force, branch, axis=2):
     return out
 
 
+def class_columns(stats, classes, prefix):
+    """The summary's per-class columns of :func:`class_statistics`, a class
+    without a contact given its empty values.
+
+    Parameters
+    ----------
+    stats : dict
+        :func:`class_statistics`' result.
+    classes : sequence of str
+        The classes to write, present or not.
+    prefix : str
+        The columns' prefix, e.g. ``"ct_"``.
+
+    Returns
+    -------
+    dict
+        For each k of ``classes``, in this order: ``{prefix}frac_{k}``,
+        ``{prefix}fratio_{k}``, ``{prefix}fshare_{k}``, ``{prefix}fabric_{k}``
+        and ``{prefix}fabric_{k}_se``; an absent class has 0 for its fraction
+        and force share, NaN for the others.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> st = class_statistics(np.array(["FF", "VF"]), np.array([3.0, 1.0]), np.array([[0, 0, 1.0], [1.0, 0, 0]]))
+    >>> row = class_columns(st, ("FF", "EE"), "ct_")
+    >>> print(row["ct_frac_FF"], row["ct_fshare_FF"], row["ct_frac_EE"], row["ct_fabric_EE"])
+    0.5 0.75 0.0 nan
+    """
+    row = {}
+    for k in classes:
+        d = stats.get(k)
+        row[f"{prefix}frac_{k}"] = d["fraction"] if d else 0.0
+        row[f"{prefix}fratio_{k}"] = d["mean_force_ratio"] if d else np.nan
+        row[f"{prefix}fshare_{k}"] = d["force_share"] if d else 0.0
+        row[f"{prefix}fabric_{k}"] = d["fabric_a"] if d else np.nan
+        row[f"{prefix}fabric_{k}_se"] = d["fabric_a_se"] if d else np.nan
+    return row
+
+
 def stress_contributions(partials, p, axis=2):
     """The shares of the mean stress and of the axial deviator carried by each
     class (seed eq. 2 split by class).
