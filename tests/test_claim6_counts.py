@@ -9,13 +9,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from builders import snapshot_dicts, write_snapshot
 from postproc.pipeline import AnalysisOptions, analyze_path
-from postproc.schema import DumpWriter
 from postproc.statistics import steady_indices
 from postproc.study.claims import BAND_STABLE, band_test, claim6
 from postproc.study.counts import analyse_counts, claim6_snapshots, count_folder
-from test_footprint_types import kernel_snapshot
+from test_footprint_types import kernel_sets_dump
 
 
 @pytest.fixture(scope="module")
@@ -23,19 +21,7 @@ def dump(tmp_path_factory):
     """A polyhedra dump of 7 snapshots (kernel contact sets of random grains,
     each posed anew): one isotropic, six of shear with the box shortened
     along z by 1 % each."""
-    path = str(tmp_path_factory.mktemp("c6") / "run.h5")
-    with DumpWriter(path, "polyhedra", {}) as w:
-        for k in range(7):
-            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
-            if k == 0:
-                w.write_shapes(verts, tris, faces)
-            snap.volumes = np.ones(len(snap.body_ids))
-            snap.masses = np.ones(len(snap.body_ids))
-            hi = snap.box_hi.copy()
-            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
-            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
-                           wall_forces=np.zeros((6, 3)))
-    return path
+    return kernel_sets_dump(str(tmp_path_factory.mktemp("c6") / "run.h5"), 7, np.zeros((6, 3)))
 
 
 def _summary(dump, out, **kw):

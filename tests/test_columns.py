@@ -10,32 +10,11 @@ import pytest
 from postproc import columns
 from postproc.columns import COLUMNS, LEAD
 from postproc.pipeline import AnalysisOptions, analyze_path
-from postproc.schema import DumpWriter
 from postproc.synthetic import write_synthetic_dump
-from builders import write_snapshot
-from test_footprint_types import kernel_snapshot
+from test_footprint_types import kernel_sets_dump
 from test_schema_points import lattice_points
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def _kernel_sets_dump(path, with_points):
-    """A polyhedra dump of three kernel contact sets (one isotropic, two
-    shear snapshots, the box 1 % shorter each), its contacts also as CD
-    contact points when ``with_points``."""
-    with DumpWriter(path, "polyhedra", {}) as w:
-        for k in range(3):
-            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
-            if k == 0:
-                w.write_shapes(verts, tris, faces)
-            snap.volumes = np.ones(len(snap.body_ids))
-            snap.masses = np.ones(len(snap.body_ids))
-            hi = snap.box_hi.copy()
-            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
-            extra = {"points": lattice_points(snap)} if with_points else {}
-            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
-                           wall_forces=np.full((6, 3), 0.5), **extra)
-    return path
 
 
 @pytest.fixture(scope="module")
@@ -44,13 +23,13 @@ def summaries(tmp_path_factory):
     analysed by the point count and by LMGC90's, of the same sets as a CD
     dump (contact points), and of a synthetic spheres dump."""
     tmp = tmp_path_factory.mktemp("columns")
-    path = _kernel_sets_dump(str(tmp / "run.h5"), with_points=False)
+    path = kernel_sets_dump(str(tmp / "run.h5"), 3, np.full((6, 3), 0.5))
     out = {}
     for types in ("points", "lmgc90"):
         folder = str(tmp / types)
         analyze_path(path, folder, AnalysisOptions(types=types, figures=False), progress=False)
         out[types] = list(pd.read_csv(os.path.join(folder, "summary.csv")).columns)
-    cd = _kernel_sets_dump(str(tmp / "cd.h5"), with_points=True)
+    cd = kernel_sets_dump(str(tmp / "cd.h5"), 3, np.full((6, 3), 0.5), points=lattice_points)
     analyze_path(cd, str(tmp / "cd"), AnalysisOptions(figures=False), progress=False)
     out["cd"] = list(pd.read_csv(os.path.join(tmp / "cd", "summary.csv")).columns)
     spheres = str(tmp / "spheres.h5")

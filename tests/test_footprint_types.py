@@ -256,6 +256,37 @@ def kernel_snapshot(seed):
                     footprint_area=c["area"])
     return snap, (verts, tris, faces)
 
+
+def kernel_sets_dump(path, n, wall_forces, parameters=None, overlap_kind="depth", footprint=False, points=None):
+    """A polyhedra dump of ``n`` kernel contact sets (:func:`kernel_snapshot`
+    of seeds 20, 21, ...): one isotropic snapshot, then shear snapshots with
+    the box shortened along z by 1 % each, unit volumes and masses.
+
+    wall_forces : (6, 3) N, every snapshot's; parameters, overlap_kind: the
+    writer's; footprint: the overlaps' footprints dumped; points: a function
+    of the snapshot giving its contact points (schema version 3), or None.
+    Returns ``path``."""
+    from builders import snapshot_dicts, write_snapshot
+    from postproc.schema import DumpWriter
+
+    with DumpWriter(path, "polyhedra", parameters or {}, overlap_kind=overlap_kind) as w:
+        for k in range(n):
+            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
+            if k == 0:
+                w.write_shapes(verts, tris, faces)
+            snap.volumes = np.ones(len(snap.body_ids))
+            snap.masses = np.ones(len(snap.body_ids))
+            hi = snap.box_hi.copy()
+            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
+            extra = {"points": points(snap)} if points else {}
+            if footprint:
+                _, contacts = snapshot_dicts(snap)
+                contacts.update(footprint=snap.footprint, footprint_area=snap.footprint_area)
+                extra["contacts"] = contacts
+            write_snapshot(w, snap, step=k, stage="isotropic" if k == 0 else "shear", box_hi=hi,
+                           wall_forces=wall_forces, **extra)
+    return path
+
 def test_engine_contacts_classify_as_their_recomputation(classifier):
     """A contact set from the kernel's stepping engine (no YADE), written to
     a dump with its footprint, and the same snapshot without it (as a stock

@@ -8,10 +8,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from builders import snapshot_dicts
 from postproc.cli import main
-from postproc.schema import DumpWriter
-from test_footprint_types import kernel_snapshot
+from test_footprint_types import kernel_sets_dump
 
 GROUPS = ("simple", "double", "triple")
 
@@ -21,23 +19,9 @@ def kernel_dump(tmp_path_factory):
     """An S1-like kernel dump with its run parameters: one isotropic and two
     shear snapshots (64 grains, the box shortened along z by 1 % each), the
     overlaps' volumes and footprints dumped."""
-    path = str(tmp_path_factory.mktemp("kappa") / "polyhedra-k3000.h5")
-    with DumpWriter(path, "polyhedra", {"kappa": 3000.0, "inertial_number": 5e-3, "n_particles": 64, "seed": 1},
-                    overlap_kind="volume") as w:
-        for k in range(3):
-            snap, (verts, tris, faces) = kernel_snapshot(20 + k)
-            if k == 0:
-                w.write_shapes(verts, tris, faces)
-            snap.volumes = np.ones(len(snap.body_ids))
-            snap.masses = np.ones(len(snap.body_ids))
-            hi = snap.box_hi.copy()
-            hi[2] = snap.box_lo[2] + (hi[2] - snap.box_lo[2]) * (1 - 0.01 * k)
-            bodies, contacts = snapshot_dicts(snap)
-            contacts.update(footprint=snap.footprint, footprint_area=snap.footprint_area)
-            w.write_snapshot(step=k, time=0.0, stage="isotropic" if k == 0 else "shear", box_lo=snap.box_lo,
-                             box_hi=hi, wall_ids=snap.wall_ids, wall_forces=np.zeros((6, 3)), bodies=bodies,
-                             contacts=contacts)
-    return path
+    return kernel_sets_dump(str(tmp_path_factory.mktemp("kappa") / "polyhedra-k3000.h5"), 3, np.zeros((6, 3)),
+                            parameters={"kappa": 3000.0, "inertial_number": 5e-3, "n_particles": 64, "seed": 1},
+                            overlap_kind="volume", footprint=True)
 
 
 @pytest.fixture(scope="module")
