@@ -67,7 +67,8 @@ PARAMETERS = dict(
     nlgs_scramble=1,              # 1: NLGS sweeps the contacts in a shuffled order between checks (LMGC90's quick scramble)
     alert_factor=0.1,             # alert distance = this x the smallest grain radius
     cundall_iterations=50,        # PRPRx common-plane (Cundall) detection iterations
-    inertial_number=0.005,        # shear: I = rate d sqrt(rho / sigma0) (ignored if wall_speed > 0)
+    inertial_number=0.005,        # shear: I = rate d sqrt(rho / sigma0), d the grains' mean size (ignored if shear_rate or wall_speed > 0)
+    shear_rate=0.0,               # 1/s, the shear's strain rate (0: from inertial_number); a YADE run's rate_shear gives both methods one rate
     wall_speed=0.0,               # m/s, top wall speed in shear (0: from inertial_number)
     wall_mass_factor=10.0,        # each wall's mass / the sample's mass
     compaction_speed=0.05,        # m/s, the pressed walls' speed cap in the isotropic stage
@@ -126,8 +127,9 @@ def parse(argv):
                  "average_steps"):
         if not p[name] > 0:
             ap.error(f"{name} must be > 0, got {p[name]}")
-    if p["iso_snapshot_steps"] < 0:
-        ap.error(f"iso_snapshot_steps must be >= 0, got {p['iso_snapshot_steps']}")
+    for name in ("iso_snapshot_steps", "shear_rate", "wall_speed"):
+        if not p[name] >= 0:
+            ap.error(f"{name} must be >= 0, got {p[name]}")
     return os.path.abspath(a.folder), p
 
 
@@ -188,7 +190,7 @@ def main(argv=None):
     if resumed:
         with open(os.path.join(resumed, "scene.json")) as fh:
             saved = json.load(fh)
-        P = {"average_steps": 1, "iso_snapshot_steps": 0, **saved["parameters"]}   # the first attempt's
+        P = {"average_steps": 1, "iso_snapshot_steps": 0, "shear_rate": 0.0, **saved["parameters"]}   # the first attempt's
     # ------------------------------------------------------------ the grains
     try:
         if P["start"] == "yade":
@@ -213,6 +215,8 @@ def main(argv=None):
     half_size = 0.75 * float(L0.max()) + float(sizes.max())
     if P["wall_speed"] > 0:
         rate_shear = None
+    elif P["shear_rate"] > 0:
+        rate_shear = P["shear_rate"]
     else:
         rate_shear = P["inertial_number"] / (float(sizes.mean()) * math.sqrt(P["density"] / P["sigma0"]))
     nlgs = {"norm": P["nlgs_norm"].ljust(5)[:5], "tol": P["nlgs_tol"], "relax": P["nlgs_relax"],

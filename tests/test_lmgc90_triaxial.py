@@ -52,6 +52,7 @@ TINY = ["--set", "n_particles=24", "--set", "seed=3", "--set", "initial_fraction
         "--set", "inertial_number=0.02", "--set", "compaction_speed=0.2", "--set", "report_seconds=1000",
         "--set", "max_steps=4000"]
 AVERAGED = 10       # the averaged run's window, steps
+RATE = 1.0          # 1/s, the averaged run's shear rate, set by shear_rate (the other run's comes from I)
 
 
 def scene(folder, *args, timeout=600):
@@ -81,7 +82,7 @@ def tiny_avg(tmp_path_factory, shape_library):
     """The same run with snapshots averaged over the last AVERAGED steps."""
     folder = tmp_path_factory.mktemp("cd") / "run"
     rc, out = scene(folder, "--start", "loose", "--set", f"library={shape_library}", *TINY,
-                    "--set", f"average_steps={AVERAGED}")
+                    "--set", f"average_steps={AVERAGED}", "--set", f"shear_rate={RATE}")
     assert rc == 0, out
     return folder
 
@@ -246,6 +247,25 @@ def test_the_lateral_walls_hold_sigma0(tiny_run):
         assert np.abs(lhs - rhs).max() < 1e-6 * np.abs(R * dt).max()
         mean = np.mean(rows["s_" + name][k]) / SIGMA0
         assert abs(mean - 1.0) < 0.10, (name, mean)
+
+
+def test_the_top_wall_moves_at_the_rate_asked(tiny_run, tiny_avg):
+    """v_top = rate H0: the rate from the inertial number, I / (d sqrt(rho / sigma0))
+    with d the grains' mean size, or the one given by shear_rate (a YADE run's)."""
+    from postproc.schema import DumpReader
+    for folder, rate in ((tiny_run, None), (tiny_avg, RATE)):
+        with DumpReader(str(folder / "run.h5")) as r:
+            p = r.parameters
+            sizes = r.read(0).sizes
+        if rate is None:
+            rate = p["inertial_number"] / (np.mean(sizes) * np.sqrt(p["density"] / p["sigma0"]))
+        assert abs(p["top_wall_speed"] - rate * p["box_isotropic"][2]) < 1e-12 * p["top_wall_speed"]
+
+
+def test_a_negative_shear_rate_is_refused_in_one_line(tmp_path):
+    rc, out = scene(tmp_path / "run", "--start", "loose", "--set", "shear_rate=-1")
+    lines = [line for line in out.splitlines() if line.strip()]
+    assert rc == 2 and "shear_rate must be >= 0" in lines[-1]
 
 
 @needs_lmgc90
