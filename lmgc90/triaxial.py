@@ -76,7 +76,7 @@ PARAMETERS = dict(
     iso_window=100,               # ... averaged over this many steps, and
     iso_volume_tolerance=1e-4,    # ... the box's volume changing by less than this over the window
     iso_min_steps=100,            # ... and at least this many isotropic steps
-    dump_strain=0.01,             # a snapshot every delta eps_1 in shear
+    dump_strain=0.01,             # a snapshot every delta eps_1 in shear (eps_1 = ln(H0 / H), the paper's eq. 3)
     average_steps=20,             # K: a snapshot's contact forces and wall forces are the mean over its last K steps (1: that step's)
     iso_snapshot_steps=0,         # also a snapshot every this many isotropic steps (0: none; a steadiness check)
     final_strain=0.3,             # eps_1 at the end of shear
@@ -440,7 +440,7 @@ def main(argv=None):
                 set_stage_walls("shear")
                 say(f"shear: top wall at {st['v_top']:.4g} m/s")
         else:
-            st["eps_1"] = (st["H0"] - float(L[2])) / st["H0"]
+            st["eps_1"] = math.log(st["H0"] / float(L[2]))     # the paper's eq. 3, as the YADE scene and postproc.strain
             st["servo"].append([float(s) for s in sig[:4]])
             st["servo"] = st["servo"][-1000:]
             if st["eps_1"] >= st["next_dump"] - 1e-12:

@@ -262,6 +262,17 @@ def test_the_top_wall_moves_at_the_rate_asked(tiny_run, tiny_avg):
         assert abs(p["top_wall_speed"] - rate * p["box_isotropic"][2]) < 1e-12 * p["top_wall_speed"]
 
 
+def test_the_shear_ends_at_the_logarithmic_final_strain(tiny_run):
+    """eps_1 = ln(H0 / H) (the paper's eq. 3, the YADE scene's and postproc's):
+    the last logged step is the first whose eps_1 reaches final_strain."""
+    rows = log_rows(tiny_run)
+    params = json.loads((tiny_run / "run.params.json").read_text())
+    k = np.flatnonzero(rows["stage"] == "shear")
+    H0 = rows["Lz"][k[0] - 1]
+    eps = np.log(H0 / rows["Lz"][k])
+    assert eps[-1] >= params["final_strain"] > eps[-2]
+
+
 def test_a_negative_shear_rate_is_refused_in_one_line(tmp_path):
     rc, out = scene(tmp_path / "run", "--start", "loose", "--set", "shear_rate=-1")
     lines = [line for line in out.splitlines() if line.strip()]
