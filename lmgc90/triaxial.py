@@ -21,8 +21,9 @@ OUTBOX/). Starting states (lmgc90/cdstart.py): ``yade`` takes the first
 isotropic snapshot of a project dump (a YADE run's: the same grains,
 positions and orientations); ``loose`` draws the grains as the YADE scene
 does for the same seed and lets the walls compact them (LMGC90's own
-compaction, as the paper's). Run the same command again in the folder and
-it resumes from the newest checkpoint (OUT.ckpt, then OUT.ckpt.prev), every
+compaction, as the paper's). Run the same command again in the folder (or
+only ``python -m lmgc90.triaxial FOLDER``: a checkpoint holds every
+parameter) and it resumes from the newest checkpoint (OUT.ckpt, then OUT.ckpt.prev), every
 ``checkpoint_seconds`` and on SIGTERM. Exit codes as the YADE scene's
 (yade_scripts/runs/runstate.py): 0 done (or complete already), 2 invalid
 parameters or starting state, 3 stopped on a blow-up or max_steps (the
@@ -121,8 +122,11 @@ def parse(argv):
             p[name] = kind(float(text)) if kind in (int, float) else text
         except ValueError:
             ap.error(f"--set {item}: {name} takes a {kind.__name__}")
-    if p["start"] == "yade" and not p["source"]:
-        ap.error("--start yade needs --source DUMP")
+    folder = os.path.abspath(a.folder)
+    stem = p["out"][:-3] if p["out"].endswith(".h5") else p["out"]
+    resumable = any(os.path.exists(os.path.join(folder, stem + c, "scene.json")) for c in (".ckpt", ".ckpt.prev"))
+    if p["start"] == "yade" and not p["source"] and not resumable:
+        ap.error("--start yade needs --source DUMP (only a folder with a checkpoint resumes without one)")
     for name in ("sigma0", "dt", "nlgs_tol", "alert_factor", "wall_mass_factor", "dump_strain", "final_strain",
                  "average_steps"):
         if not p[name] > 0:
@@ -130,7 +134,7 @@ def parse(argv):
     for name in ("iso_snapshot_steps", "shear_rate", "wall_speed"):
         if not p[name] >= 0:
             ap.error(f"{name} must be >= 0, got {p[name]}")
-    return os.path.abspath(a.folder), p
+    return folder, p
 
 
 def main(argv=None):

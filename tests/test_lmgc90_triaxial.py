@@ -313,3 +313,66 @@ def test_a_killed_run_resumes_from_its_checkpoint(tmp_path, shape_library):
     assert verify_dump(str(folder / "run.h5")).complete
     rc, out = scene(folder, "--start", "loose", "--set", f"library={shape_library}", *TINY)
     assert rc == 0 and "complete already" in out
+
+
+@needs_lmgc90
+def test_a_branch_goes_on_from_the_checkpoint_under_its_new_tolerance(tmp_path, shape_library):
+    """lmgc90.branch: a run stopped by SIGTERM (its checkpoint written at the
+    step it stopped) is copied with nlgs_tol changed; the branch resumes
+    from that step under the new tolerance, and its snapshots and log rows
+    before the branch are the original's, exactly."""
+    from lmgc90 import branch as lbranch
+    from postproc.schema import DumpReader, verify_dump
+    folder = tmp_path / "run"
+    args = [sys.executable, "-m", "lmgc90.triaxial", str(folder), "--start", "loose", "--set",
+            f"library={shape_library}", *TINY, "--set", "checkpoint_steps=25", "--set", "iso_snapshot_steps=25"]
+    proc = subprocess.Popen(args, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    deadline = time.time() + 300
+    ckpt = folder / "run.ckpt" / "scene.json"
+    while time.time() < deadline and not (ckpt.exists() and json.loads(ckpt.read_text())["program"]["steps"] >= 50):
+        time.sleep(0.2)
+    assert proc.poll() is None, "the run ended before its second checkpoint"
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(timeout=120) == 75
+    at = json.loads(ckpt.read_text())
+    new = tmp_path / "branch"
+    rc = lbranch.main([str(folder), str(new), "--set", "nlgs_tol=1e-4", "--set", "nlgs_relax=0.9"])
+    assert rc == 0
+    params = json.loads((new / "run.params.json").read_text())
+    assert params["nlgs_tol"] == 1e-4 and params["branch"]["step"] == at["program"]["steps"]
+    assert params["branch"]["changed"] == {"nlgs_tol": 1e-4, "nlgs_relax": 0.9}
+    rc, out = scene(new)
+    assert rc == 0 and f"resumed from run.ckpt at step {at['program']['steps']}" in out and "tol 0.0001" in out, out
+    rc, out = scene(folder)
+    assert rc == 0, out
+    n = at["n_snapshots"]
+    assert n >= 2
+    with DumpReader(str(folder / "run.h5")) as a, DumpReader(str(new / "run.h5")) as b:
+        assert len(b) >= n + 1
+        for k in range(n):
+            sa, sb = a.read(k), b.read(k)
+            assert sa.step == sb.step and np.array_equal(sa.positions, sb.positions)
+            assert np.array_equal(sa.force, sb.force) and np.array_equal(sa.id1, sb.id1)
+    assert verify_dump(str(new / "run.h5")).complete
+    ra, rb = log_rows(folder), log_rows(new)
+    upto = at["program"]["steps"]
+    assert np.array_equal(ra["nlgs_iterations"][:upto], rb["nlgs_iterations"][:upto])
+    assert np.all(np.diff(rb["step"]) == 1)
+
+
+def test_a_branch_is_refused_in_one_line(tmp_path):
+    from lmgc90 import branch as lbranch
+    run = tmp_path / "run"
+    (run / "DATBOX").mkdir(parents=True)
+    with pytest.raises(lbranch.BranchError, match="no checkpoint"):
+        lbranch.branch(str(run), str(tmp_path / "b"), {"nlgs_tol": "1e-4"})
+    (run / "run.ckpt").mkdir()
+    (run / "run.ckpt" / "scene.json").write_text(json.dumps(
+        {"parameters": {"nlgs_tol": 1e-3, "friction": 0.5}, "program": {"steps": 3}, "n_snapshots": 1}))
+    with pytest.raises(lbranch.BranchError, match="a branch changes only"):
+        lbranch.branch(str(run), str(tmp_path / "b"), {"friction": "0.3"})
+    with pytest.raises(lbranch.BranchError, match="takes a float"):
+        lbranch.branch(str(run), str(tmp_path / "b"), {"nlgs_tol": "tight"})
+    with pytest.raises(lbranch.BranchError, match="exists already"):
+        lbranch.branch(str(run), str(run), {"nlgs_tol": "1e-4"})
+    assert not (tmp_path / "b").exists()
