@@ -31,7 +31,7 @@ SET_ASIDE ?=
 # OpenMP threads sleep when idle (the polyhedra kernel; see yade_scripts/launch/pool.py)
 export OMP_WAIT_POLICY ?= PASSIVE
 
-.PHONY: test test-fast docs study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front lmgc90 lmgc90-system
+.PHONY: test test-fast docs study cd-study archive collect-archive results compare test-slurm system venv bench clean-venv shapes front kernel size-front lmgc90 lmgc90-system
 
 # Debian's YADE (runs the scenes on /usr/bin/python3), h5py for that Python,
 # gcc for the compiled contact kernel (shapes/polycontact.c, OpenMP), and
@@ -130,6 +130,26 @@ study: system venv kernel $(if $(SHAPES),,$(SHAPES_LIB))
 	    $(if $(SET_ASIDE),--set-aside) $(if $(DRY_RUN),--dry-run)
 	@if [ "$(PRESET)" = default ] && [ "$(ENSEMBLE)" = 3 ] && [ -z "$(SHAPES)" ] && [ -z "$(DRY_RUN)" ]; then \
 	  $(PY) -m postproc.cli compare-results $(STUDY) || true; fi
+
+# The CD study (docs/lmgc90.md, "A CD study"): each seed of the YADE study FROM
+# (found by its manifest.json: make study PRESET=small STUDY=runs/small; this
+# target never runs YADE and says so in one line when FROM is not a finished
+# study) taken through Contact Dynamics by LMGC90 into CD_STUDY/<sample>-seed<K>/,
+# JOBS runs at once (python -m lmgc90.study). Finished runs are adopted, not run
+# again; unfinished ones resume from their checkpoint; a run another process
+# writes is left alone. Then CD_STUDY/manifest.json and CD_STUDY/report/.
+# CD_SET="NAME=VALUE ...": the scene's parameters; CD_ARCHIVE=DEST keeps the
+# finished runs' numbers there; CD_SLURM=1 writes CD_STUDY/slurm.sh (a job array)
+# instead of running; DRY_RUN=1 and SET_ASIDE=1 as for make study.
+CD_STUDY ?= runs/cd-small
+FROM ?= runs/small
+CD_SET ?=
+CD_ARCHIVE ?=
+CD_SLURM ?=
+cd-study: lmgc90
+	$(PY) -m lmgc90.study --from $(FROM) --out $(CD_STUDY) --jobs $(JOBS) $(foreach s,$(CD_SET),--set $(s)) \
+	    $(if $(CD_ARCHIVE),--archive $(CD_ARCHIVE)) $(if $(CD_SLURM),--slurm) \
+	    $(if $(SET_ASIDE),--set-aside) $(if $(DRY_RUN),--dry-run)
 
 # Keep STUDY's analysed runs (numbers only, no dumps) in ARCHIVE, to carry a
 # long study to another host: make study ... ARCHIVE=DEST runs only the rest.

@@ -155,7 +155,7 @@ def main(argv=None):
     sys.path.insert(0, root)
     from lmgc90.build import LMGC90BuildError, import_pylmgc90
     from postproc.schema import DumpFormatError, DumpWriter
-    from yade_scripts.runs.runlock import RunBusy, RunLock, lock_path
+    from yade_scripts.runs.runlock import RunBusy, RunLock, inherited, lock_path
 
     from lmgc90 import cdaverage, cdcontacts, cdcontrol, cdmodel, cdstart, grains
     from lmgc90.cdsystem import CDSystem
@@ -166,12 +166,14 @@ def main(argv=None):
     ckpt, ckpt_prev = stem + ".ckpt", stem + ".ckpt.prev"
     reactions_dir = stem + ".reactions"
     # ------------------------------------------------------------ the run's only writer
-    lock = RunLock(lock_path(out), "lmgc90.triaxial")
-    try:
-        lock.acquire()
-    except RunBusy as exc:
-        say(f"refused: {exc}")
-        return EXIT_BUSY
+    # (a launcher that holds the run's lock for it, yade_scripts.launch.pool, says so in the environment)
+    if not inherited(lock_path(out)):
+        lock = RunLock(lock_path(out), "lmgc90.triaxial")
+        try:
+            lock.acquire()
+        except RunBusy as exc:
+            say(f"refused: {exc}")
+            return EXIT_BUSY
     info_path = stem + ".info.json"
     if os.path.exists(out) and not os.path.exists(out + ".parts"):
         say(f"{P['out']} is complete already; nothing to do (delete it to run again)")
@@ -363,6 +365,17 @@ def main(argv=None):
 
     term = []
     signal.signal(signal.SIGTERM, lambda *a: term.append(1))
+    progress_path = stem + ".progress.json"
+
+    def progress(**fields):
+        """The run's progress record (OUT.progress.json, as the YADE scene's):
+        newer than the process once SIGTERM is handled, what a launcher
+        waits for before it asks the run to stop (yade_scripts.launch.pool)."""
+        with open(progress_path + ".tmp", "w") as fh:
+            json.dump({**fields, "seconds_left": None, "time": time.time()}, fh)
+        os.replace(progress_path + ".tmp", progress_path)
+
+    progress(step=system.step_number, stage=st["stage"], eps_1=st["eps_1"])
 
     def fail(reason):
         say(f"STOPPED at step {system.step_number} ({st['stage']}, eps_1 = {st['eps_1']:.4f}): {reason}. "
@@ -468,6 +481,7 @@ def main(argv=None):
                 return EXIT_TERM
         if now - last_report > P["report_seconds"]:
             last_report = now
+            progress(step=system.step_number, stage=st["stage"], eps_1=st["eps_1"])
             where = (f"eps_1 {st['eps_1']:.4f}, sigma_lat/sigma0 {np.round(sig[:4] / P['sigma0'], 3)}, "
                      f"sigma_top/sigma0 {sig[5] / P['sigma0']:.3f}") if st["stage"] == "shear" else \
                 f"sigma/sigma0 {np.round(sig / P['sigma0'], 3)}"
@@ -482,9 +496,11 @@ def main(argv=None):
             "unconverged_steps": st["unconverged_steps"], "steps_run": st["steps"]}
     with open(info_path, "w") as fh:
         json.dump(info, fh, indent=1)
-    for c in (ckpt, ckpt_prev):
-        if os.path.exists(c):
+    for c in (ckpt, ckpt_prev, progress_path):
+        if os.path.isdir(c):
             shutil.rmtree(c)
+        elif os.path.exists(c):
+            os.remove(c)
     say(f"done: {system.step_number} steps, dump {P['out']}")
     return EXIT_DONE
 

@@ -115,7 +115,8 @@ YADE_ENTRY_POINTS = ("yade_scripts.launch.slurm.estimate", "yade_scripts.campaig
                      "yade_scripts.launch.batch.dump_of", "yade_scripts.launch.batch.run_batch", "yade_scripts.campaign.sweeps.run_front",
                      "yade_scripts.campaign.sweeps.write_table", "yade_scripts.yadeplugin.status",
                      "yade_scripts.yadeplugin.build", "yade_scripts.yadeplugin.environment")
-ENTRY_POINTS = SHAPES_ENTRY_POINTS + YADE_ENTRY_POINTS
+LMGC90_ENTRY_POINTS = ("lmgc90.study.estimate", "lmgc90.study.slurm_time")
+ENTRY_POINTS = SHAPES_ENTRY_POINTS + YADE_ENTRY_POINTS + LMGC90_ENTRY_POINTS
 
 
 @pytest.mark.parametrize("dotted", ENTRY_POINTS)

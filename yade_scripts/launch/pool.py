@@ -9,7 +9,8 @@ yade-batch runs it) or the folder's own scene (``line=None``). Every way of
 running runs goes through here: the study's single seeds
 (:func:`yade_scripts.campaign.study.run_samples`) and ensembles, sweeps
 (:func:`yade_scripts.launch.batch.run_batch`) and SLURM array tasks
-(:mod:`yade_scripts.launch.task`).
+(:mod:`yade_scripts.launch.task`), and the CD study's runs of the LMGC90
+scene (``lmgc90.study``: a job with its own ``command``, one thread).
 
 * **Every attempt kept.** Each attempt appends to the job's log (a header
   line ``==== attempt K ...`` first) and to the run's record
@@ -163,6 +164,16 @@ class Job:
     table : str
         The table ``line`` is in (default ``table.txt``, relative to
         ``folder``).
+    command : list of str, optional
+        The attempt's command instead of YADE (another scene that keeps the
+        same contract, :mod:`yade_scripts.runs.runstate`: its exit codes, the
+        dump and its companions, its checkpoint, the lock it takes over
+        from the pool; the CD scene ``python -m lmgc90.triaxial``); run in
+        ``folder``, the same command for every attempt (the scene resumes
+        itself from its checkpoint). ``threads`` is then the cores it holds.
+    prefix : str
+        The prefix of the scene's own lines in its log (default
+        :data:`SCENE`, the YADE scene's), the lines relayed.
 
     Attributes
     ----------
@@ -193,11 +204,14 @@ class Job:
     log: str = ""
     echo_all: bool = False
     table: str = "table.txt"
+    command: list = None
+    prefix: str = ""
     exits: list = field(default_factory=list)
     verdict: object = None
 
     def __post_init__(self):
         self.log = self.log or os.path.join(self.folder, f"triaxial.py.{self.description}.log")
+        self.prefix = self.prefix or SCENE
 
     @property
     def name(self):
@@ -392,8 +406,9 @@ class _Running:
             return []
         end = data.rfind(b"\n") + 1
         self.offset += end
-        return [x[len(SCENE):].strip() for x in data[:end].decode("utf-8", "replace").splitlines()
-                if x.startswith(SCENE)]
+        prefix = self.job.prefix
+        return [x[len(prefix):].strip() for x in data[:end].decode("utf-8", "replace").splitlines()
+                if x.startswith(prefix)]
 
 
 def _launch(job, threads, yade, number, note, own_session=False, lock=None):
@@ -406,9 +421,14 @@ def _launch(job, threads, yade, number, note, own_session=False, lock=None):
     if job.line is not None:
         env["YADE_BATCH"] = f"{job.table}:{job.line}"
     env["DISPLAY"] = ""
+    if job.command:
+        env.setdefault("OMP_NUM_THREADS", str(threads))
     where = checkpoint_position(job.dump)
     how = f"resumes from its checkpoint at step {where[0]} ({where[1]})" if where else "starts"
-    cmd = noremote.command(yade, ["-j", str(threads), "-n", "-x", "triaxial.py"])     # no remote servers
+    if job.command:
+        cmd = list(job.command)
+    else:
+        cmd = noremote.command(yade, ["-j", str(threads), "-n", "-x", "triaxial.py"])     # no remote servers
     offset = os.path.getsize(job.log) if os.path.exists(job.log) else 0
     with open(job.log, "a") as log:
         log.write(f"==== attempt {number} of {job.description}: {how}; {now_utc()} on {platform.node()}, "
@@ -454,7 +474,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     left is removed). Each attempt is ``YADE -j THREADS -n -x triaxial.py``
     in the job's folder (with ``YADE_BATCH=TABLE:LINE`` for a table line),
     its output appended to the job's log, and is recorded in the run's
-    ``STEM.attempts.json``; after it ends,
+    ``STEM.attempts.json`` (or the job's own ``command``); after it ends,
     :func:`yade_scripts.runs.runstate.judge` decides: done, resumed or failed.
 
     Parameters
@@ -510,7 +530,7 @@ def run_pool(jobs, cores, record=None, echo=print, yade=None, stopping=None, not
     Raises
     ------
     ConfigError
-        ``cores < 1``, or no ``yade`` executable.
+        ``cores < 1``, or no ``yade`` executable for a job without its own ``command``.
     yade_scripts.runs.runlock.RunBusy
         Another process holds the lock of one of the runs (one line naming
         it); nothing was touched.
@@ -617,7 +637,7 @@ def _run_pool(jobs, cores, record, echo, yade, stopping, note, max_resumes, afte
     if cores < 1:
         raise ConfigError(f"cores must be >= 1, got {cores}")
     yade = yade or shutil.which("yade")
-    if yade is None:
+    if yade is None and any(not job.command for job in jobs):
         raise ConfigError("yade is not installed (make installs Debian's yade)")
     locks = hold_runs(jobs, what="task" if (note or {}).get("slurm_job") else "run pool")
     for job in jobs:
