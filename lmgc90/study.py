@@ -55,16 +55,17 @@ import sys
 
 from lmgc90 import triaxial
 from postproc.errors import InputError
+from postproc.provenance import ANALYSIS_VERSION, code_hash, is_today
+from postproc.schema import DumpReader
 from postproc.study.manifest import read_manifest
 from yade_scripts.campaign.archive_store import _copy_run, _lock, _made_from, sha256_of
 from yade_scripts.campaign.runfolders import analysis_folder, whole
-from yade_scripts.campaign.study import (ARCHIVED, analyse_after, analyse_and_report, report_lock,
-                                         unusable_samples)
+from yade_scripts.campaign.study import analyse_after, analyse_and_report, report_lock, unusable_samples
 from yade_scripts.launch.pool import Job, run_pool
 from yade_scripts.launch.slurm import DEFAULT_REQUEUES, DEFAULT_SIGNAL_SECONDS, check_options
 from yade_scripts.launch.task import scontrol, slurm_job
 from yade_scripts.runs.runlock import RunBusy, RunLock, describe, run_holder
-from yade_scripts.runs.runstate import (EXIT_BUSY, EXIT_TERM, complete, has_checkpoint, mark_requeued,
+from yade_scripts.runs.runstate import (EXIT_BUSY, EXIT_TERM, complete, has_checkpoint, mark_requeued, state_of,
                                         task_requeues)
 from yade_scripts.scene.parameters import ConfigError
 
@@ -139,8 +140,6 @@ def source_state(dump):
     """What the cost and the shear rate need of a YADE dump: its grains'
     number, mean size (m), isotropic box height (m) and ``rate_shear``
     (1/s, or None)."""
-    from postproc.schema import DumpReader
-
     with DumpReader(dump) as r:
         rate = r.parameters.get("rate_shear")
         for k in range(len(r)):
@@ -378,9 +377,6 @@ def archive_runs(entries, dest, echo=print):
     left; one archived from another dump is never replaced (named). One
     process adds to ``dest`` at a time (its archive.lock). Returns
     (saved, skipped) lines."""
-    from postproc.provenance import ANALYSIS_VERSION, code_hash
-    from postproc.schema import DumpReader
-
     os.makedirs(dest, exist_ok=True)
     lock = _lock(dest, echo)
     saved, skipped = [], []
@@ -436,8 +432,6 @@ def from_archive(e, dest):
     """The archived record of the planned run ``e`` in ``dest`` when it can
     be used: the same parameters (:func:`differing` on its run.params.json),
     today's analysis version and every kept file as recorded; else None."""
-    from postproc.provenance import is_today
-
     into = os.path.join(dest, os.path.basename(e["folder"]))
     rec, stored = _read(os.path.join(into, ARCHIVE_RECORD)), _read(os.path.join(into, "run.params.json"))
     if not rec or not stored or differing(stored, e["params"]) or not is_today(rec):
@@ -466,8 +460,6 @@ def run_study(out, entries, jobs, figures=True, archive=None, collect=False):
     """Run (unless ``collect``) the planned runs that are not finished nor
     written by another process on ``jobs`` cores, analyse every finished
     one, write OUT/manifest.json and OUT/report/; returns the exit code."""
-    from yade_scripts.runs.runstate import state_of
-
     held = {}
     if archive:
         for e in entries:
@@ -557,13 +549,14 @@ def slurm_time(seconds, margin=SLURM_MARGIN):
 
 
 def write_slurm(out, entries, time=None, partition=None, requeues=DEFAULT_REQUEUES,
-                signal_seconds=DEFAULT_SIGNAL_SECONDS):
+                signal_seconds=DEFAULT_SIGNAL_SECONDS, figures=True):
     """Write OUT/slurm.sh, a job array of one task per run to do (not
     finished, not written by another process), and its plan
     OUT/:data:`SLURM_PLAN` (task K -> the run's folder, dump and command).
     The time limit is ``time`` or :func:`slurm_time` of the longest run's
-    :func:`estimate`. Returns the script's path, or None when there is no
-    run to do. ConfigError (one line) for bad options or a path with spaces."""
+    :func:`estimate`; ``figures=False``: the tasks' analyses without their
+    figures. Returns the script's path, or None when there is no run to
+    do. ConfigError (one line) for bad options or a path with spaces."""
     tasks = [e for e in entries if e["action"] in ("run", "resume", "set-aside")]
     if not tasks:
         return None
@@ -608,7 +601,7 @@ for f in "{ROOT}/lmgc90/study.py" "{out}/{SLURM_PLAN}" "{sys.executable}"; do
 done
 export PYTHONPATH="{ROOT}" OMP_NUM_THREADS=1
 cd "{ROOT}"
-exec "{sys.executable}" -m lmgc90.study --task "${{SLURM_ARRAY_TASK_ID:?not an array task}}" --out "{out}" --requeues {int(requeues)}
+exec "{sys.executable}" -m lmgc90.study --task "${{SLURM_ARRAY_TASK_ID:?not an array task}}" --out "{out}" --requeues {int(requeues)}{"" if figures else " --no-figures"}
 """
     path = os.path.join(out, "slurm.sh")
     with open(path, "w") as fh:
@@ -618,12 +611,12 @@ exec "{sys.executable}" -m lmgc90.study --task "${{SLURM_ARRAY_TASK_ID:?not an a
     return path
 
 
-def run_task(out, k, requeues=DEFAULT_REQUEUES):
+def run_task(out, k, requeues=DEFAULT_REQUEUES, figures=True):
     """``--task K``: task K of OUT/slurm.sh, its run through the pool (one
     core), analysed when it finishes; on SIGUSR1 (the time limit's warning)
     the scene checkpoints and the task requeues its job while it has
     requeued itself fewer than ``requeues`` times; on SIGTERM it stops
-    (resumable). Exit 0 done or requeued, 2 no such task, 3 failed, 4
+    (resumable). ``figures=False``: its analysis without figures. Exit 0 done or requeued, 2 no such task, 3 failed, 4
     another process writes the run, 75 stopped, not requeued."""
     try:
         with open(os.path.join(out, SLURM_PLAN)) as fh:
@@ -644,7 +637,7 @@ def run_task(out, k, requeues=DEFAULT_REQUEUES):
     try:
         status = run_pool([job], 1, echo=lambda m: print(m, flush=True), stopping=lambda: bool(flag),
                           note={"slurm_job": slurm} if slurm else None,
-                          after=functools.partial(analyse_after, counts=()))
+                          after=functools.partial(analyse_after, counts=(), figures=figures))
     except RunBusy as exc:
         say(f"refused: {exc}", err=True)
         return EXIT_BUSY
@@ -693,7 +686,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     out = os.path.abspath(args.out)
     if args.task is not None:
-        return run_task(out, args.task, args.requeues)
+        return run_task(out, args.task, args.requeues, figures=not args.no_figures)
     try:
         if not args.yade:
             raise ConfigError("--from YADE_STUDY is required")
@@ -710,7 +703,8 @@ def main(argv=None):
         return 0
     if args.slurm:
         try:
-            path = write_slurm(out, entries, args.slurm_time, args.slurm_partition, args.requeues)
+            path = write_slurm(out, entries, args.slurm_time, args.slurm_partition, args.requeues,
+                               figures=not args.no_figures)
         except ConfigError as exc:
             say(f"error: {exc}", err=True)
             return 2

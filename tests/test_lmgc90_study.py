@@ -243,7 +243,7 @@ def test_the_slurm_script_runs_one_task_per_run_to_do(cd_study, yade_study):
 
     out = cd_study[0]
     rc, so, se = study("--from", yade_study, "--out", out, "--seeds", 1, 2, 3, "--samples", "spheres", "--slurm",
-                       *TINY)
+                       "--no-figures", *TINY)
     assert rc == 0, se
     text = open(out / "slurm.sh").read()
     tasks = json.load(open(out / SLURM_PLAN))["tasks"]
@@ -254,7 +254,7 @@ def test_the_slurm_script_runs_one_task_per_run_to_do(cd_study, yade_study):
     for line in ("#SBATCH --array=1-1\n", "#SBATCH --signal=B:USR1@300\n", "#SBATCH --requeue\n",
                  f"#SBATCH --output={out}/slurm-%A_%a.out\n", "#SBATCH --cpus-per-task=1\n"):
         assert line in text
-    assert f'-m lmgc90.study --task "${{SLURM_ARRAY_TASK_ID:?not an array task}}" --out "{out}"' in text
+    assert f'-m lmgc90.study --task "${{SLURM_ARRAY_TASK_ID:?not an array task}}" --out "{out}" --requeues 10 --no-figures\n' in text
     assert subprocess.run(["bash", "-n", str(out / "slurm.sh")]).returncode == 0
     # a task by hand, as the script's comment says: it runs seed 3 and analyses it
     res = subprocess.run(["bash", str(out / "slurm.sh")], env={**os.environ, "SLURM_ARRAY_TASK_ID": "1"},
@@ -277,3 +277,28 @@ def test_the_cost_model_gives_the_measured_shear_steps():
     assert 2 * e["steps"] <= e["seconds"] <= 4 * e["steps"]
     assert estimate(400, 1e-3, 0.3, 0.2894)["seconds"] == 2 * e["seconds"]
     assert estimate(200, 5e-4, 0.3, 0.2894)["steps"] == ISOTROPIC_STEPS + 2 * e["shear_steps"]
+
+
+@needs_lmgc90
+def test_sigterm_reaches_the_runs_which_checkpoint(yade_study, tmp_path):
+    """The study stopped by SIGTERM stops its runs (each writes its checkpoint
+    and exits 75), exits 75 itself, and the next call resumes the run."""
+    out = tmp_path / "cd"
+    long = [a if not a.startswith("final_strain=") else "final_strain=0.3" for a in TINY]
+    proc = subprocess.Popen([sys.executable, "-m", "lmgc90.study", "--from", yade_study, "--out", str(out),
+                             "--seeds", "1", "--samples", "spheres", "--no-figures", *long], cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    progress = out / "spheres-seed1" / "run.progress.json"
+    t0 = time.time()
+    while not progress.exists() and proc.poll() is None and time.time() - t0 < 300:
+        time.sleep(0.05)
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGTERM)
+    text = proc.communicate(timeout=300)[0]
+    assert proc.returncode == 75, text
+    assert "[spheres] spheres-seed1: stopped on request (exit 75); it resumes from its checkpoint" in text
+    assert (out / "spheres-seed1" / "run.ckpt" / "scene.json").exists()
+    from yade_scripts.runs.runstate import complete
+    assert not complete(str(out / "spheres-seed1" / "run.h5"))
+    rc, so, se = study("--from", yade_study, "--out", out, "--seeds", 1, "--samples", "spheres", "--dry-run", *long)
+    assert rc == 0 and "spheres-seed1: unfinished, resumes from its checkpoint" in so, so + se

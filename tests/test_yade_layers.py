@@ -181,3 +181,63 @@ def test_the_checks_can_fail(bad, monkeypatch):
         monkeypatch.setattr(mod, "hidden_imports", lambda: [("launch.slurm", "launch.task")])
         with pytest.raises(AssertionError, match="inside functions"):
             test_no_import_of_our_own_hidden_in_a_function()
+
+
+# ------------------------------------------------------------------ the lmgc90 package
+#: lmgc90 sits above postproc, shapes and yade_scripts: it uses them, they never
+#: import it. Its scene and its parts take from yade_scripts only one run's
+#: machinery and the scene's draws (runs, scene); the CD study driver alone
+#: (lmgc90.study) runs its runs through the launchers and the study's
+#: analyses, manifest and archive (launch, campaign)
+LMGC90_LAUNCHERS = {"lmgc90.study"}
+
+
+def package_imports(package):
+    """{module of ``package``: {dotted module it imports, absolute (relative
+    imports resolved), at any depth}} (vendor/ and _build/ left out)."""
+    folder = os.path.join(ROOT, package)
+    out = {}
+    for dirpath, dirnames, names in os.walk(folder):
+        dirnames[:] = [d for d in dirnames if d not in ("_build", "vendor", "include", "__pycache__")]
+        pkg = [package] + [p for p in os.path.relpath(dirpath, folder).split(os.sep) if p != "."]
+        for name in sorted(names):
+            if not name.endswith(".py"):
+                continue
+            mod = ".".join(pkg + ([] if name == "__init__.py" else [name[:-3]]))
+            deps = set()
+            for node in ast.walk(ast.parse(open(os.path.join(dirpath, name)).read())):
+                if isinstance(node, ast.ImportFrom):
+                    base = pkg[:len(pkg) - (node.level - 1)] if node.level > 1 else pkg
+                    deps.add(".".join((base if node.level else []) + ([node.module] if node.module else [])))
+                elif isinstance(node, ast.Import):
+                    deps.update(a.name for a in node.names)
+            out[mod] = deps
+    return out
+
+
+def test_nothing_below_lmgc90_imports_it():
+    up = [(m, d) for p in ("postproc", "shapes", "yade_scripts") for m, deps in package_imports(p).items()
+          for d in deps if d == "lmgc90" or d.startswith("lmgc90.")]
+    assert not up, "imports of the lmgc90 package from below it: " + ", ".join(f"{m} -> {d}" for m, d in up)
+
+
+def test_only_the_cd_study_uses_the_launchers():
+    graph = package_imports("lmgc90")
+    assert LMGC90_LAUNCHERS <= set(graph), "lmgc90 modules named in LMGC90_LAUNCHERS that do not exist"
+    wide = [(m, d) for m, deps in graph.items() if m not in LMGC90_LAUNCHERS for d in deps
+            if d.split(".")[:2] in (["yade_scripts", "launch"], ["yade_scripts", "campaign"])]
+    assert not wide, "lmgc90 modules using the launchers or the campaign: " + ", ".join(f"{m} -> {d}"
+                                                                                        for m, d in wide)
+
+
+def test_the_lmgc90_checks_can_fail(monkeypatch, tmp_path):
+    """An import of lmgc90 from below and a launcher used by the scene are caught."""
+    mod = __import__(__name__)
+    real = package_imports
+    monkeypatch.setattr(mod, "package_imports", lambda p: {**real(p), **(
+        {"postproc.x": {"lmgc90.study"}} if p == "postproc" else
+        {"lmgc90.triaxial": {"yade_scripts.launch.pool"}} if p == "lmgc90" else {})})
+    with pytest.raises(AssertionError, match="from below"):
+        test_nothing_below_lmgc90_imports_it()
+    with pytest.raises(AssertionError, match="using the launchers"):
+        test_only_the_cd_study_uses_the_launchers()
