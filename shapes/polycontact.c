@@ -1428,6 +1428,26 @@ void pc_engine_free(engine_t *E) {
 
 static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shape[b]]; }
 
+/* List the pair (i, j), i < j, at the end of the new list (E->spare, *np
+ * pairs so far) when their bounding spheres (ri: body i's radius) come
+ * within the skin of each other; returns 0, or -1 when memory could not be
+ * had. */
+static int list_pair(engine_t *E, int i, int j, double ri, int *np) {
+    double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+    double reach = ri + body_radius(E, j) + E->skin;
+    if (dot3(d, d) > reach * reach) return 0;
+    if (*np >= E->cap_spare) {
+        int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
+        pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
+        if (!s) return -1;
+        E->spare = s; E->cap_spare = nc2;
+    }
+    pair_t *p = E->spare + (*np)++;
+    memset(p, 0, sizeof(*p));
+    p->i = i; p->j = j;
+    return 0;
+}
+
 /* cell-grid neighbour search on bounding spheres with margin skin; keeps the
  * history of pairs present in the old list (both lists sorted by (i, j)) */
 static int rebuild(engine_t *E) {
@@ -1502,18 +1522,7 @@ static int rebuild(engine_t *E) {
         for (int q = 0; q < (large[i] ? nb - i - 1 : nlarge); q++) {
             int j = large[i] ? i + 1 + q : biglist[q];
             if (j <= i) continue;
-            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
-            double reach = ri + body_radius(E, j) + E->skin;
-            if (dot3(d, d) > reach * reach) continue;
-            if (np >= E->cap_spare) {
-                int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
-                pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
-                if (!s) { free(cidx); free(large); free(biglist); return -1; }
-                E->spare = s; E->cap_spare = nc2;
-            }
-            pair_t *p = E->spare + np++;
-            memset(p, 0, sizeof(*p));
-            p->i = i; p->j = j;
+            if (list_pair(E, i, j, ri, &np)) { free(cidx); free(large); free(biglist); return -1; }
         }
         if (large[i]) continue;             /* its partners are listed, in order */
         for (int dx = -1; dx <= 1; dx++) for (int dy = -1; dy <= 1; dy++) for (int dz = -1; dz <= 1; dz++) {
@@ -1521,18 +1530,7 @@ static int rebuild(engine_t *E) {
             if (a < 0 || b2 < 0 || c2 < 0 || a >= nc[0] || b2 >= nc[1] || c2 >= nc[2]) continue;
             for (int j = E->cellhead[((long)a * nc[1] + b2) * nc[2] + c2]; j >= 0; j = E->cellnext[j]) {
                 if (j <= i) continue;
-                double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
-                double reach = ri + body_radius(E, j) + E->skin;
-                if (dot3(d, d) > reach * reach) continue;
-                if (np >= E->cap_spare) {
-                    int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
-                    pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
-                    if (!s) { free(cidx); free(large); free(biglist); return -1; }
-                    E->spare = s; E->cap_spare = nc2;
-                }
-                pair_t *p = E->spare + np++;
-                memset(p, 0, sizeof(*p));
-                p->i = i; p->j = j;
+                if (list_pair(E, i, j, ri, &np)) { free(cidx); free(large); free(biglist); return -1; }
             }
         }
         /* sort this i's partners by j (insertion sort: few) */
