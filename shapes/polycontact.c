@@ -42,6 +42,7 @@
 #define PC_OK 0
 #define PC_DEGENERATE_NORMAL 1   /* |S_A| ~ 0: normal from the centres (or z) */
 #define PC_WORKSPACE 2           /* workspace overflow (should not happen)    */
+#define PC_MASK_WORDS 4          /* words of a face's vertex set (shapes of up to 256 vertices) */
 #define PC_HASH 256              /* slots of a cut's crossing-edge table (a power of two) */
 #define PC_PARALLEL_MIN 400      /* pairs + body-wall tests below which a step runs on one thread
                                   * (POLYCONTACT_PARALLEL_MIN overrides it when an engine is made:
@@ -87,6 +88,8 @@ typedef struct {
     const double *box;  /* local bounding box lo[3], hi[3], or NULL */
     const unsigned char *dup;  /* per triangle: 1 if its plane repeats an earlier triangle's, or NULL */
     double off[3];      /* position of the local origin in the frame */
+    const uint64_t *pmask;     /* per triangle: PC_MASK_WORDS words, the vertices of its plane's whole face
+                                * (every triangle of that plane); NULL for a shape without coplanar triangles */
 } posed_t;
 
 /* ------------------------------------------------------------------ clipping workspace */
@@ -658,8 +661,44 @@ static int common_edge(const int *t, int a, int b, int *u, int *v) {
     return 1;
 }
 
+/* The same on a shape with coplanar triangles, whose cuts are by planes
+ * (one triangle of each, the others skipped as duplicates): the vertex on
+ * every plane of tri[0..n), or the edge on both planes a and b, from the
+ * vertex sets of the planes' whole faces (pmask), or -1 / 0 when not one. */
+static int plane_vertex(const uint64_t *pmask, const int *tri, int n) {
+    int found = -1;
+    for (int q = 0; q < PC_MASK_WORDS; q++) {
+        uint64_t m = pmask[PC_MASK_WORDS * tri[0] + q];
+        for (int k = 1; k < n; k++) m &= pmask[PC_MASK_WORDS * tri[k] + q];
+        if (!m) continue;
+        if (found >= 0 || (m & (m - 1))) return -1;
+        found = 64 * q + __builtin_ctzll(m);
+    }
+    return found;
+}
+
+static int plane_edge(const uint64_t *pmask, int a, int b, int *u, int *v) {
+    int e[2], m = 0;
+    for (int q = 0; q < PC_MASK_WORDS; q++) {
+        uint64_t x = pmask[PC_MASK_WORDS * a + q] & pmask[PC_MASK_WORDS * b + q];
+        while (x) {
+            if (m == 2) return 0;
+            e[m++] = 64 * q + __builtin_ctzll(x);
+            x &= x - 1;
+        }
+    }
+    if (m != 2) return 0;
+    *u = e[0]; *v = e[1];
+    return 1;
+}
+
 /* Label mesh buf (A n B after the cuts) for the next step: each vertex by
- * the planes of the faces around it. */
+ * the planes of the faces around it. A's faces are its triangles (pieces of
+ * them), coplanar ones included: a point cut on the diagonal two coplanar
+ * triangles share lies on that segment of A, and is labelled by it. B's
+ * faces are its planes (the cuts skip a plane's other triangles), whose
+ * vertices and edges are looked up on the planes' whole faces when B has
+ * coplanar triangles. */
 static void keep_structure(const work_t *w, int buf, const posed_t *A, const posed_t *B, keep_t *K) {
     K->ok = 0;
     int nv = w->mnv[buf], nf = w->mnf[buf], ntA = A->nt;
@@ -669,7 +708,7 @@ static void keep_structure(const work_t *w, int buf, const posed_t *A, const pos
     memset(ninc, 0, sizeof(ninc));
     for (int f = 0; f < nf; f++) {
         if (ft[f] < 0 || fc[f] < 3) return;
-        if ((ft[f] < ntA ? A->dup && A->dup[ft[f]] : B->dup && B->dup[ft[f] - ntA])) return;
+        if (ft[f] >= ntA && B->dup && B->dup[ft[f] - ntA]) return;   /* not a cut's plane (never: they skip these) */
         for (int i = 0; i < fc[f]; i++) {
             int v = fi[fs[f] + i];
             if (ninc[v] == 8) return;
@@ -686,13 +725,13 @@ static void keep_structure(const work_t *w, int buf, const posed_t *A, const pos
             if ((x = common_vertex(A->t, ta, na)) < 0) return;
             K->vt[v] = KV_A; K->va[v] = (unsigned char)x;
         } else if (na == 0 && nb >= 3) {
-            if ((x = common_vertex(B->t, tb, nb)) < 0) return;
+            if ((x = B->pmask ? plane_vertex(B->pmask, tb, nb) : common_vertex(B->t, tb, nb)) < 0) return;
             K->vt[v] = KV_B; K->va[v] = (unsigned char)x;
         } else if (na == 2 && nb == 1) {
             if (!common_edge(A->t, ta[0], ta[1], &x, &y)) return;
             K->vt[v] = KV_AEDGE; K->va[v] = (unsigned char)x; K->vb[v] = (unsigned char)y; K->vp[v] = (unsigned char)tb[0];
         } else if (na == 1 && nb == 2) {
-            if (!common_edge(B->t, tb[0], tb[1], &x, &y)) return;
+            if (!(B->pmask ? plane_edge(B->pmask, tb[0], tb[1], &x, &y) : common_edge(B->t, tb[0], tb[1], &x, &y))) return;
             K->vt[v] = KV_BEDGE; K->va[v] = (unsigned char)x; K->vb[v] = (unsigned char)y; K->vp[v] = (unsigned char)ta[0];
         } else {
             return;                                               /* four planes or more at a point: degenerate */
@@ -758,6 +797,7 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         double r = sqrt(rg[g]) * (1 + 1e-12) + 1e-300;
         if (ng[g] == 0) continue;
         for (int k = 0; k < P->nt; k++) {
+            if (P->dup && P->dup[k]) continue;                     /* the plane of an earlier triangle, as in the cuts */
             const double *n = P->n + 3 * k;
             double h = P->h[k];
             if (dot3(n, sc) - h + r <= eps) continue;
@@ -1080,6 +1120,8 @@ typedef struct {
     double *radius;             /* bounding radius about the local origin */
     double *box;                /* local bounding box per shape: lo[3], hi[3] */
     unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
+    uint64_t *pmask;            /* per triangle: PC_MASK_WORDS words, the vertices of its plane's face */
+    unsigned char *hasdup;      /* per shape: it has coplanar triangles (and at most 64 PC_MASK_WORDS vertices) */
     int max_t, max_v;
 } table_t;
 
@@ -1091,7 +1133,9 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->radius = malloc(sizeof(double) * (ns + 1));
     T->box = malloc(sizeof(double) * 6 * (ns + 1));
     T->dup = calloc(ntot + 1, 1);
-    if (!T->n || !T->h || !T->radius || !T->box || !T->dup) return -1;
+    T->pmask = calloc((size_t)PC_MASK_WORDS * (ntot + 1), sizeof(uint64_t));
+    T->hasdup = calloc(ns + 1, 1);
+    if (!T->n || !T->h || !T->radius || !T->box || !T->dup || !T->pmask || !T->hasdup) return -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
@@ -1130,10 +1174,28 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
                 }
             }
         }
+        /* a shape with coplanar triangles: each triangle's face, the vertices of every triangle of its plane
+         * (the test above, against each earlier triangle, so that both members of a pair see each other) */
+        int anydup = 0;
+        for (int f = 0; f < nt; f++) anydup |= T->dup[toff[s] + f];
+        if (!anydup || nv > 64 * PC_MASK_WORDS) continue;
+        T->hasdup[s] = 1;
+        for (int f = 0; f < nt; f++) {
+            const double *Nf = T->n + 3 * (toff[s] + f);
+            uint64_t *mf = T->pmask + (size_t)PC_MASK_WORDS * (toff[s] + f);
+            for (int g = 0; g < nt; g++) {
+                const double *M = T->n + 3 * (toff[s] + g);
+                if (g != f && !(dot3(M, Nf) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r)) continue;
+                const int *tri = t + 3 * (toff[s] + g);
+                for (int c = 0; c < 3; c++) mf[tri[c] >> 6] |= (uint64_t)1 << (tri[c] & 63);
+            }
+        }
     }
     return 0;
 }
-static void table_free(table_t *T) { free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); }
+static void table_free(table_t *T) {
+    free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->pmask); free(T->hasdup);
+}
 
 /* pose shape s: rotated vertices (+ offset), rotated normals, offsets */
 static void pose_shape(const table_t *T, int s, const double *R, const double *off,
@@ -1149,6 +1211,7 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
     }
     P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
     P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
+    P->pmask = T->hasdup[s] ? T->pmask + (size_t)PC_MASK_WORDS * t0 : NULL;
     P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
 }
 
@@ -1428,6 +1491,26 @@ void pc_engine_free(engine_t *E) {
 
 static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shape[b]]; }
 
+/* List the pair (i, j), i < j, at the end of the new list (E->spare, *np
+ * pairs so far) when their bounding spheres (ri: body i's radius) come
+ * within the skin of each other; returns 0, or -1 when memory could not be
+ * had. */
+static int list_pair(engine_t *E, int i, int j, double ri, int *np) {
+    double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
+    double reach = ri + body_radius(E, j) + E->skin;
+    if (dot3(d, d) > reach * reach) return 0;
+    if (*np >= E->cap_spare) {
+        int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
+        pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
+        if (!s) return -1;
+        E->spare = s; E->cap_spare = nc2;
+    }
+    pair_t *p = E->spare + (*np)++;
+    memset(p, 0, sizeof(*p));
+    p->i = i; p->j = j;
+    return 0;
+}
+
 /* cell-grid neighbour search on bounding spheres with margin skin; keeps the
  * history of pairs present in the old list (both lists sorted by (i, j)) */
 static int rebuild(engine_t *E) {
@@ -1502,18 +1585,7 @@ static int rebuild(engine_t *E) {
         for (int q = 0; q < (large[i] ? nb - i - 1 : nlarge); q++) {
             int j = large[i] ? i + 1 + q : biglist[q];
             if (j <= i) continue;
-            double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
-            double reach = ri + body_radius(E, j) + E->skin;
-            if (dot3(d, d) > reach * reach) continue;
-            if (np >= E->cap_spare) {
-                int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
-                pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
-                if (!s) { free(cidx); free(large); free(biglist); return -1; }
-                E->spare = s; E->cap_spare = nc2;
-            }
-            pair_t *p = E->spare + np++;
-            memset(p, 0, sizeof(*p));
-            p->i = i; p->j = j;
+            if (list_pair(E, i, j, ri, &np)) { free(cidx); free(large); free(biglist); return -1; }
         }
         if (large[i]) continue;             /* its partners are listed, in order */
         for (int dx = -1; dx <= 1; dx++) for (int dy = -1; dy <= 1; dy++) for (int dz = -1; dz <= 1; dz++) {
@@ -1521,18 +1593,7 @@ static int rebuild(engine_t *E) {
             if (a < 0 || b2 < 0 || c2 < 0 || a >= nc[0] || b2 >= nc[1] || c2 >= nc[2]) continue;
             for (int j = E->cellhead[((long)a * nc[1] + b2) * nc[2] + c2]; j >= 0; j = E->cellnext[j]) {
                 if (j <= i) continue;
-                double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
-                double reach = ri + body_radius(E, j) + E->skin;
-                if (dot3(d, d) > reach * reach) continue;
-                if (np >= E->cap_spare) {
-                    int nc2 = E->cap_spare ? 2 * E->cap_spare : 1024;
-                    pair_t *s = realloc(E->spare, sizeof(pair_t) * nc2);
-                    if (!s) { free(cidx); free(large); free(biglist); return -1; }
-                    E->spare = s; E->cap_spare = nc2;
-                }
-                pair_t *p = E->spare + np++;
-                memset(p, 0, sizeof(*p));
-                p->i = i; p->j = j;
+                if (list_pair(E, i, j, ri, &np)) { free(cidx); free(large); free(biglist); return -1; }
             }
         }
         /* sort this i's partners by j (insertion sort: few) */
@@ -1702,9 +1763,11 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     const double *nj = E->rn + 3 * E->toffb[j];
     for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     posed_t pa = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
-                  E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0}};
+                  E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0},
+                  E->T.hasdup[E->shape[i]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[i]] : NULL};
     posed_t pb = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
-                  E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]}};
+                  E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]},
+                  E->T.hasdup[E->shape[j]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[j]] : NULL};
     *A = pa; *B = pb;
 }
 

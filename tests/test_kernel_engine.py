@@ -575,6 +575,58 @@ def test_kept_structures_never_outlive_their_validity():
     assert contacts > 1000 and kept > 500 and broken > 100
 
 
+def prism(n, radius, height):
+    """A right prism on a regular n-gon: its two n-gon faces fanned into
+    n - 2 triangles each and its sides split in two, so that every face is
+    several coplanar triangles (as YADE's polyhedra, whose polygonal faces
+    come triangulated)."""
+    a = 2 * np.pi * np.arange(n) / n
+    ring = np.stack([radius * np.cos(a), radius * np.sin(a)], 1)
+    v = np.vstack([np.c_[ring, np.full(n, -height / 2)], np.c_[ring, np.full(n, height / 2)]])
+    t = [[0, k + 1, k] for k in range(1, n - 1)] + [[n, n + k, n + k + 1] for k in range(1, n - 1)]
+    for k in range(n):
+        m = (k + 1) % n
+        t += [[k, m, n + m], [k, n + m, n + k]]
+    return v, np.array(t)
+
+
+def test_kept_structures_of_shapes_with_coplanar_triangles():
+    """Pairs of prisms (five-, six- and eight-sided) and cubes, whose faces
+    are each two triangles or more, pushed together as above: the fast engine reuses
+    their face structure too (the cuts take a plane once, the structure
+    looks its vertices and edges up on the planes' whole faces), and its
+    contacts and volumes are the one-pair geometry's at every step."""
+    cv, ct = cube()
+    split = [prism(5, 0.5, 0.7), prism(6, 0.45, 0.9), prism(8, 0.5, 0.6), (0.8 * cv, ct)]
+    rng = np.random.default_rng(3)
+    kept = contacts = 0
+    for trial in range(40):
+        a, b = rng.integers(len(split), size=2)
+        verts, tris = [split[a][0], split[b][0]], [split[a][1], split[b][1]]
+        sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
+        eng = ContactEngine(verts, tris, np.arange(2), sizes, K_V, KT_COEF, MU, 0.0, 0.5, walls=False, threads=1)
+        table = ShapeTable(list(zip(verts, tris)))
+        u = rng.normal(size=3)
+        u /= np.linalg.norm(u)
+        x = 0.55 * u * rng.uniform(0.8, 1.0)
+        q = np.roll(Rotation.random(2, random_state=rng).as_quat(), 1, axis=1)
+        amp, turn = 10 ** rng.uniform(-6, -2.5), 10 ** rng.uniform(-6, -2)
+        for k in range(25):
+            x = x + rng.normal(scale=amp, size=3) - 0.3 * amp * u - 2e-3 * u
+            q[1] = np.roll((Rotation.from_rotvec(rng.normal(scale=turn, size=3))
+                            * Rotation.from_quat(np.roll(q[1], -1))).as_quat(), 1)
+            pos = np.array([[0.0, 0.0, 0.0], x])
+            eng.step(pos, q)
+            c = eng.contacts()
+            ref = batch_overlap(table, np.array([0]), pos[:1], q[:1], np.array([1]), pos[1:], q[1:], threads=1)
+            assert len(c["i"]) == int(ref["volume"][0] > 0)
+            if len(c["i"]):
+                contacts += 1
+                np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
+            kept += eng.stats["structure_kept"]
+    assert contacts > 300 and kept > 0.5 * contacts
+
+
 def test_a_closed_engine_refuses_every_call_in_one_line():
     """After close() (or a second close(), which does nothing) each method
     raises EngineError instead of handing the C side a freed engine."""

@@ -42,6 +42,8 @@
 #include <core/State.hpp>
 #include <lib/factory/ClassFactory.hpp>
 
+#include "kernel_step.hpp"
+
 #include <Python.h>
 #include <chrono>
 #include <cmath>
@@ -63,12 +65,11 @@ namespace yade {
 static_assert(sizeof(Interaction) == PKE_SIZEOF_Interaction, "sizeof(Interaction) differs from the installed YADE's");
 static_assert(sizeof(InteractionContainer) == PKE_SIZEOF_InteractionContainer, "sizeof(InteractionContainer) differs from the installed YADE's");
 
-typedef int (*pce_step_fn)(void*, const double*, const double*, const double*, double*, double*, double*, double*);
 typedef int (*pce_count_fn)(const void*);
 typedef int (*pce_contacts_fn)(void*, int, int*, int*, double*, double*, double*, double*, double*);
 
 class PolyhedraContactEngine : public GlobalEngine {
-	pce_step_fn     stepFn { nullptr };
+	pke::StepFn     stepFn { nullptr };
 	pce_count_fn    countFn { nullptr };
 	pce_contacts_fn contactsFn { nullptr };
 	void*           kernel { nullptr };
@@ -272,7 +273,7 @@ public:
 		void* k = dlsym(h, "pc_engine_contacts_noshadow");
 		dlclose(h);
 		if (!s || !c || !k) throw std::invalid_argument("PolyhedraContactEngine.bind: " + lib + " lacks pc_engine_step, pc_engine_count or pc_engine_contacts_noshadow");
-		stepFn       = reinterpret_cast<pce_step_fn>(s);
+		stepFn       = reinterpret_cast<pke::StepFn>(s);
 		countFn      = reinterpret_cast<pce_count_fn>(c);
 		contactsFn   = reinterpret_cast<pce_contacts_fn>(k);
 		kernel       = reinterpret_cast<void*>(engine);
@@ -330,7 +331,6 @@ public:
 
 	void action() override
 	{
-		using clock = std::chrono::steady_clock;
 		if (scanning) return;
 		if (idle && !bodiesChanged()) return;
 		if (!kernel || bodiesChanged()) {
@@ -342,7 +342,7 @@ public:
 			}
 		}
 		error              = 0;
-		const auto     t0  = clock::now();
+		const auto     t0  = pke::Clock::now();
 		BodyContainer& B   = *scene->bodies;
 		const size_t   n   = ids.size();
 		for (size_t k = 0; k < n; k++) {
@@ -364,30 +364,16 @@ public:
 				return;
 			}
 		}
-		const auto t1  = clock::now();
-		const int  err = stepFn(kernel, posBuf, quatBuf, wallPosBuf, forceBuf, torqueBuf, wallForceBuf, statBuf);
-		const auto t2  = clock::now();
-		if (err) {
-			error = err;
+		// a wall's force added only when it is not zero
+		const pke::StepResult r = pke::stepAndAdd(stepFn, kernel, posBuf, quatBuf, wallPosBuf, forceBuf, torqueBuf, wallForceBuf, statBuf, ids,
+		                                          walls, false, scene);
+		if (r.err) {
+			error = r.err;
 			return;
 		}
-		ForceContainer& F = scene->forces;
-		for (size_t k = 0; k < n; k++) {
-			const double* f = forceBuf + 3 * k;
-			const double* t = torqueBuf + 3 * k;
-			if (f[0] != 0 || f[1] != 0 || f[2] != 0 || t[0] != 0 || t[1] != 0 || t[2] != 0) {
-				F.addForce(ids[k], Vector3r(f[0], f[1], f[2]));
-				F.addTorque(ids[k], Vector3r(t[0], t[1], t[2]));
-			}
-		}
-		for (size_t k = 0; k < walls.size(); k++) {
-			const double* f = wallForceBuf + 3 * k;
-			if (f[0] != 0 || f[1] != 0 || f[2] != 0) F.addForce(walls[k], Vector3r(f[0], f[1], f[2]));
-		}
-		const auto t3 = clock::now();
-		counters[0] += std::chrono::duration<double>(t1 - t0).count();
-		counters[1] += std::chrono::duration<double>(t2 - t1).count();
-		counters[2] += std::chrono::duration<double>(t3 - t2).count();
+		counters[0] += pke::seconds(t0, r.called);
+		counters[1] += pke::seconds(r.called, r.stepped);
+		counters[2] += pke::seconds(r.stepped, r.added);
 		counters[4] += 1;
 		if (fillEvery > 0 && scene->iter % fillEvery == 0 && geomOffsets.size() == 3 && physOffsets.size() == 5) fill();
 	}

@@ -5,7 +5,7 @@
 // is given (State::pos, State::ori) and the positions of the six box walls,
 // calls the kernel's pc_engine_step once, and adds each body's contact force
 // and torque to Scene::forces: the same reads, the same kernel call and the
-// same additions as the PyRunner of yade_scripts/kernel_contacts.py, without
+// same additions as the PyRunner of yade_scripts/scene/kernel_contacts.py, without
 // leaving C++.
 //
 // The kernel itself is not linked in: bind() takes the kernel library that
@@ -29,6 +29,8 @@
 #include <core/GlobalEngine.hpp>
 #include <core/Scene.hpp>
 #include <core/State.hpp>
+
+#include "kernel_step.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -55,10 +57,8 @@ static_assert(sizeof(BodyContainer) == PKE_SIZEOF_BodyContainer, "sizeof(BodyCon
 static_assert(sizeof(Engine) == PKE_SIZEOF_Engine, "sizeof(Engine) differs from the installed YADE's");
 static_assert(sizeof(GlobalEngine) == PKE_SIZEOF_GlobalEngine, "sizeof(GlobalEngine) differs from the installed YADE's");
 
-typedef int (*pc_engine_step_fn)(void*, const double*, const double*, const double*, double*, double*, double*, double*);
-
 class PolyhedraKernelEngine : public GlobalEngine {
-	pc_engine_step_fn stepFn { nullptr };
+	pke::StepFn       stepFn { nullptr };
 	void*             kernel { nullptr };
 	double*           posBuf { nullptr };    // (N, 3) m
 	double*           quatBuf { nullptr };   // (N, 4) w, x, y, z
@@ -97,7 +97,7 @@ public:
 		void* f = dlsym(h, "pc_engine_step");
 		dlclose(h); // drops only the reference taken here; Python's keeps it loaded
 		if (!f) throw std::invalid_argument("PolyhedraKernelEngine.bind: " + lib + " has no pc_engine_step");
-		stepFn       = reinterpret_cast<pc_engine_step_fn>(f);
+		stepFn       = reinterpret_cast<pke::StepFn>(f);
 		kernel       = reinterpret_cast<void*>(engine);
 		posBuf       = ptr(pos);
 		quatBuf      = ptr(quat);
@@ -125,13 +125,12 @@ public:
 
 	void action() override
 	{
-		using clock = std::chrono::steady_clock;
 		if (!kernel) {
 			error = -10;
 			return;
 		}
 		error                 = 0;
-		const auto      t0    = clock::now();
+		const auto      t0    = pke::Clock::now();
 		BodyContainer&  B     = *scene->bodies;
 		const long      nBody = (long)B.size();
 		const size_t    n     = ids.size();
@@ -167,38 +166,23 @@ public:
 				error = -12;
 				return;
 			}
-		const auto t1  = clock::now();
-		const int  err = stepFn(kernel, posBuf, quatBuf, wallPosBuf, forceBuf, torqueBuf, wallForceBuf, statBuf);
-		const auto t2  = clock::now();
-		if (err) {
-			error = err;
+		// every wall's force added, zero or not, as on the PyRunner path
+		const pke::StepResult r = pke::stepAndAdd(stepFn, kernel, posBuf, quatBuf, wallPosBuf, forceBuf, torqueBuf, wallForceBuf, statBuf, ids,
+		                                          walls, true, scene);
+		if (r.err) {
+			error = r.err;
 			return;
 		}
-		ForceContainer& F = scene->forces;
-		for (size_t k = 0; k < n; k++) {
-			const double* f = forceBuf + 3 * k;
-			const double* t = torqueBuf + 3 * k;
-			// the bodies the PyRunner path touches: a non-zero force or torque
-			if (f[0] != 0 || f[1] != 0 || f[2] != 0 || t[0] != 0 || t[1] != 0 || t[2] != 0) {
-				F.addForce(ids[k], Vector3r(f[0], f[1], f[2]));
-				F.addTorque(ids[k], Vector3r(t[0], t[1], t[2]));
-			}
-		}
-		for (size_t k = 0; k < walls.size(); k++) {
-			const double* f = wallForceBuf + 3 * k;
-			F.addForce(walls[k], Vector3r(f[0], f[1], f[2]));
-		}
-		const auto t3 = clock::now();
-		counterBuf[0] += std::chrono::duration<double>(t1 - t0).count();
-		counterBuf[1] += std::chrono::duration<double>(t2 - t1).count();
-		counterBuf[2] += std::chrono::duration<double>(t3 - t2).count();
+		counterBuf[0] += pke::seconds(t0, r.called);
+		counterBuf[1] += pke::seconds(r.called, r.stepped);
+		counterBuf[2] += pke::seconds(r.stepped, r.added);
 		counterBuf[3] += 1;
 		counterBuf[4] += statBuf[statA] + statBuf[statB];
 	}
 
 	// clang-format off
 	YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY(PolyhedraKernelEngine, GlobalEngine,
-		"Polyhedra contacts of the compiled kernel (shapes/polycontact.c) inside YADE's step: reads the poses of :yref:`ids` and the positions of :yref:`walls`, steps the kernel that :yref:`bind` names, adds the contact forces and torques. Place it between ForceResetter and NewtonIntegrator; yade_scripts.kernel_contacts.KernelContacts builds and binds it. It is not saved with the scene (O.save raises unregistered class): checkpoints hold its PyRunner form.",
+		"Polyhedra contacts of the compiled kernel (shapes/polycontact.c) inside YADE's step: reads the poses of :yref:`ids` and the positions of :yref:`walls`, steps the kernel that :yref:`bind` names, adds the contact forces and torques. Place it between ForceResetter and NewtonIntegrator; yade_scripts.scene.kernel_contacts.KernelContacts builds and binds it. It is not saved with the scene (O.save raises unregistered class): checkpoints hold its PyRunner form.",
 		((vector<int>, ids, , , "Body ids of the polyhedra, in the kernel's row order."))
 		((vector<int>, walls, , , "Body ids of the six walls (x-, x+, y-, y+, z-, z+), or none."))
 		((int, error, 0, (Attr::readonly | Attr::noSave), "0 after a good step; else why the last step stopped before adding forces: the kernel's code (-2 positions not finite, -4 workspace overflow, -5 an orientation quaternion zero, not finite or out of range, other: out of memory), -10 not bound, -11 a body id that is not a body of the scene, -12 bad wall positions."))
@@ -220,9 +204,9 @@ public:
 // corruption", exit -6), whether the plugin stepped or not; without it such a
 // process exits cleanly when the plugin did not step, and one whose plugin
 // stepped still sometimes aborts there, which the scene avoids by ending
-// with yade_scripts/attempt.py's leave (os._exit once all is written). The
+// with yade_scripts/runs/attempt.py's leave (os._exit once all is written). The
 // engine is never saved: a checkpoint swaps in its PyRunner form first
-// (KernelContacts.portable, yade_scripts/kernel_contacts.py), and O.save of a
+// (KernelContacts.portable, yade_scripts/scene/kernel_contacts.py), and O.save of a
 // scene that holds it raises "unregistered class".
 REGISTER_FACTORABLE(PolyhedraKernelEngine);
 

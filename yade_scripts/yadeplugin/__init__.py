@@ -61,6 +61,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.join(HERE, "PolyhedraKernelEngine.cpp")
 #: the engine for a user's own scene (yade_scripts.yadeplugin.contacts), built into the same library
 USER_SOURCE = os.path.join(HERE, "PolyhedraContactEngine.cpp")
+#: the kernel's step and the addition of its forces, shared by the two engines
+SHARED_HEADER = os.path.join(HERE, "kernel_step.hpp")
 INCLUDE = os.path.join(HERE, "include")
 PROBE_SCENE = os.path.join(HERE, "probe_scene.py")
 CLASS_NAME = "PolyhedraKernelEngine"
@@ -251,7 +253,7 @@ def source_files(here=HERE):
     heads = sorted(glob.glob(os.path.join(here, "include", "**", "*.hpp"), recursive=True))
     # a run folder's copy made before the user-scene engine existed holds only the first
     # source: its hash is over what it holds, as it was computed when it was made
-    sources = [os.path.join(here, os.path.basename(f)) for f in (SOURCE, USER_SOURCE)]
+    sources = [os.path.join(here, os.path.basename(f)) for f in (SOURCE, USER_SOURCE, SHARED_HEADER)]
     return [f for f in sources if f == sources[0] or os.path.exists(f)] + heads
 
 
