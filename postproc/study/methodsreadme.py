@@ -56,17 +56,15 @@ def table(result):
         st = result["studies"][m]
         n = "/".join(str(st["samples"][s]["usable"]) for s in ("polyhedra", "spheres"))
         seeds.append(f"{m} S1/S2 seeds {n} ({st['note']})")
-    paper = "/".join(f"{x:.2f}" for x in result["paper_types"])
     lines = ["; ".join(seeds) + ".", "",
              "| claim | paper | YADE | CD |", "|---|---|---|---|"]
     for c in result["claims"]:
         lines.append(f"| {c['id']} | {c['paper']} | {c['YADE']['verdict']} | {c['CD']['verdict']} |")
-    lines += ["", f"| method | count | simple | double | triple | claim 6 |", "|---|---|---|---|---|---|",
-              f"| paper | – | " + " | ".join(f"{x:.2f}" for x in result["paper_types"]) + " | – |"]
+    lines += ["", "| method | count | simple | double | triple | claim 6 |", "|---|---|---|---|---|---|",
+              "| paper | – | " + " | ".join(f"{x:.2f}" for x in result["paper_types"]) + " | – |"]
     for r in result["types"]:
         last = r["claim6"] if r["claim6"] else f"– ({r['reason']})"
         lines.append(f"| {r['method']} | {r['count']} | " + " | ".join(_iv(r[g]) for g in GROUPS) + f" | {last} |")
-    del paper
     return [line.replace("-0.", "−0.") for line in lines]
 
 
