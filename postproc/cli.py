@@ -190,6 +190,30 @@ def _results(args):
     return 0
 
 
+def _methods_arguments(cm):
+    cm.add_argument("yade_study", help="the YADE study folder (its manifest.json and analyses)")
+    cm.add_argument("cd_study", help="the Contact Dynamics study folder, of the same grains and starting states")
+    cm.add_argument("--out", required=True, help="folder for methods.md and methods.json")
+    cm.add_argument("--json", help="also write the comparison there (the README's source: "
+                                   "reference_data/methods-small.json)")
+    cm.add_argument("--readme", help="README whose by-method table is rewritten from the comparison")
+
+
+def _compare_methods(args):
+    from .study.methods import write_methods
+    from .study.methodsreadme import save, update_readme
+
+    result = write_methods(args.yade_study, args.cd_study, args.out)
+    if args.json:
+        save(result, args.json)
+    changed = update_readme(args.readme, result) if args.readme else False
+    print(f"postproc: {os.path.join(args.out, 'methods.md')} and methods.json written"
+          + (f"; {args.json}" if args.json else "")
+          + (f"; {args.readme}'s by-method table {'rewritten' if changed else 'unchanged'}" if args.readme else ""),
+          file=sys.stderr)
+    return 0
+
+
 def _compare_arguments(cr):
     cr.add_argument("study", help="study folder with its report (make study: runs/study)")
     cr.add_argument("--reference", default=None, help="committed results (default: "
@@ -488,6 +512,8 @@ USER_COMMANDS = (
             _results_arguments, _results),
     Command("compare-results", "a study's results against the committed ones (the README's table): the same, "
                                "or what differs", _compare_arguments, _compare_results),
+    Command("compare-methods", "the six claims and the contact types by method: a YADE study beside a Contact "
+                               "Dynamics one of the same grains", _methods_arguments, _compare_methods),
     Command("export-vtk", "VTK files (particles, contacts) per snapshot for ParaView", _vtk_arguments, _export_vtk),
     Command("import-lmgc90", "an LMGC90 run's own output files (DATBOX/, OUTBOX/) as a contact dump, every CD "
                              "contact point kept", _import_lmgc90_arguments, _import_lmgc90),

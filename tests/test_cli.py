@@ -221,7 +221,7 @@ STUDY_COMMANDS = ("size-front", "leaning-blocks", "size-at-strain", "analysis-fr
                   "contact-types-kappa", "commonplane-reference", "facepair-tilt",
                   "timestep-front", "random-types", "shape-front")
 #: a user's commands, in the order postproc --help lists them
-USER = ("analyze", "report", "results", "compare-results", "export-vtk", "import-lmgc90")
+USER = ("analyze", "report", "results", "compare-results", "compare-methods", "export-vtk", "import-lmgc90")
 
 
 @pytest.mark.parametrize("cmd", STUDY_COMMANDS)
@@ -281,7 +281,7 @@ def test_one_error_handler_for_every_command():
     main_fn = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "main")
     assert not [n for n in ast.walk(main_fn) if isinstance(n, ast.If) and "cmd" in ast.unparse(n.test)]
     names = [c.name for c in cli.USER_COMMANDS + cli.TOOLS + cli.INVESTIGATIONS]
-    assert len(names) == len(set(names)) == 20
+    assert len(names) == len(set(names)) == 21
 
 
 def test_a_command_is_one_entry(monkeypatch, capsys):

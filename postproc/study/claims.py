@@ -385,3 +385,61 @@ def band_test(s1):
                                     "moves" if lo > BAND_STABLE or hi < -BAND_STABLE else "undecided")
         rows.append(row)
     return rows
+
+
+
+def claim6_groups(s1, prefix):
+    """Claim 6 read off a count by groups only (simple, double, triple):
+    triple contacts (face-face) carry more than the mean force and lean
+    along the axis, their share of the strong network exceeding that of the
+    weak; simple contacts (vertex-face and edge-edge, one point each) carry
+    less than the mean force and lean laterally. The leaning is the signed
+    branch anisotropy (5/2)(F_33 - F_11) of the group's fabric tensor
+    (the paper's Eq. 6), decided as :func:`leaning_decision` decides VF's.
+
+    The CD counts of a CD dump (``prefix`` ``"cd_alert_"``: every point
+    within the alert distance; ``"cd_force_"``: the force-carrying points)
+    have only these groups, so this is how claim 6 is decided by them; the
+    conditions are those of :func:`claim6` with FF read as triple and VF, EE
+    (one condition each in :func:`claim6`) as the one simple group.
+
+    Parameters
+    ----------
+    s1 : list of DataFrame
+        The S1 summaries, one per seed.
+    prefix : str
+        The count's column prefix: ``{prefix}fratio_triple``,
+        ``{prefix}fabric_simple``, ``{prefix}strong_frac_triple``, ...
+
+    Returns
+    -------
+    dict
+        As :func:`claim6`: "numbers", "conditions", "verdict", "basis",
+        "estimates"; "inconclusive" with one condition 0 when the count's
+        columns are absent.
+    """
+    def est(col):
+        return plateau(s1, prefix + col) if s1 else Estimate(np.nan, np.nan, 0, 0, "no run")
+
+    checks, conds, estimates = [], [], {}
+    for col, sign, thr, what in (("fratio_triple", 1, 1.0, "triple mean force / mean"),
+                                 ("fabric_triple", 1, 0.0, "triple signed branch anisotropy"),
+                                 ("fratio_simple", -1, 1.0, "simple mean force / mean"),
+                                 ("fabric_simple", -1, 0.0, "simple signed branch anisotropy")):
+        e = estimates[prefix + col] = est(col)
+        if col == "fabric_simple":
+            word = leaning_decision(e)
+            conds.append(LEANING_CONDITION[word])
+            checks.append(f"{what} {e.text()} (< 0; leaning {word}, none inside ±{NO_LEANING:g})")
+            continue
+        conds.append(sign * _side(e, thr))
+        checks.append(f"{what} {e.text()} ({'>' if sign > 0 else '<'} {thr:g})")
+    fs, fw = est("strong_frac_triple"), est("weak_frac_triple")
+    estimates[prefix + "strong_frac_triple"], estimates[prefix + "weak_frac_triple"] = fs, fw
+    conds.append(_side(difference(fs, fw)))
+    checks.append(f"triple share of the strong network {fs.text()} vs weak {fw.text()}")
+    typed = bool(s1) and prefix + "fratio_triple" in s1[0]
+    conds = conds if typed else [0]
+    return {"numbers": "; ".join(checks), "conditions": conds,
+            "verdict": _verdict(conds) if typed else "inconclusive",
+            "basis": est("fratio_triple").method, "estimates": estimates}
