@@ -118,13 +118,7 @@ QUOTES = {
     },
     "README.md": {
         "7 to 10 minutes": Measured("10:13 wall (user 16:01), of which 355 s of pytest", [6.58, 10.2]),
-        "2 to 4 minutes": Measured("3 min 49 s wall (user 3 min 17 s, sys 14 s)", [3.82]),
-        "2 minutes": Measured("the Debian packages took about 1.7 minutes", [1.7]),
-        "5 minutes": Measured("cluster 154 + 136 s", [4.83]),
-        "11 minutes": Measured("13:38 wall, of which 666 s of pytest", [11.1]),
-        "0.22 core-hours": Model(lambda: seed_pair("default")),
         "half an hour": Measured("took 31 min 34 s on two quiet cores", [31.57]),
-        "15 min": Measured("15:10 wall, rc 0, of which 637 s of pytest", [15.2]),
     },
     "docs/contact-types.md": {
         "5 h": NotADuration("h: the overlap's thickness along the normal"),
@@ -160,8 +154,8 @@ QUOTES = {
         "4 minutes": Measured("3 min 49 s wall (user 3 min 17 s, sys 14 s)", [3.82]),
     },
     "docs/scenes.md": {
-        "0.01–0.03 s": Measured("both checkpoint files of a tiny run (20 grains)", None),
         "0.22 core-hours": Model(lambda: seed_pair("default")),
+        "0.01–0.03 s": Measured("both checkpoint files of a tiny run (20 grains)", None),
         "20 minutes": Model(lambda: 60 * 3 * seed_pair("default") / 2),
         "half an hour": Measured("took 31 min 34 s on two quiet cores", [31.57]),
         "30 s": External("SLURM: the batch shell's --signal warning is checked once every "
