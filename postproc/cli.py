@@ -287,6 +287,22 @@ def _synthetic(args):
 
 # ---------------------------------------------------------- investigations
 
+def _cd_front_arguments(cf):
+    cf.add_argument("run", nargs="+", help="CD run folders (lmgc90.triaxial's, or reference_data/cd-front/*): "
+                                           "the first is the reference")
+    cf.add_argument("--out", required=True, help="output folder (cd-front.md, .csv, .json)")
+    cf.add_argument("--window", nargs=2, type=float, default=(0.1, 0.3), metavar=("EPS_LO", "EPS_HI"),
+                    help="the steady window in eps_1 (default 0.1 0.3)")
+
+
+def _cd_front(args):
+    from .study.cdfront import write_front
+
+    write_front(args.run, args.out, *args.window)
+    print(f"postproc: CD front written to {os.path.join(args.out, 'cd-front.md')}", file=sys.stderr)
+    return 0
+
+
 def _size_front_arguments(sz):
     sz.add_argument("study", nargs="+", help="study folders of 'make study', one per number of grains")
     sz.add_argument("--out", required=True, help="output folder (size.md, size.csv, size-front.png, ...)")
@@ -525,6 +541,8 @@ TOOLS = (
 )
 #: the study's investigations: ``postproc investigate NAME ...`` (docs/postproc.md)
 INVESTIGATIONS = (
+    Command("cd-front", "CD runs of one state under several time steps and NLGS tolerances, side by side",
+            _cd_front_arguments, _cd_front),
     Command("size-front", "the study's quantities against the number of grains (several studies)",
             _size_front_arguments, _size_front),
     Command("shape-front", "the study's quantities on two grain libraries (two studies at one size)",

@@ -219,7 +219,7 @@ def test_synthetic_subcommand(tmp_path):
 STUDY_COMMANDS = ("size-front", "leaning-blocks", "size-at-strain", "analysis-front", "claim6-criteria",
                   "lmgc90-agreement", "al-investigation",
                   "contact-types-kappa", "commonplane-reference", "facepair-tilt",
-                  "timestep-front", "random-types", "shape-front")
+                  "timestep-front", "random-types", "shape-front", "cd-front")
 #: a user's commands, in the order postproc --help lists them
 USER = ("analyze", "report", "results", "compare-results", "compare-methods", "export-vtk", "import-lmgc90")
 
@@ -281,7 +281,7 @@ def test_one_error_handler_for_every_command():
     main_fn = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "main")
     assert not [n for n in ast.walk(main_fn) if isinstance(n, ast.If) and "cmd" in ast.unparse(n.test)]
     names = [c.name for c in cli.USER_COMMANDS + cli.TOOLS + cli.INVESTIGATIONS]
-    assert len(names) == len(set(names)) == 21
+    assert len(names) == len(set(names)) == 22
 
 
 def test_a_command_is_one_entry(monkeypatch, capsys):

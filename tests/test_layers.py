@@ -19,7 +19,7 @@ LAYERS = [
                  "classify", "pertype", "slab", "cdpoints"}),
     ("analysis", {"columns", "analysis", "plots", "vtk", "pipeline"}),
     ("study", {"study.claims", "study.counts", "study.report", "study.front", "study.dilatancy",
-               "study.branchlength", "study.sizefront", "study.results", "study.methods", "study.methodsreadme", "study.leaning", "study.sizestrain",
+               "study.branchlength", "study.sizefront", "study.results", "study.methods", "study.methodsreadme", "study.cdfront", "study.leaning", "study.sizestrain",
                "study.claim6", "study.lmgc90", "study.manifest", "study.alinvestigation",
                "study.typeskappa", "study.commonplaneref", "study.facepair",
                "study.timestepfront", "study.randomtypes", "study.shapefront"}),
