@@ -73,3 +73,25 @@ def test_docs_front_table_is_the_archived_runs():
             assert cells[k] == f"{r[q]:.3f}", (q, cells[k], r[q])
         assert cells[11] == " / ".join(f"{r[f'cd_alert_frac_{g}']:.2f}" for g in ("simple", "double", "triple"))
         assert cells[12] == " / ".join(f"{r[f'cd_force_frac_{g}']:.2f}" for g in ("simple", "double", "triple"))
+
+
+def test_docs_branch_check_is_the_archived_branches():
+    """The convergence check quoted in docs/front.md (seed 1 branched at
+    eps_1 0.144 into tolerances 1e-3 and 3e-4): its means over the snapshots
+    after the branch are the archived runs'."""
+    text = open(os.path.join(ROOT, "docs", "front.md"), encoding="utf-8").read()
+    got = {}
+    for tol in ("1e-3", "3e-4"):
+        folder = os.path.join(ARCHIVE, f"branch-polyhedra-seed1-eps0.144-tol{tol}")
+        params, _, log, summary = cdfront.read_run(folder)
+        after = summary[summary["step"] > params["branch"]["step"]]
+        assert len(after) == 3
+        got[tol] = (after["cd_force_frac_simple"].mean(), after["cd_force_frac_double"].mean(),
+                    after["cd_alert_frac_simple"].mean(), after["q_over_p"].mean(),
+                    log[log["step"] > params["branch"]["step"]]["nlgs_iterations"].mean())
+    a, b = got["1e-3"], got["3e-4"]
+    assert f"force-carrying simple share of {a[0]:.3f} and {b[0]:.3f}" in text
+    assert f"double\n  {a[1]:.3f} and {b[1]:.3f}" in text
+    assert f"every-point simple share of {a[2]:.3f} and {b[2]:.3f}" in text
+    assert f"({a[3]:.3f} and {b[3]:.3f})" in text
+    assert f"{b[4]:.0f} iterations a step against {a[4]:.0f}" in text
