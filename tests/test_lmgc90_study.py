@@ -25,15 +25,9 @@ import time
 import numpy as np
 import pytest
 
-from lmgc90 import build as lb
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-try:
-    lb.pylmgc90_path()
-    BUILT = True
-except lb.LMGC90BuildError:
-    BUILT = False
-needs_lmgc90 = pytest.mark.skipif(not BUILT, reason="LMGC90 is not built (make lmgc90)")
+from lmgc90mark import needs_lmgc90
 
 RATE = 2.0       # 1/s, the fixture's YADE rate_shear
 TINY = ["--set", "dt=2e-4", "--set", "iso_window=20", "--set", "iso_min_steps=20", "--set", "iso_volume_tolerance=1e-3",

@@ -34,16 +34,10 @@ import time
 import numpy as np
 import pytest
 
-from lmgc90 import build as lb
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-try:
-    lb.pylmgc90_path()
-    BUILT = True
-except lb.LMGC90BuildError:
-    BUILT = False
-needs_lmgc90 = pytest.mark.skipif(not BUILT, reason="LMGC90 is not built (make lmgc90)")
+from lmgc90mark import needs_lmgc90
 
 SIGMA0 = 1.0e4
 TINY = ["--set", "n_particles=24", "--set", "seed=3", "--set", "initial_fraction=0.2", "--set", "dt=2e-4",
@@ -288,17 +282,24 @@ def test_postproc_analyses_the_cd_dump(tiny_run, tmp_path):
     assert glob.glob(str(tmp_path / "an" / "*.csv"))
 
 
-@needs_lmgc90
-def test_a_killed_run_resumes_from_its_checkpoint(tmp_path, shape_library):
-    folder = tmp_path / "run"
+def run_to_second_checkpoint(folder, shape_library, *extra):
+    """The tiny scene started in ``folder`` with a checkpoint every 25 steps and
+    left running past its second one: (the process, its checkpoint's scene.json)."""
     args = [sys.executable, "-m", "lmgc90.triaxial", str(folder), "--start", "loose", "--set",
-            f"library={shape_library}", *TINY, "--set", "checkpoint_steps=25"]
+            f"library={shape_library}", *TINY, "--set", "checkpoint_steps=25", *extra]
     proc = subprocess.Popen(args, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
     deadline = time.time() + 300
     ckpt = folder / "run.ckpt" / "scene.json"
     while time.time() < deadline and not (ckpt.exists() and json.loads(ckpt.read_text())["program"]["steps"] >= 50):
         time.sleep(0.2)
     assert proc.poll() is None, "the run ended before its second checkpoint"
+    return proc, ckpt
+
+
+@needs_lmgc90
+def test_a_killed_run_resumes_from_its_checkpoint(tmp_path, shape_library):
+    folder = tmp_path / "run"
+    proc, ckpt = run_to_second_checkpoint(folder, shape_library)
     proc.send_signal(signal.SIGKILL)
     proc.wait()
     saved = json.loads(ckpt.read_text())["program"]["steps"]
@@ -324,14 +325,7 @@ def test_a_branch_goes_on_from_the_checkpoint_under_its_new_tolerance(tmp_path, 
     from lmgc90 import branch as lbranch
     from postproc.schema import DumpReader, verify_dump
     folder = tmp_path / "run"
-    args = [sys.executable, "-m", "lmgc90.triaxial", str(folder), "--start", "loose", "--set",
-            f"library={shape_library}", *TINY, "--set", "checkpoint_steps=25", "--set", "iso_snapshot_steps=25"]
-    proc = subprocess.Popen(args, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    deadline = time.time() + 300
-    ckpt = folder / "run.ckpt" / "scene.json"
-    while time.time() < deadline and not (ckpt.exists() and json.loads(ckpt.read_text())["program"]["steps"] >= 50):
-        time.sleep(0.2)
-    assert proc.poll() is None, "the run ended before its second checkpoint"
+    proc, ckpt = run_to_second_checkpoint(folder, shape_library, "--set", "iso_snapshot_steps=25")
     proc.send_signal(signal.SIGTERM)
     assert proc.wait(timeout=120) == 75
     at = json.loads(ckpt.read_text())
