@@ -203,7 +203,6 @@ def test_the_core_hours_the_docs_quote():
     def pair(preset):
         return sum(estimate(resolve(preset, s))["core_hours"] for s in ("polyhedra", "spheres"))
 
-    assert f"{pair('default'):.2f} core-hours per seed pair" in text("README.md")
     scenes = " ".join(text("docs/scenes.md").split())
     assert f"about {pair('default'):.2f} core-hours per seed pair by the model" in scenes
     assert f"about {3 * pair('intermediate'):.1f} core-hours by the model" in scenes
