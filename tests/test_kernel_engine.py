@@ -536,6 +536,38 @@ def test_wall_positions_and_triangles_are_validated(grains):
         engine_for(verts, bad, sizes, walls=False)
 
 
+def pushed_pair(verts, tris, rng, steps, amp_range, turn_range, drift=0.0):
+    """Two shapes pushed together along a random trajectory by the fast engine,
+    checked at every step against the one-pair geometry (a contact exactly
+    when it finds one, its volume to 1e-9): steps of 10**U(amp_range) and
+    turns of 10**U(turn_range), drawn from ``rng``, plus ``drift`` along the
+    line of centres. Returns (steps in contact, structures kept, broken)."""
+    sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
+    eng = ContactEngine(verts, tris, np.arange(2), sizes, K_V, KT_COEF, MU, 0.0, 0.5, walls=False, threads=1)
+    table = ShapeTable(list(zip(verts, tris)))
+    u = rng.normal(size=3)
+    u /= np.linalg.norm(u)
+    x = 0.55 * u * rng.uniform(0.8, 1.0)
+    q = np.roll(Rotation.random(2, random_state=rng).as_quat(), 1, axis=1)
+    amp, turn = 10 ** rng.uniform(*amp_range), 10 ** rng.uniform(*turn_range)
+    contacts = kept = broken = 0
+    for k in range(steps):
+        x = x + rng.normal(scale=amp, size=3) - 0.3 * amp * u - drift * u
+        q[1] = np.roll((Rotation.from_rotvec(rng.normal(scale=turn, size=3))
+                        * Rotation.from_quat(np.roll(q[1], -1))).as_quat(), 1)
+        pos = np.array([[0.0, 0.0, 0.0], x])
+        eng.step(pos, q)
+        c = eng.contacts()
+        ref = batch_overlap(table, np.array([0]), pos[:1], q[:1], np.array([1]), pos[1:], q[1:], threads=1)
+        assert len(c["i"]) == int(ref["volume"][0] > 0)
+        if len(c["i"]):
+            contacts += 1
+            np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
+        kept += eng.stats["structure_kept"]
+        broken += eng.stats["structure_broken"]
+    return contacts, kept, broken
+
+
 def test_kept_structures_never_outlive_their_validity():
     """120 random pairs of library grains pushed together along random
     trajectories (steps of 1e-6 to 3e-2 d, turns of 1e-6 to 0.3 rad): at
@@ -550,28 +582,8 @@ def test_kept_structures_never_outlive_their_validity():
     for trial in range(120):
         a, b = rng.integers(len(V), size=2)
         verts, tris = [V[a], V[b]], [T[a], T[b]]
-        sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
-        eng = ContactEngine(verts, tris, np.arange(2), sizes, K_V, KT_COEF, MU, 0.0, 0.5, walls=False, threads=1)
-        table = ShapeTable(list(zip(verts, tris)))
-        u = rng.normal(size=3)
-        u /= np.linalg.norm(u)
-        x = 0.55 * u * rng.uniform(0.8, 1.0)
-        q = np.roll(Rotation.random(2, random_state=rng).as_quat(), 1, axis=1)
-        amp, turn = 10 ** rng.uniform(-6, -1.5), 10 ** rng.uniform(-6, -0.5)
-        for k in range(30):
-            x = x + rng.normal(scale=amp, size=3) - 0.3 * amp * u
-            q[1] = np.roll((Rotation.from_rotvec(rng.normal(scale=turn, size=3))
-                            * Rotation.from_quat(np.roll(q[1], -1))).as_quat(), 1)
-            pos = np.array([[0.0, 0.0, 0.0], x])
-            eng.step(pos, q)
-            c = eng.contacts()
-            ref = batch_overlap(table, np.array([0]), pos[:1], q[:1], np.array([1]), pos[1:], q[1:], threads=1)
-            assert len(c["i"]) == int(ref["volume"][0] > 0)
-            if len(c["i"]):
-                contacts += 1
-                np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
-            kept += eng.stats["structure_kept"]
-            broken += eng.stats["structure_broken"]
+        n, k, b = pushed_pair(verts, tris, rng, 30, (-6, -1.5), (-6, -0.5))
+        contacts, kept, broken = contacts + n, kept + k, broken + b
     assert contacts > 1000 and kept > 500 and broken > 100
 
 
@@ -603,27 +615,8 @@ def test_kept_structures_of_shapes_with_coplanar_triangles():
     for trial in range(40):
         a, b = rng.integers(len(split), size=2)
         verts, tris = [split[a][0], split[b][0]], [split[a][1], split[b][1]]
-        sizes = np.array([2 * np.linalg.norm(v, axis=1).max() for v in verts])
-        eng = ContactEngine(verts, tris, np.arange(2), sizes, K_V, KT_COEF, MU, 0.0, 0.5, walls=False, threads=1)
-        table = ShapeTable(list(zip(verts, tris)))
-        u = rng.normal(size=3)
-        u /= np.linalg.norm(u)
-        x = 0.55 * u * rng.uniform(0.8, 1.0)
-        q = np.roll(Rotation.random(2, random_state=rng).as_quat(), 1, axis=1)
-        amp, turn = 10 ** rng.uniform(-6, -2.5), 10 ** rng.uniform(-6, -2)
-        for k in range(25):
-            x = x + rng.normal(scale=amp, size=3) - 0.3 * amp * u - 2e-3 * u
-            q[1] = np.roll((Rotation.from_rotvec(rng.normal(scale=turn, size=3))
-                            * Rotation.from_quat(np.roll(q[1], -1))).as_quat(), 1)
-            pos = np.array([[0.0, 0.0, 0.0], x])
-            eng.step(pos, q)
-            c = eng.contacts()
-            ref = batch_overlap(table, np.array([0]), pos[:1], q[:1], np.array([1]), pos[1:], q[1:], threads=1)
-            assert len(c["i"]) == int(ref["volume"][0] > 0)
-            if len(c["i"]):
-                contacts += 1
-                np.testing.assert_allclose(c["volume"], ref["volume"], rtol=1e-9)
-            kept += eng.stats["structure_kept"]
+        n, k, _ = pushed_pair(verts, tris, rng, 25, (-6, -2.5), (-6, -2), drift=2e-3)
+        contacts, kept = contacts + n, kept + k
     assert contacts > 300 and kept > 0.5 * contacts
 
 
