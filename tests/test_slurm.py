@@ -320,12 +320,18 @@ def test_one_writer_per_line_and_a_crash_before_any_checkpoint_is_retried(tmp_pa
     started by hand in the line's folder refuses too. --collect meanwhile
     lists the line as running and leaves it out of the resubmit command.
     Then YADE is killed before its first checkpoint: the task starts it
-    afresh by itself, and the record holds both attempts."""
+    afresh by itself, and the record holds both attempts. The whole line
+    runs in about 5 s, so its YADE is frozen (SIGSTOP) as soon as it has
+    started: the line stays running, whatever the host's speed, until
+    the kill."""
     out = make(tmp_path, (1, 2), "--set", "final_strain=0.05", "--set", "inertial_number=2e-4")
     d = out / "spheres-seed1"
     p = subprocess.Popen(["bash", str(out / "slurm.sh")], cwd=tmp_path, env=task_env(1), stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
     started(d, p)
+    yade = yade_child(p.pid)
+    os.kill(yade, signal.SIGSTOP)
+    assert "yade" in open(f"/proc/{yade}/cmdline").read()       # YADE itself, not a wrapper
     second = task(out, 1, tmp_path)
     assert second.returncode == 4, second.stdout + second.stderr
     final = [x for x in (second.stdout + second.stderr).splitlines() if x.startswith("task: FINAL")]
@@ -341,7 +347,7 @@ def test_one_writer_per_line_and_a_crash_before_any_checkpoint_is_retried(tmp_pa
     assert f"resubmit the unfinished lines of arr: sbatch --array=2 {out}/slurm.sh" in err
     # no checkpoint yet (the first is due after 300 s): a crash starts it afresh
     assert not (d / "spheres-seed1.ckpt").exists()
-    os.kill(yade_child(p.pid), signal.SIGKILL)
+    os.kill(yade, signal.SIGKILL)          # a stopped process dies of SIGKILL too
     text = p.communicate(timeout=600)[0]
     assert p.returncode == 0, text
     assert "crashed (exit -9) before its first checkpoint: it starts afresh (retry 1 of at most 2)" in text
