@@ -40,12 +40,12 @@ class BranchError(ValueError):
 
 def _checkpoint(folder, stem):
     """The newest complete checkpoint folder of the run (run.ckpt, else run.ckpt.prev)."""
-    for name in (stem + ".ckpt", stem + ".ckpt.prev"):
-        path = os.path.join(folder, name)
-        if os.path.exists(os.path.join(path, "scene.json")):
-            return path
-    raise BranchError(f"{folder}: no checkpoint ({stem}.ckpt/scene.json) to branch from "
-                      "(a finished run keeps none)")
+    from lmgc90.triaxial import newest_checkpoint
+    path = newest_checkpoint(os.path.join(folder, stem))
+    if path is None:
+        raise BranchError(f"{folder}: no checkpoint ({stem}.ckpt/scene.json) to branch from "
+                          "(a finished run keeps none)")
+    return path
 
 
 def coerce(saved, name, text):

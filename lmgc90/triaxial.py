@@ -99,6 +99,32 @@ def say(message):
     print(f"lmgc90.triaxial: {message}", flush=True)
 
 
+def newest_checkpoint(stem):
+    """The newest complete checkpoint folder of a CD run, or None.
+
+    Parameters
+    ----------
+    stem : str
+        The run's dump path without ``.h5`` (``FOLDER/run``).
+
+    Returns
+    -------
+    str or None
+        ``STEM.ckpt``, else ``STEM.ckpt.prev`` (the one before, kept while
+        a new one is written), whichever first holds its ``scene.json``;
+        None when neither does.
+
+    Examples
+    --------
+    >>> newest_checkpoint("/nonexistent/run") is None
+    True
+    """
+    for path in (stem + ".ckpt", stem + ".ckpt.prev"):
+        if os.path.exists(os.path.join(path, "scene.json")):
+            return path
+    return None
+
+
 def parse(argv):
     """(folder, parameters) from the command line; a bad option is refused in
     one line (SystemExit 2)."""
@@ -124,8 +150,7 @@ def parse(argv):
             ap.error(f"--set {item}: {name} takes a {kind.__name__}")
     folder = os.path.abspath(a.folder)
     stem = p["out"][:-3] if p["out"].endswith(".h5") else p["out"]
-    resumable = any(os.path.exists(os.path.join(folder, stem + c, "scene.json")) for c in (".ckpt", ".ckpt.prev"))
-    if p["start"] == "yade" and not p["source"] and not resumable:
+    if p["start"] == "yade" and not p["source"] and newest_checkpoint(os.path.join(folder, stem)) is None:
         ap.error("--start yade needs --source DUMP (only a folder with a checkpoint resumes without one)")
     for name in ("sigma0", "dt", "nlgs_tol", "alert_factor", "wall_mass_factor", "dump_strain", "final_strain",
                  "average_steps"):
@@ -185,11 +210,7 @@ def main(argv=None):
         return EXIT_CONFIG
 
     # ------------------------------------------------------------ resume, or start afresh
-    resumed = None
-    for c in (ckpt, ckpt_prev):
-        if os.path.exists(os.path.join(c, "scene.json")) and os.path.exists(out + ".parts"):
-            resumed = c
-            break
+    resumed = newest_checkpoint(stem) if os.path.exists(out + ".parts") else None
     if resumed is None and (os.path.exists(out) or os.path.exists(out + ".parts")):
         say(f"{P['out']} exists without a usable checkpoint; delete it (and {P['out']}.parts) to start afresh")
         return EXIT_CONFIG
