@@ -62,7 +62,7 @@ def test_docs_front_table_is_the_archived_runs():
              "polyhedra-seed1-tol1e-2-dt0.0005", "polyhedra-seed1-tol1e-2-dt0.002", "loose-polyhedra-seed1-tol1e-2"]
     rows = [cdfront.front_row(n, *cdfront.read_run(os.path.join(ARCHIVE, n))) for n in order]
     text = open(os.path.join(ROOT, "docs", "front.md"), encoding="utf-8").read()
-    section = text[text.index("## The CD time step and tolerance"):text.index("## Analysis estimators")]
+    section = text[text.index("## The CD time step and tolerance"):text.index("### At 1000 grains")]
     lines = [ln for ln in section.splitlines() if re.match(r"\| \d", ln)]
     assert len(lines) == len(rows)
     for line, r in zip(lines, rows):
@@ -95,3 +95,34 @@ def test_docs_branch_check_is_the_archived_branches():
     assert f"every-point simple share of {a[2]:.3f} and {b[2]:.3f}" in text
     assert f"({a[3]:.3f} and {b[3]:.3f})" in text
     assert f"{b[4]:.0f} iterations a step against {a[4]:.0f}" in text
+
+
+def test_docs_1000_grain_branch_table_is_the_archived_runs():
+    """The 1000-grain table of docs/front.md (seed 1 at tolerance 1e-2 and
+    its branch into 1e-3 at eps_1 0.162, means over eps_1 0.165-0.205) is
+    what the command gives on reference_data/cd-1000-front, at its digits,
+    over the same four snapshots after the branch."""
+    folder = os.path.join(ROOT, "reference_data", "cd-1000-front")
+    names = ("polyhedra-seed1-tol1e-2", "branch-polyhedra-seed1-eps0.162-tol1e-3")
+    runs = [cdfront.read_run(os.path.join(folder, n)) for n in names]
+    step = runs[1][0]["branch"]["step"]
+    rows = []
+    for n, run in zip(names, runs):
+        s = run[3]
+        window = s[(s["eps_1"] >= 0.165) & (s["eps_1"] <= 0.205)]
+        assert len(window) == 4 and (window["step"] > step).all()
+        rows.append(cdfront.front_row(n, *run, eps_lo=0.165, eps_hi=0.205))
+    text = open(os.path.join(ROOT, "docs", "front.md"), encoding="utf-8").read()
+    section = text[text.index("### At 1000 grains the tolerance moves the stress too"):text.index("## Analysis estimators")]
+    lines = [ln for ln in section.splitlines() if re.match(r"\| 1e-", ln)]
+    assert len(lines) == 2
+    for line, r, tol in zip(lines, rows, (0.01, 0.001)):
+        cells = [c.strip().replace("−", "-") for c in line.strip("|").split("|")]
+        assert float(cells[0]) == r["nlgs_tol"] == tol
+        for k, q in zip(range(1, 6), ("q_over_p", "a", "a_l", "a_n", "a_t")):
+            assert cells[k] == f"{r[q]:.3f}", (q, cells[k], r[q])
+        assert cells[6] == f"{r['z']:.2f}"
+        assert cells[7] == " / ".join(f"{r[f'cd_alert_frac_{g}']:.2f}" for g in ("simple", "double", "triple"))
+        assert cells[8] == " / ".join(f"{r[f'cd_force_frac_{g}']:.2f}" for g in ("simple", "double", "triple"))
+    shifts = [rows[1][q] - rows[0][q] for q in ("q_over_p", "a", "a_n", "a_t")]
+    assert "by " + ", ".join(f"{x:.3f}" for x in shifts[:3]) + f" and {shifts[3]:.3f}" in section
