@@ -808,7 +808,9 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         const posed_t *P = g ? B : A;
         double r = sqrt(rg[g]) * (1 + 1e-12) + 1e-300;
         if (ng[g] == 0) continue;
-        for (int k = 0; k < P->nt; k++) {
+        int np = P->nf ? P->nf : P->nt;                            /* its planes: one per face, in triangle order */
+        for (int f = 0; f < np; f++) {
+            int k = P->nf ? P->ftag[f] : f;
             if (P->dup && P->dup[k]) continue;                     /* the plane of an earlier triangle, as in the cuts */
             const double *n = P->n + 3 * k;
             double h = P->h[k];
@@ -1146,14 +1148,17 @@ typedef struct {
  * directed edges that appear once (an inner diagonal appears twice, once each
  * way), so the cycle turns as the triangles do (outward). Only the topology
  * is used: the vertices are the shape's, the plane f's, exactly. Any surprise
- * (a plane whose boundary is not one cycle, a face of more than 64 vertices)
- * leaves nface[s] = 0: the triangles stay the faces. */
+ * (a plane whose boundary is not one cycle, a face of more than 64 vertices,
+ * a triangle in no face or in two) leaves nface[s] = 0: the triangles stay
+ * the faces. Faces come in the order of their first triangles, so a loop over
+ * them meets the planes in the order of a loop over the triangles that skips
+ * the duplicates. */
 static void merge_faces(table_t *T, int s) {
     int t0 = T->toff[s], nt = T->toff[s + 1] - t0, nv = T->voff[s + 1] - T->voff[s];
     int f0 = t0, q = 0, nfc = 0;                 /* rows from t0 (nfaces <= nt), vertices from 3 * t0 */
     int *fs = T->fs + f0, *fc = T->fc + f0, *ftag = T->ftag + f0, *fi = T->fi + 3 * (size_t)t0;
     T->nface[s] = 0; T->foff[s] = f0;
-    int eu[3 * 64], ev[3 * 64], used[3 * 64];
+    int eu[3 * 64], ev[3 * 64], used[3 * 64], covered = 0;
     for (int f = 0; f < nt; f++) {
         if (T->dup[t0 + f]) continue;
         const uint64_t *mf = T->pmask + (size_t)PC_MASK_WORDS * (t0 + f);
@@ -1161,6 +1166,7 @@ static void merge_faces(table_t *T, int s) {
         for (int g = 0; g < nt; g++) {
             const uint64_t *mg = T->pmask + (size_t)PC_MASK_WORDS * (t0 + g);
             if (memcmp(mf, mg, sizeof(uint64_t) * PC_MASK_WORDS) != 0) continue;
+            covered++;
             const int *tri = T->t + 3 * (t0 + g);
             for (int c = 0; c < 3; c++) {
                 int a = tri[c], b = tri[(c + 1) % 3], k;
@@ -1186,6 +1192,7 @@ static void merge_faces(table_t *T, int s) {
         for (int i = 0; i < m; i++) if (fi[q + i] < 0 || fi[q + i] >= nv) return;
         fc[nfc] = m; q += m; nfc++;
     }
+    if (covered != nt) return;                     /* a triangle in no face, or in two: keep the triangles */
     T->nface[s] = nfc;
 }
 
