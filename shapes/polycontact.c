@@ -90,6 +90,11 @@ typedef struct {
     double off[3];      /* position of the local origin in the frame */
     const uint64_t *pmask;     /* per triangle: PC_MASK_WORDS words, the vertices of its plane's whole face
                                 * (every triangle of that plane); NULL for a shape without coplanar triangles */
+    /* the shape's polygonal faces (its coplanar triangles merged, see table_init), or nf = 0: its
+     * triangles are its faces. Face k: fc[k] vertices fi[fs[k] ...] counter-clockwise seen from
+     * outside, its plane that of triangle ftag[k] (the first of that plane) */
+    int nf;
+    const int *fs, *fc, *fi, *ftag;
 } posed_t;
 
 /* ------------------------------------------------------------------ clipping workspace */
@@ -480,6 +485,13 @@ static void bounding_sphere(const work_t *w, int buf, int np, double *c, double 
 /* The polyhedron A (its vertices and triangles) as mesh 0. */
 static void mesh_start(work_t *w, const posed_t *A) {
     memcpy(w->mv[0], A->v, sizeof(double) * 3 * A->nv);
+    if (A->nf > 0) {                                   /* the polygonal faces */
+        memcpy(w->mfs[0], A->fs, sizeof(int) * A->nf); memcpy(w->mfc[0], A->fc, sizeof(int) * A->nf);
+        memcpy(w->mft[0], A->ftag, sizeof(int) * A->nf);
+        memcpy(w->mfi[0], A->fi, sizeof(int) * (A->fs[A->nf - 1] + A->fc[A->nf - 1]));
+        w->mnv[0] = A->nv; w->mnf[0] = A->nf;
+        return;
+    }
     for (int f = 0; f < A->nt; f++) {
         w->mfs[0][f] = 3 * f; w->mfc[0][f] = 3; w->mft[0][f] = f;
         w->mfi[0][3 * f] = A->t[3 * f]; w->mfi[0][3 * f + 1] = A->t[3 * f + 1]; w->mfi[0][3 * f + 2] = A->t[3 * f + 2];
@@ -722,13 +734,13 @@ static void keep_structure(const work_t *w, int buf, const posed_t *A, const pos
         for (int k = 0; k < ninc[v]; k++) { if (inc[v][k] < ntA) ta[na++] = inc[v][k]; else tb[nb++] = inc[v][k] - ntA; }
         int x, y;
         if (nb == 0 && na >= 3) {
-            if ((x = common_vertex(A->t, ta, na)) < 0) return;
+            if ((x = A->nf ? plane_vertex(A->pmask, ta, na) : common_vertex(A->t, ta, na)) < 0) return;
             K->vt[v] = KV_A; K->va[v] = (unsigned char)x;
         } else if (na == 0 && nb >= 3) {
             if ((x = B->pmask ? plane_vertex(B->pmask, tb, nb) : common_vertex(B->t, tb, nb)) < 0) return;
             K->vt[v] = KV_B; K->va[v] = (unsigned char)x;
         } else if (na == 2 && nb == 1) {
-            if (!common_edge(A->t, ta[0], ta[1], &x, &y)) return;
+            if (!(A->nf ? plane_edge(A->pmask, ta[0], ta[1], &x, &y) : common_edge(A->t, ta[0], ta[1], &x, &y))) return;
             K->vt[v] = KV_AEDGE; K->va[v] = (unsigned char)x; K->vb[v] = (unsigned char)y; K->vp[v] = (unsigned char)tb[0];
         } else if (na == 1 && nb == 2) {
             if (!(B->pmask ? plane_edge(B->pmask, tb[0], tb[1], &x, &y) : common_edge(B->t, tb[0], tb[1], &x, &y))) return;
@@ -796,7 +808,9 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         const posed_t *P = g ? B : A;
         double r = sqrt(rg[g]) * (1 + 1e-12) + 1e-300;
         if (ng[g] == 0) continue;
-        for (int k = 0; k < P->nt; k++) {
+        int np = P->nf ? P->nf : P->nt;                            /* its planes: one per face, in triangle order */
+        for (int f = 0; f < np; f++) {
+            int k = P->nf ? P->ftag[f] : f;
             if (P->dup && P->dup[k]) continue;                     /* the plane of an earlier triangle, as in the cuts */
             const double *n = P->n + 3 * k;
             double h = P->h[k];
@@ -1122,8 +1136,65 @@ typedef struct {
     unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
     uint64_t *pmask;            /* per triangle: PC_MASK_WORDS words, the vertices of its plane's face */
     unsigned char *hasdup;      /* per shape: it has coplanar triangles (and at most 64 PC_MASK_WORDS vertices) */
+    int *nface, *foff;          /* per shape: its polygonal faces (0: none, its triangles are its faces), their
+                                 * first row in fs/fc/ftag (foff) and of their vertices in fi (at 3 * toff) */
+    int *fs, *fc, *ftag, *fi;   /* per face: start in the shape's fi, vertex count, plane (first triangle); vertices */
     int max_t, max_v;
 } table_t;
+
+/* The polygonal faces of shape s (with coplanar triangles): for each plane
+ * (its first triangle f, not a dup), the boundary of the union of the plane's
+ * triangles (those whose pmask is f's: the same test), traced along the
+ * directed edges that appear once (an inner diagonal appears twice, once each
+ * way), so the cycle turns as the triangles do (outward). Only the topology
+ * is used: the vertices are the shape's, the plane f's, exactly. Any surprise
+ * (a plane whose boundary is not one cycle, a face of more than 64 vertices,
+ * a triangle in no face or in two) leaves nface[s] = 0: the triangles stay
+ * the faces. Faces come in the order of their first triangles, so a loop over
+ * them meets the planes in the order of a loop over the triangles that skips
+ * the duplicates. */
+static void merge_faces(table_t *T, int s) {
+    int t0 = T->toff[s], nt = T->toff[s + 1] - t0, nv = T->voff[s + 1] - T->voff[s];
+    int f0 = t0, q = 0, nfc = 0;                 /* rows from t0 (nfaces <= nt), vertices from 3 * t0 */
+    int *fs = T->fs + f0, *fc = T->fc + f0, *ftag = T->ftag + f0, *fi = T->fi + 3 * (size_t)t0;
+    T->nface[s] = 0; T->foff[s] = f0;
+    int eu[3 * 64], ev[3 * 64], used[3 * 64], covered = 0;
+    for (int f = 0; f < nt; f++) {
+        if (T->dup[t0 + f]) continue;
+        const uint64_t *mf = T->pmask + (size_t)PC_MASK_WORDS * (t0 + f);
+        int ne = 0;
+        for (int g = 0; g < nt; g++) {
+            const uint64_t *mg = T->pmask + (size_t)PC_MASK_WORDS * (t0 + g);
+            if (memcmp(mf, mg, sizeof(uint64_t) * PC_MASK_WORDS) != 0) continue;
+            covered++;
+            const int *tri = T->t + 3 * (t0 + g);
+            for (int c = 0; c < 3; c++) {
+                int a = tri[c], b = tri[(c + 1) % 3], k;
+                for (k = 0; k < ne; k++) if (eu[k] == b && ev[k] == a) break;   /* the diagonal, the other way */
+                if (k < ne) { eu[k] = eu[ne - 1]; ev[k] = ev[ne - 1]; ne--; continue; }
+                if (ne == 3 * 64) return;
+                eu[ne] = a; ev[ne] = b; ne++;
+            }
+        }
+        if (ne < 3) return;
+        memset(used, 0, sizeof(int) * ne);
+        int m = 0, a = eu[0];
+        fs[nfc] = q; ftag[nfc] = f;
+        do {                                      /* follow a -> b */
+            int k;
+            for (k = 0; k < ne; k++) if (!used[k] && eu[k] == a) break;
+            if (k == ne) return;
+            used[k] = 1;
+            fi[q + m++] = a;
+            a = ev[k];
+        } while (a != eu[0] && m <= ne);
+        if (m != ne || a != eu[0]) return;          /* more than one cycle, or a vertex met twice */
+        for (int i = 0; i < m; i++) if (fi[q + i] < 0 || fi[q + i] >= nv) return;
+        fc[nfc] = m; q += m; nfc++;
+    }
+    if (covered != nt) return;                     /* a triangle in no face, or in two: keep the triangles */
+    T->nface[s] = nfc;
+}
 
 static int table_init(table_t *T, int ns, const int *voff, const double *v, const int *toff, const int *t) {
     T->ns = ns; T->voff = voff; T->toff = toff; T->v = v; T->t = t;
@@ -1135,7 +1206,11 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->dup = calloc(ntot + 1, 1);
     T->pmask = calloc((size_t)PC_MASK_WORDS * (ntot + 1), sizeof(uint64_t));
     T->hasdup = calloc(ns + 1, 1);
+    T->nface = calloc(ns + 1, sizeof(int)); T->foff = calloc(ns + 1, sizeof(int));
+    T->fs = calloc(ntot + 1, sizeof(int)); T->fc = calloc(ntot + 1, sizeof(int));
+    T->ftag = calloc(ntot + 1, sizeof(int)); T->fi = calloc(3 * (size_t)ntot + 1, sizeof(int));
     if (!T->n || !T->h || !T->radius || !T->box || !T->dup || !T->pmask || !T->hasdup) return -1;
+    if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi) return -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
@@ -1190,11 +1265,20 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
                 for (int c = 0; c < 3; c++) mf[tri[c] >> 6] |= (uint64_t)1 << (tri[c] & 63);
             }
         }
+        merge_faces(T, s);
     }
     return 0;
 }
 static void table_free(table_t *T) {
     free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->pmask); free(T->hasdup);
+    free(T->nface); free(T->foff); free(T->fs); free(T->fc); free(T->ftag); free(T->fi);
+}
+
+/* the polygonal faces of shape s on P (nf = 0: none) */
+static inline void posed_faces(const table_t *T, int s, posed_t *P) {
+    P->nf = T->nface[s];
+    int f0 = T->foff[s];
+    P->fs = T->fs + f0; P->fc = T->fc + f0; P->ftag = T->ftag + f0; P->fi = T->fi + 3 * (size_t)T->toff[s];
 }
 
 /* pose shape s: rotated vertices (+ offset), rotated normals, offsets */
@@ -1213,6 +1297,7 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
     P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
     P->pmask = T->hasdup[s] ? T->pmask + (size_t)PC_MASK_WORDS * t0 : NULL;
     P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
+    posed_faces(T, s, P);
 }
 
 /* ================================================================== batched geometry (public API) */
@@ -1768,6 +1853,7 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     posed_t pb = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
                   E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]},
                   E->T.hasdup[E->shape[j]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[j]] : NULL};
+    posed_faces(&E->T, E->shape[i], &pa); posed_faces(&E->T, E->shape[j], &pb);
     *A = pa; *B = pb;
 }
 
@@ -1867,6 +1953,7 @@ static void wall_overlap(const engine_t *E, int b, int k, work_t *w, int want_sh
     posed_t A = {E->voffb[b + 1] - E->voffb[b], E->toffb[b + 1] - E->toffb[b], E->rv + 3 * E->voffb[b],
                  E->T.t + 3 * E->T.toff[E->shape[b]], E->rn + 3 * E->toffb[b], E->rh + E->toffb[b], NULL, NULL, NULL,
                  {0, 0, 0}};
+    posed_faces(&E->T, E->shape[b], &A);
     n[0] = n[1] = n[2] = 0;
     n[ax] = E->wall_sign[k];              /* clip keeps n.x <= h with n = m, h = m.(wall - x) = -gap */
     if (E->fast) overlap_halfspace_mesh(&A, n, -gap, w, want_shadow, r);

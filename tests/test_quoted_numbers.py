@@ -145,7 +145,6 @@ QUOTES = {
         "5.0 to 0.13 µs": Measured("0.13 against 5.0 µs per body-step at 5000", None),
         "1.7 ms": Measured("It cost 1.39 ms (collider) + 0.33 ms (loop) per step", [1.72]),
         "0.16 ms": Measured("against 0.16 ms for everything the plugin does", [0.16]),
-        "0.2 µs": Measured("step (0.23 µs a contact: 3 % of the step)", [0.23]),
     },
     "docs/lmgc90-contacts.md": {
         "1 ms": Measured("LMGC90's face topology of the 1000 library shapes", [1.1]),
