@@ -195,18 +195,24 @@ def _methods_arguments(cm):
     cm.add_argument("cd_study", help="the Contact Dynamics study folder, of the same grains and starting states")
     cm.add_argument("--out", required=True, help="folder for methods.md and methods.json")
     cm.add_argument("--json", help="also write the comparison there (the README's source: "
-                                   "reference_data/methods-small.json)")
-    cm.add_argument("--readme", help="README whose by-method table is rewritten from the comparison")
+                                   "reference_data/methods-1000.json)")
+    cm.add_argument("--readme", help="README whose by-method table is rewritten from the comparison (needs "
+                                     "--json: the block names that file)")
 
 
 def _compare_methods(args):
     from .study.methods import write_methods
     from .study.methodsreadme import save, update_readme
 
+    if args.readme and not args.json:
+        raise InputError("compare-methods: --readme needs --json FILE (the README's block names the file it is "
+                         "generated from)")
     result = write_methods(args.yade_study, args.cd_study, args.out)
     if args.json:
         save(result, args.json)
-    changed = update_readme(args.readme, result) if args.readme else False
+    source = os.path.relpath(os.path.abspath(args.json), os.path.dirname(os.path.abspath(args.readme))) \
+        if args.readme else None
+    changed = update_readme(args.readme, result, source) if args.readme else False
     print(f"postproc: {os.path.join(args.out, 'methods.md')} and methods.json written"
           + (f"; {args.json}" if args.json else "")
           + (f"; {args.readme}'s by-method table {'rewritten' if changed else 'unchanged'}" if args.readme else ""),

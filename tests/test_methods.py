@@ -12,7 +12,7 @@ from postproc.cli import main
 from postproc.errors import InputError
 from postproc.study import methodsreadme, results
 from postproc.study.claims import claim6_groups
-from postproc.study.methods import compare_methods, read_study, write_methods
+from postproc.study.methods import compare_methods, read_study, run_settings, write_methods
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PAPER = json.load(open(os.path.join(ROOT, "reference_data", "paper_values.json")))
@@ -159,13 +159,15 @@ def test_readme_block_round_trip(studies, tmp_path):
     assert main(["compare-methods", *studies, "--out", str(out), "--json", str(js), "--readme", str(readme)]) == 0
     text = readme.read_text()
     block = methodsreadme.readme_block(text)
-    assert block == methodsreadme.block(methodsreadme.load(str(js)))
-    assert text.index(results.END) < text.index(methodsreadme.BEGIN) < text.index("more text")
+    assert methodsreadme.block_source(text) == "methods-small.json"
+    assert block == methodsreadme.block(methodsreadme.load(str(js)), "methods-small.json")
+    assert text.index(results.END) < text.index(methodsreadme.BEGIN_PREFIX) < text.index("more text")
     assert "| 1 | q/p plateau S1 0.46, S2 0.23 | reproduced | not reproduced |" in block
     assert "| CD | cd-force | 0.70 [0.70, 0.70] | 0.20 [0.20, 0.20] | 0.10 [0.10, 0.10] | reproduced |" in block
     assert "| YADE | cd-alert |" not in block and "| YADE | cd-force |" not in block   # not applicable
     assert "| CD | cd-alert |" in block
-    assert not methodsreadme.update_readme(str(readme), methodsreadme.load(str(js)))   # unchanged
+    assert not methodsreadme.update_readme(str(readme), methodsreadme.load(str(js)), "methods-small.json")
+    assert main(["compare-methods", *studies, "--out", str(out), "--readme", str(readme)]) == 2   # no --json
     broken = text.replace(methodsreadme.END, "")
     with pytest.raises(InputError, match="markers are broken"):
         methodsreadme.readme_block(broken)
@@ -175,11 +177,47 @@ def test_readme_block_round_trip(studies, tmp_path):
 
 
 def test_committed_readme_and_methods_json_agree():
-    """The README's by-method block is generated from
-    reference_data/methods-small.json; without that file it has no block."""
+    """The README's by-method block is generated from the committed
+    comparison its first line names."""
     text = open(os.path.join(ROOT, "README.md")).read()
-    path = os.path.join(ROOT, "reference_data", "methods-small.json")
-    if os.path.exists(path):
-        assert methodsreadme.readme_block(text) == methodsreadme.block(methodsreadme.load(path))
-    else:
-        assert methodsreadme.readme_block(text) is None
+    source = methodsreadme.block_source(text)
+    assert source is not None and source.startswith("reference_data/methods-")
+    assert methodsreadme.readme_block(text) == methodsreadme.block(methodsreadme.load(os.path.join(ROOT, source)),
+                                                                   source)
+
+
+def test_the_force_carrying_count_decides_only_at_a_converged_tolerance(studies):
+    """At NLGS tolerance 1e-2 (above methods.FORCE_COUNT_TOL) the
+    force-carrying count's proportions are shown and decide nothing; at
+    1e-3 it decides as before; the README's first line says the size and
+    the tolerance."""
+    read = {"YADE": read_study(studies[0]), "CD": read_study(studies[1])}
+    for tol, decided in ((0.01, None), (1e-3, "reproduced")):
+        r = compare_methods(read, PAPER, settings={"YADE": {"grains": 1000, "nlgs_tol": None},
+                                                   "CD": {"grains": None, "nlgs_tol": tol}})
+        force = _rows(r, "CD")["cd-force"]
+        assert force["claim6"] == decided and force["simple"]["mean"] == pytest.approx(0.70, abs=1e-12)
+        assert (force["reason"] is None) == (decided is not None)
+        assert _rows(r, "CD")["cd-alert"]["claim6"] is not None       # every point: decided at any tolerance
+        line = methodsreadme.table(r)[0]
+        assert line.startswith(f"At 1000 grains (CD at NLGS tolerance {tol:g}), the same grains")
+    assert "above the 0.001 at which this count converges" in \
+        _rows(compare_methods(read, PAPER, settings={"CD": {"grains": None, "nlgs_tol": 0.01}}), "CD")["cd-force"][
+            "reason"]
+
+
+def test_run_settings_read_beside_the_dumps(tmp_path):
+    """The grains from a YADE ensemble's params.json, the tolerance from CD
+    runs' run.params.json (the largest when they differ); None when nothing
+    records them or a file is not JSON."""
+    yade, cd1, cd2, bad = (tmp_path / n for n in ("polyhedra-ensemble", "cd1", "cd2", "bad"))
+    for d in (yade, cd1, cd2, bad):
+        d.mkdir()
+    (yade / "params.json").write_text(json.dumps({"n_particles": 1000, "preset": "default"}))
+    (cd1 / "run.params.json").write_text(json.dumps({"nlgs_tol": 0.01}))
+    (cd2 / "run.params.json").write_text(json.dumps({"nlgs_tol": 0.001}))
+    (bad / "run.params.json").write_text("{not json")
+    runs = lambda *ds: {"polyhedra": [{"dump": str(d / "run.h5")} for d in ds]}     # noqa: E731
+    assert run_settings(runs(yade, yade)) == {"grains": 1000, "nlgs_tol": None}
+    assert run_settings(runs(cd1, cd2, bad)) == {"grains": None, "nlgs_tol": 0.01}
+    assert run_settings({"spheres": [{"dump": str(cd1 / "run.h5")}]}) == {"grains": None, "nlgs_tol": None}

@@ -34,7 +34,8 @@ methods.json (``FORMAT`` 1)::
 
     {"format": 1,
      "studies": {"YADE"|"CD": {"path": str, "samples": {sample: {"runs": int, "usable": int,
-                                 "partial": int}}, "note": str}},
+                                 "partial": int}}, "note": str,
+                                 "grains": int|null, "nlgs_tol": float|null}},   # run_settings
      "claims": [{"id": int, "claim": str, "paper": str,
                  "YADE"|"CD": {"verdict": str, "numbers": str, "basis": str}}],   # 6 rows
      "types": [{"method": "YADE"|"CD", "count": str, "label": str, "seeds": int,
@@ -71,6 +72,34 @@ def read_study(study):
         raise InputError(f"{study}: not a study folder (no manifest.json)")
     runs = discover(study)
     return runs, run_summaries(runs)
+
+
+def run_settings(runs):
+    """What the S1 runs' folders say of their setting, read beside each dump:
+    the number of grains (a YADE ensemble's ``params.json``, ``n_particles``)
+    and NLGS's tolerance (a CD run's ``run.params.json``, ``nlgs_tol``).
+
+    Returns
+    -------
+    dict
+        {"grains": int or None, "nlgs_tol": float or None}: one value when
+        the runs agree, the largest tolerance when they do not, None when
+        no folder records it.
+    """
+    grains, tols = set(), set()
+    for r in runs.get("polyhedra", []):
+        folder = os.path.dirname(r.get("dump") or "")
+        for name, key, into in (("params.json", "n_particles", grains), ("run.params.json", "nlgs_tol", tols)):
+            path = os.path.join(folder, name)
+            if folder and os.path.isfile(path):
+                try:
+                    value = read_json_object(path, "run parameters").get(key)
+                except InputError:
+                    continue
+                if isinstance(value, (int, float)) and value > 0:
+                    into.add(value)
+    return {"grains": int(max(grains)) if len(grains) == 1 else None,
+            "nlgs_tol": float(max(tols)) if tols else None}
 
 
 def study_facts(runs, summaries):
@@ -121,10 +150,19 @@ def _interval(est):
     return {"mean": _clean(est.mean), "lo": _clean(lo), "hi": _clean(hi)}
 
 
-def type_rows(method, runs, summaries):
+#: NLGS tolerance (LMGC90's QM/16) at or below which the force-carrying
+#: count is converged: on the front's branch, 1e-3 and 3e-4 give the same
+#: proportions, 1e-2 and 3e-3 others (docs/front.md, "The CD time step and tolerance")
+FORCE_COUNT_TOL = 1e-3
+
+
+def type_rows(method, runs, summaries, nlgs_tol=None):
     """The contact-type rows of one method: each count it has (and the CD
     counts, with a reason when absent), the simple/double/triple
-    proportions over the S1 seeds and claim 6 decided by that count."""
+    proportions over the S1 seeds and claim 6 decided by that count. The
+    force-carrying CD count decides nothing when the runs' NLGS tolerance
+    ``nlgs_tol`` is above :data:`FORCE_COUNT_TOL` (its proportions are
+    shown, with the reason)."""
     s1 = summaries.get("polyhedra", [])
     rows = []
     if not s1:
@@ -138,7 +176,12 @@ def type_rows(method, runs, summaries):
         rows.append(_row(method, "ours", "our contact-point count", s1, "ct_frac_", claim6(s1), None))
     for name, prefix, label in CD_COUNTS:
         col = f"{prefix}frac_simple"
-        if col in s1[0]:
+        if col in s1[0] and name == "cd-force" and nlgs_tol is not None and nlgs_tol > FORCE_COUNT_TOL * (1 + 1e-9):
+            row = _row(method, name, label, s1, prefix + "frac_", None, None)
+            row["reason"] = (f"not decided: NLGS tolerance {nlgs_tol:g}, above the {FORCE_COUNT_TOL:g} at which this "
+                             "count converges (docs/front.md)")
+            rows.append(row)
+        elif col in s1[0]:
             rows.append(_row(method, name, label, s1, prefix + "frac_", claim6_groups(s1, prefix), None))
         else:
             why = ("no cd_* columns: not a CD dump (no CD contact points)"
@@ -160,7 +203,7 @@ def _row(method, count, label, frames, prefix, c6, reason):
     return row
 
 
-def compare_methods(studies, reference, paths=None):
+def compare_methods(studies, reference, paths=None, settings=None):
     """The comparison, as methods.json holds it (see the module docstring).
 
     Parameters
@@ -172,6 +215,10 @@ def compare_methods(studies, reference, paths=None):
         The paper's values (``reference_data/paper_values.json``).
     paths : dict, optional
         {method: study folder}, recorded.
+    settings : dict, optional
+        {method: :func:`run_settings`}: the grains and NLGS tolerance,
+        recorded with each study (the CD tolerance decides whether the
+        force-carrying count decides claim 6).
 
     Returns
     -------
@@ -181,10 +228,11 @@ def compare_methods(studies, reference, paths=None):
     missing = [m for m in METHODS if m not in studies]
     if missing:
         raise InputError(f"compare-methods: no {', '.join(missing)} study")
-    paths = paths or {}
+    paths, settings = paths or {}, settings or {}
     claims = {m: evaluate(summaries) for m, (_, summaries) in studies.items()}
     out = {"format": FORMAT,
-           "studies": {m: {"path": paths.get(m), **study_facts(*studies[m])} for m in METHODS},
+           "studies": {m: {"path": paths.get(m), **study_facts(*studies[m]),
+                           **settings.get(m, {"grains": None, "nlgs_tol": None})} for m in METHODS},
            "claims": [], "types": [],
            "paper_types": [float(x) for x in reference["results"]["contact_types_simple_double_triple"]["polyhedra"]]}
     for k in range(6):
@@ -194,7 +242,7 @@ def compare_methods(studies, reference, paths=None):
             row[m] = {"verdict": c["verdict"], "numbers": c["numbers"], "basis": c["basis"]}
         out["claims"].append(row)
     for m in METHODS:
-        out["types"] += type_rows(m, *studies[m])
+        out["types"] += type_rows(m, *studies[m], nlgs_tol=out["studies"][m]["nlgs_tol"])
     return out
 
 
@@ -213,7 +261,8 @@ def methods_markdown(result):
         st = result["studies"][m]
         seeds = ", ".join(f"{'S1' if s == 'polyhedra' else 'S2'} {v['usable']} of {v['runs']} runs"
                           for s, v in st["samples"].items())
-        lines.append(f"* {m}: {st['path'] or '(no path)'}: {seeds}; {st['note']}")
+        setting = "".join(f"; {k} {st[k]:g}" for k in ("grains", "nlgs_tol") if st.get(k) is not None)
+        lines.append(f"* {m}: {st['path'] or '(no path)'}: {seeds}; {st['note']}{setting}")
     lines += ["", "## The six claims", "",
               "| claim | paper | YADE | CD | YADE numbers | CD numbers |", "|---|---|---|---|---|---|"]
     for c in result["claims"]:
@@ -235,7 +284,8 @@ def write_methods(yade_study, cd_study, out, reference=PAPER):
     the comparison (:func:`compare_methods`)."""
     studies = {"YADE": read_study(yade_study), "CD": read_study(cd_study)}
     result = compare_methods(studies, read_json_object(reference, "paper values"),
-                             {"YADE": yade_study, "CD": cd_study})
+                             {"YADE": yade_study, "CD": cd_study},
+                             {m: run_settings(runs) for m, (runs, _) in studies.items()})
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "methods.json"), "w") as fh:
         json.dump(result, fh, indent=1, ensure_ascii=False)
