@@ -176,13 +176,12 @@ def type_rows(method, runs, summaries, nlgs_tol=None):
         rows.append(_row(method, "ours", "our contact-point count", s1, "ct_frac_", claim6(s1), None))
     for name, prefix, label in CD_COUNTS:
         col = f"{prefix}frac_simple"
-        if col in s1[0] and name == "cd-force" and nlgs_tol is not None and nlgs_tol > FORCE_COUNT_TOL * (1 + 1e-9):
-            row = _row(method, name, label, s1, prefix + "frac_", None, None)
-            row["reason"] = (f"not decided: NLGS tolerance {nlgs_tol:g}, above the {FORCE_COUNT_TOL:g} at which this "
-                             "count converges (docs/front.md)")
-            rows.append(row)
-        elif col in s1[0]:
-            rows.append(_row(method, name, label, s1, prefix + "frac_", claim6_groups(s1, prefix), None))
+        loose = name == "cd-force" and nlgs_tol is not None and nlgs_tol > FORCE_COUNT_TOL * (1 + 1e-9)
+        if col in s1[0]:
+            why = (f"not decided: NLGS tolerance {nlgs_tol:g}, above the {FORCE_COUNT_TOL:g} at which this count "
+                   "converges (docs/front.md)") if loose else None
+            rows.append(_row(method, name, label, s1, prefix + "frac_", None if loose else claim6_groups(s1, prefix),
+                             why))
         else:
             why = ("no cd_* columns: not a CD dump (no CD contact points)"
                    if not any(c.startswith("cd_") for c in s1[0].columns) else f"no column {col}")
