@@ -13,8 +13,13 @@ orientations, velocities restored before each), STEPS steps of:
   ``Ig2_Facet_Polyhedra_PolyhedraGeom``, ``Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys``
   and ``Law2_PolyhedraGeom_PolyhedraPhys_Volumetric`` (YADE's idiom);
 * ``engine fill 1``, ``engine fill 10``, ``engine fill 0``: the engine, with
-  ``O.interactions`` written every step, every 10 steps, never (the three
-  interleaved, three times each: medians).
+  ``O.interactions`` written every step, every 10 steps, never.
+
+The four are interleaved, three times each (each engine variant run five
+times in a row there, from the same state, for the median of the five:
+its runs take tenths of a second); the engine's ratios are taken to the
+stock run of the same repeat, and the medians are reported
+(with the repeats' lowest and highest contact-step ratio).
 
 Per variant: the whole step (wall time of ``O.run`` over the steps), the
 contact engines' own time (YADE's ``O.timingEnabled`` for the stock engines;
@@ -22,6 +27,11 @@ the engine's counters), the touching contacts (mean of the first and last
 step; for the stock functors those with a positive penetrationVolume, as they
 keep an interaction real at zero volume while the bounds overlap) and the
 cost of a contact-step (contact time / steps / contacts).
+The same in CPU time (``time.process_time``, YADE on one thread), which a
+loaded host's other processes disturb less than the wall clock: each
+variant's step less the step without contacts (``ForceResetter`` and
+``NewtonIntegrator`` alone, run beside them), per touching contact
+(``us_per_contact_step_cpu``, ``contact_step_cpu_ratio``).
 Prints one line ``RESULT {json}`` and writes it to OUT.json if given.
 """
 import json
@@ -80,47 +90,74 @@ def run(name, engines, contact_engines, count):
         if hasattr(e, "counters"):
             e.counters = [0.0] * len(e.counters)    # the fill's own time from here on
     c0 = count()
-    t0 = time.perf_counter()
+    t0, p0 = time.perf_counter(), time.process_time()
     O.run(STEPS, True)
-    wall = time.perf_counter() - t0
+    wall, cpu = time.perf_counter() - t0, time.process_time() - p0
     c1 = count()
     contact = sum(e.execTime for e in O.engines if e.label in contact_engines) * 1e-9
     O.timingEnabled = False
     n = 0.5 * (c0 + c1)
-    return {"variant": name, "whole_step_us": 1e6 * wall / STEPS, "contact_us_per_step": 1e6 * contact / STEPS,
+    return {"variant": name, "whole_step_us": 1e6 * wall / STEPS, "whole_step_cpu_us": 1e6 * cpu / STEPS, "contact_us_per_step": 1e6 * contact / STEPS,
             "contacts": n, "us_per_contact_step": 1e6 * contact / STEPS / n if n else float("nan")}
 
 
 res = {"n_grains": len(grains), "steps": STEPS, "dt": O.dt, "deposit": deposit, "variants": []}
-stock = [ForceResetter(),
-         InsertionSortCollider([Bo1_Polyhedra_Aabb(label="bo1p"), Bo1_Facet_Aabb(label="bo1f")], label="collider"),
-         InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom(), Ig2_Facet_Polyhedra_PolyhedraGeom()],
-                         [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
-                         [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()], label="loop"),
-         NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
-# YADE's stock functors keep an interaction real at zero volume while the bounds overlap: count the touching ones
-res["variants"].append(run("stock", stock, {"collider", "loop"},
-                           lambda: sum(1 for i in O.interactions if i.isReal and i.geom.penetrationVolume > 0)))
+
+
+def stock_engines():
+    return [ForceResetter(),
+            InsertionSortCollider([Bo1_Polyhedra_Aabb(label="bo1p"), Bo1_Facet_Aabb(label="bo1f")], label="collider"),
+            InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom(), Ig2_Facet_Polyhedra_PolyhedraGeom()],
+                            [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
+                            [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()], label="loop"),
+            NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+
+
 REPEAT = 3
+ENGINE_RUNS = 5
 runs = {}
-for rep in range(REPEAT):                    # the engine's variants interleaved, REPEAT times: medians
+for rep in range(REPEAT):                    # stock and the engine's variants interleaved, REPEAT times: medians
+    # the step without contacts (ForceResetter and NewtonIntegrator over the same bodies): what is not contacts
+    bare = [run("no contacts", [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)], set(),
+                lambda: 0) for k in range(ENGINE_RUNS)]
+    bare_cpu = sorted(x["whole_step_cpu_us"] for x in bare)[len(bare) // 2]
+    runs.setdefault("bare", []).append(dict(bare[0], whole_step_cpu_us=bare_cpu))
+    # YADE's stock functors keep an interaction real at zero volume while the bounds overlap: count the touching ones
+    r = run("stock", stock_engines(), {"collider", "loop"},
+            lambda: sum(1 for i in O.interactions if i.isReal and i.geom.penetrationVolume > 0))
+    runs.setdefault("stock", []).append(r)
     for fill in (1, 10, 0):
-        label = "fill%d_%d" % (fill, rep)
-        eng = [ForceResetter(), PolyhedraContactEngine(fillEvery=fill, label=label),
-               NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
-        r = run("engine fill %d" % fill, eng, {label}, lambda: len(SCENES[label].contacts()["id1"]))
-        tm = SCENES[label].timing()
-        r["fill_us_per_fill"] = 1e6 * tm["fill"] / max(tm["fills"], 1)
-        r["fill_us_per_contact"] = r["fill_us_per_fill"] / r["contacts"] if r["contacts"] else float("nan")
+        inner = []
+        for k in range(ENGINE_RUNS):         # the engine's runs are short (tenths of a second): several, their median
+            label = "fill%d_%d_%d" % (fill, rep, k)
+            eng = [ForceResetter(), PolyhedraContactEngine(fillEvery=fill, label=label),
+                   NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)]
+            r = run("engine fill %d" % fill, eng, {label}, lambda: len(SCENES[label].contacts()["id1"]))
+            tm = SCENES[label].timing()
+            r["fill_us_per_fill"] = 1e6 * tm["fill"] / max(tm["fills"], 1)
+            r["fill_us_per_contact"] = r["fill_us_per_fill"] / r["contacts"] if r["contacts"] else float("nan")
+            inner.append(r)
+        r = dict(variant=inner[0]["variant"],
+                 **{k: sorted(x[k] for x in inner)[len(inner) // 2] for k in inner[0] if k != "variant"})
+        base = runs["stock"][-1]             # the ratios to the stock run of the same repeat
+        r["contact_step_ratio"] = base["us_per_contact_step"] / r["us_per_contact_step"]
+        r["whole_step_ratio"] = base["whole_step_us"] / r["whole_step_us"]
+        r["whole_step_cpu_ratio"] = base["whole_step_cpu_us"] / r["whole_step_cpu_us"]
         runs.setdefault(fill, []).append(r)
-for fill in (1, 10, 0):
-    rs = runs[fill]
+    for r in [runs["stock"][-1]] + [runs[f][-1] for f in (1, 10, 0)]:
+        # CPU time of the contacts: the step's less the step without contacts, per touching contact
+        r["us_per_contact_step_cpu"] = (r["whole_step_cpu_us"] - bare_cpu) / r["contacts"]
+    for f in (1, 10, 0):
+        runs[f][-1]["contact_step_cpu_ratio"] = (runs["stock"][-1]["us_per_contact_step_cpu"]
+                                                 / runs[f][-1]["us_per_contact_step_cpu"])
+for key in ("stock", 1, 10, 0):
+    rs = runs[key]
     med = {k: sorted(x[k] for x in rs)[len(rs) // 2] for k in rs[0] if k != "variant"}
-    res["variants"].append(dict(variant="engine fill %d" % fill, repeats=len(rs), **med))
-base = res["variants"][0]
-for r in res["variants"][1:]:
-    r["contact_step_ratio"] = base["us_per_contact_step"] / r["us_per_contact_step"]
-    r["whole_step_ratio"] = base["whole_step_us"] / r["whole_step_us"]
+    if key != "stock":                       # the repeats' ratios, lowest and highest
+        for k in ("contact_step_ratio", "contact_step_cpu_ratio"):
+            med[k + "_range"] = [min(x[k] for x in rs), max(x[k] for x in rs)]
+    res["variants"].append(dict(variant=rs[0]["variant"], repeats=len(rs), **med))
+res["no_contacts_cpu_us"] = sorted(x["whole_step_cpu_us"] for x in runs["bare"])[REPEAT // 2]
 line = json.dumps(res)
 print("RESULT " + line, flush=True)
 if OUT:

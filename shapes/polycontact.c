@@ -95,7 +95,19 @@ typedef struct {
      * outside, its plane that of triangle ftag[k] (the first of that plane) */
     int nf;
     const int *fs, *fc, *fi, *ftag;
+    double ra;          /* largest |x| + |y| + |z| of the vertices v, or 0: not known (see posed_extent) */
 } posed_t;
+
+/* The largest |x| + |y| + |z| of A's vertices (the scale of its round-off). */
+static inline double posed_extent(const posed_t *A) {
+    if (A->ra > 0) return A->ra;
+    double ra = 0;
+    for (int i = 0; i < A->nv; i++) {
+        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
+        ra = q > ra ? q : ra;
+    }
+    return ra;
+}
 
 /* ------------------------------------------------------------------ clipping workspace */
 typedef struct {
@@ -948,11 +960,7 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
      * a valid, looser bound). */
     double sc[3] = {0, 0, 0}, sr = INFINITY;
     /* round-off tolerance of a plane test: the coordinates are O(r_A + |x_B - x_A|) */
-    double ra = 0;
-    for (int i = 0; i < A->nv; i++) {
-        double q = fabs(A->v[3 * i]) + fabs(A->v[3 * i + 1]) + fabs(A->v[3 * i + 2]);
-        ra = q > ra ? q : ra;
-    }
+    double ra = posed_extent(A);
     double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
     r->fallback = 0; r->kept = 0;
     if (cull && hot && dAB && keep && keep->ok) {
@@ -1134,6 +1142,7 @@ typedef struct {
     double *radius;             /* bounding radius about the local origin */
     double *box;                /* local bounding box per shape: lo[3], hi[3] */
     unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
+    int *rep;                   /* per triangle: that earlier triangle (index in the shape), or itself */
     uint64_t *pmask;            /* per triangle: PC_MASK_WORDS words, the vertices of its plane's face */
     unsigned char *hasdup;      /* per shape: it has coplanar triangles (and at most 64 PC_MASK_WORDS vertices) */
     int *nface, *foff;          /* per shape: its polygonal faces (0: none, its triangles are its faces), their
@@ -1204,12 +1213,13 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->radius = malloc(sizeof(double) * (ns + 1));
     T->box = malloc(sizeof(double) * 6 * (ns + 1));
     T->dup = calloc(ntot + 1, 1);
+    T->rep = calloc(ntot + 1, sizeof(int));
     T->pmask = calloc((size_t)PC_MASK_WORDS * (ntot + 1), sizeof(uint64_t));
     T->hasdup = calloc(ns + 1, 1);
     T->nface = calloc(ns + 1, sizeof(int)); T->foff = calloc(ns + 1, sizeof(int));
     T->fs = calloc(ntot + 1, sizeof(int)); T->fc = calloc(ntot + 1, sizeof(int));
     T->ftag = calloc(ntot + 1, sizeof(int)); T->fi = calloc(3 * (size_t)ntot + 1, sizeof(int));
-    if (!T->n || !T->h || !T->radius || !T->box || !T->dup || !T->pmask || !T->hasdup) return -1;
+    if (!T->n || !T->h || !T->radius || !T->box || !T->dup || !T->rep || !T->pmask || !T->hasdup) return -1;
     if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi) return -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
@@ -1241,10 +1251,12 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
             /* offset from the mean of the three vertices (less round-off) */
             T->h[toff[s] + f] = (dot3(a, nn) + dot3(b, nn) + dot3(c, nn)) / 3.0;
             /* coplanar with an earlier triangle (a face split in triangles)? */
+            T->rep[toff[s] + f] = f;
             for (int g = 0; g < f; g++) {
                 const double *M = T->n + 3 * (toff[s] + g);
                 if (dot3(M, nn) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r) {
                     T->dup[toff[s] + f] = 1;
+                    T->rep[toff[s] + f] = g;
                     break;
                 }
             }
@@ -1253,24 +1265,35 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
          * (the test above, against each earlier triangle, so that both members of a pair see each other) */
         int anydup = 0;
         for (int f = 0; f < nt; f++) anydup |= T->dup[toff[s] + f];
-        if (!anydup || nv > 64 * PC_MASK_WORDS) continue;
-        T->hasdup[s] = 1;
-        for (int f = 0; f < nt; f++) {
-            const double *Nf = T->n + 3 * (toff[s] + f);
-            uint64_t *mf = T->pmask + (size_t)PC_MASK_WORDS * (toff[s] + f);
-            for (int g = 0; g < nt; g++) {
-                const double *M = T->n + 3 * (toff[s] + g);
-                if (g != f && !(dot3(M, Nf) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r)) continue;
-                const int *tri = t + 3 * (toff[s] + g);
-                for (int c = 0; c < 3; c++) mf[tri[c] >> 6] |= (uint64_t)1 << (tri[c] & 63);
+        if (!anydup) continue;
+        if (nv <= 64 * PC_MASK_WORDS) {
+            T->hasdup[s] = 1;
+            for (int f = 0; f < nt; f++) {
+                const double *Nf = T->n + 3 * (toff[s] + f);
+                uint64_t *mf = T->pmask + (size_t)PC_MASK_WORDS * (toff[s] + f);
+                for (int g = 0; g < nt; g++) {
+                    const double *M = T->n + 3 * (toff[s] + g);
+                    if (g != f && !(dot3(M, Nf) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r)) continue;
+                    const int *tri = t + 3 * (toff[s] + g);
+                    for (int c = 0; c < 3; c++) mf[tri[c] >> 6] |= (uint64_t)1 << (tri[c] & 63);
+                }
             }
+            merge_faces(T, s);
         }
-        merge_faces(T, s);
+        /* once coplanarity is decided: each duplicate takes the plane (normal
+         * and offset) of the earlier triangle it repeats, so that a plane is
+         * one plane on every path and posing it once is enough (pose_shape) */
+        for (int f = 0; f < nt; f++) {
+            int g = T->rep[toff[s] + f];
+            if (g == f) continue;
+            memcpy(T->n + 3 * (toff[s] + f), T->n + 3 * (toff[s] + g), 3 * sizeof(double));
+            T->h[toff[s] + f] = T->h[toff[s] + g];
+        }
     }
     return 0;
 }
 static void table_free(table_t *T) {
-    free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->pmask); free(T->hasdup);
+    free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->rep); free(T->pmask); free(T->hasdup);
     free(T->nface); free(T->foff); free(T->fs); free(T->fc); free(T->ftag); free(T->fi);
 }
 
@@ -1289,7 +1312,13 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
         matvec(R, T->v + 3 * (v0 + i), vo + 3 * i);
         vo[3 * i] += off[0]; vo[3 * i + 1] += off[1]; vo[3 * i + 2] += off[2];
     }
+    const int *rp = T->rep + t0;
     for (int f = 0; f < nt; f++) {
+        if (rp[f] != f) {             /* the plane of an earlier triangle, the same numbers (table_init) */
+            memcpy(no + 3 * f, no + 3 * rp[f], 3 * sizeof(double));
+            ho[f] = ho[rp[f]];
+            continue;
+        }
         matvec(R, T->n + 3 * (t0 + f), no + 3 * f);
         ho[f] = T->h[t0 + f] + dot3(no + 3 * f, off);
     }
@@ -1297,6 +1326,7 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
     P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
     P->pmask = T->hasdup[s] ? T->pmask + (size_t)PC_MASK_WORDS * t0 : NULL;
     P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
+    P->ra = 0;
     posed_faces(T, s, P);
 }
 
@@ -1471,6 +1501,7 @@ typedef struct {
     double wall_pos[PC_MAX_WALLS];   /* of the last step */
     /* per body pose state */
     double *R, *Rprev, *x, *xprev, *xbuild, *rv, *rn, *rh;
+    double *ra;                /* per body: posed_extent of its posed vertices rv */
     double *motion;            /* per body: sum over steps of a bound on any vertex's displacement (m) */
     double *spin;              /* per body: rotation vector of the last step (small angles) */
     int fast;                  /* 1: proofs of separation, culled clipping, shadows on demand; 0: the plain path */
@@ -1547,11 +1578,12 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     E->rv = malloc(sizeof(double) * 3 * (E->voffb[nb] + 1));
     E->rn = malloc(sizeof(double) * 3 * (E->toffb[nb] + 1));
     E->rh = malloc(sizeof(double) * (E->toffb[nb] + 1));
+    E->ra = calloc(nb + 1, sizeof(double));
     E->wft = calloc((size_t)nb * E->nw * 3 + 1, sizeof(double));
     E->wres = calloc((size_t)nb * E->nw * 10 + 1, sizeof(double));
     E->wtouch = calloc((size_t)nb * E->nw + 1, sizeof(int));
     E->work = calloc(nthreads, sizeof(work_t));
-    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->motion || !E->spin || !E->rv || !E->rn || !E->rh || !E->wft ||
+    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->motion || !E->spin || !E->rv || !E->rn || !E->rh || !E->ra || !E->wft ||
         !E->wres || !E->wtouch || !E->work) { pc_engine_free(E); return NULL; }
     for (int k = 0; k < nthreads; k++)
         if (work_init(&E->work[k], E->T.max_t, E->T.max_v)) { pc_engine_free(E); return NULL; }
@@ -1569,7 +1601,7 @@ void pc_engine_free(engine_t *E) {
     free(E->shape_own); free(E->size);
     free(E->R); free(E->Rprev); free(E->x); free(E->xprev); free(E->xbuild); free(E->voffb); free(E->toffb);
     free(E->motion); free(E->spin);
-    free(E->rv); free(E->rn); free(E->rh); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
+    free(E->rv); free(E->rn); free(E->rh); free(E->ra); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
     free(E->wtouch); free(E->cellbuf); free(E->cellhead); free(E->cellnext);
     free(E);
 }
@@ -1846,7 +1878,8 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
         vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
     }
     const double *nj = E->rn + 3 * E->toffb[j];
-    for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+    const int *rp = E->T.rep + E->T.toff[E->shape[j]];
+    for (int f = 0; f < ntj; f++) hj[f] = rp[f] != f ? hj[rp[f]] : E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     posed_t pa = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
                   E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0},
                   E->T.hasdup[E->shape[i]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[i]] : NULL};
@@ -1854,6 +1887,7 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
                   E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]},
                   E->T.hasdup[E->shape[j]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[j]] : NULL};
     posed_faces(&E->T, E->shape[i], &pa); posed_faces(&E->T, E->shape[j], &pb);
+    pa.ra = E->ra[i];
     *A = pa; *B = pb;
 }
 
@@ -1895,8 +1929,10 @@ static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
         for (int a = 0; a < nvj && mj > mi; a++) { double s = dot3(vj + 3 * a, p->axis) + od; if (s < mj) mj = s; }
         if (mi < mj) { memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_AXIS]++; return; }
     }
+    int searched_d = 0;       /* the search below ran from d (and failed) */
     if (E->fast && !hot) {
         double u[3], g;
+        searched_d = !has_axis;
         if (find_axis(vi, nvi, vj, nvj, d, has_axis ? p->axis : d, margin, PC_SEARCH_ITERATIONS, u, &g)) {
             keep_axis(E, p, u, g); memset(p->ft, 0, sizeof(p->ft)); cnt[PC_STAT_APART_SEARCH]++; return;
         }
@@ -1922,7 +1958,8 @@ static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
         if (sep[0] != 0 || sep[1] != 0 || sep[2] != 0) {
             g = axis_gap(vi, nvi, vj, nvj, d, sep);
             if (g > margin) keep_axis(E, p, sep, g);
-        } else if (find_axis(vi, nvi, vj, nvj, d, hot ? p->n : d, margin, PC_SEARCH_ITERATIONS, u, &g)) {
+        } else if (!(searched_d && !hot) &&   /* from d again: the same search, the same failure */
+                   find_axis(vi, nvi, vj, nvj, d, hot ? p->n : d, margin, PC_SEARCH_ITERATIONS, u, &g)) {
             keep_axis(E, p, u, g);
         }
         return;
@@ -2016,6 +2053,7 @@ static void pose_all(engine_t *E, int par, int motion) {
         double zero[3] = {0, 0, 0};
         pose_shape(&E->T, E->shape[b], E->R + 9 * b, zero, E->rv + 3 * E->voffb[b], E->rn + 3 * E->toffb[b],
                    E->rh + E->toffb[b], &P);
+        E->ra[b] = posed_extent(&P);
         if (motion) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
     }
 }
