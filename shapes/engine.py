@@ -160,6 +160,7 @@ class ContactEngine:
             raise EngineError("could not create the contact engine (out of memory?)")
         self.lib.pc_engine_set_mode(self.handle, int(bool(fast)))
         self.fast = bool(fast)
+        self.groups = None
         self.force = np.zeros((self.n, 3))
         self.torque = np.zeros((self.n, 3))
         self.wall_force = np.zeros((max(self.nw, 1), 3))
@@ -299,6 +300,24 @@ class ContactEngine:
         if self.lib.pc_engine_set_friction(self._live(), float(mu), float(mu_wall)) != 0:
             raise ValueError(f"friction coefficients must be finite and >= 0, got {mu!r}, {mu_wall!r}")
 
+    def set_groups(self, groups):
+        """Give the bodies groups: ``groups`` (n,) int, one per body row,
+        -1 for none (a YADE clump's members share the clump's id). Two bodies
+        of one group >= 0 are never a pair from now on (no contact, no
+        force between them), those listed are dropped at once; a state
+        restored later by :meth:`set_state` is cut the same way. ``None``:
+        no groups (a new engine's)."""
+        if groups is None:
+            self.groups = None
+            self.lib.pc_engine_set_groups(self._live(), None)
+            return
+        g = ckernel.i32(groups)
+        if g.shape != (self.n,):
+            raise ValueError(f"set_groups: one group per body ({self.n}), got shape {g.shape}")
+        if self.lib.pc_engine_set_groups(self._live(), ckernel.iptr(g)) != 0:
+            raise EngineError("could not set the groups (out of memory)")
+        self.groups = g
+
     @property
     def friction(self):
         """(mu, mu_wall) now."""
@@ -358,6 +377,8 @@ class ContactEngine:
             raise EngineError("could not restore the engine state (out of memory)")
         if "friction" in st:          # states taken before friction was part of them keep the engine's own
             self.set_friction(*np.asarray(st["friction"], float).reshape(2))
+        if getattr(self, "groups", None) is not None:     # the restored list holds no pair of one group
+            self.set_groups(self.groups)
 
     def contacts(self):
         """The touching contacts of the last step: a dict of arrays. ``i``,

@@ -1493,6 +1493,7 @@ typedef struct {
     int nb, nw, nthreads;
     const int *shape;          /* per body: row of the table (owned copy) */
     int *shape_own;
+    int *group;                /* per body: group (a YADE clump), NULL for none: pairs of one group >= 0 never listed */
     double *size;              /* per body d */
     double kv, ct, mu, mu_wall, skin;
     /* walls: axis (0,1,2), inward sign (+1 lo wall, -1 hi wall) */
@@ -1598,7 +1599,7 @@ void pc_engine_free(engine_t *E) {
     free(E->work);
     free((void *)E->T.voff); free((void *)E->T.toff); free((void *)E->T.v); free((void *)E->T.t);
     table_free(&E->T);
-    free(E->shape_own); free(E->size);
+    free(E->shape_own); free(E->size); free(E->group);
     free(E->R); free(E->Rprev); free(E->x); free(E->xprev); free(E->xbuild); free(E->voffb); free(E->toffb);
     free(E->motion); free(E->spin);
     free(E->rv); free(E->rn); free(E->rh); free(E->ra); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
@@ -1610,9 +1611,10 @@ static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shap
 
 /* List the pair (i, j), i < j, at the end of the new list (E->spare, *np
  * pairs so far) when their bounding spheres (ri: body i's radius) come
- * within the skin of each other; returns 0, or -1 when memory could not be
- * had. */
+ * within the skin of each other and they are not of one group
+ * (pc_engine_set_groups); returns 0, or -1 when memory could not be had. */
 static int list_pair(engine_t *E, int i, int j, double ri, int *np) {
+    if (E->group && E->group[i] >= 0 && E->group[i] == E->group[j]) return 0;   /* members of one clump */
     double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
     double reach = ri + body_radius(E, j) + E->skin;
     if (dot3(d, d) > reach * reach) return 0;
@@ -2305,6 +2307,31 @@ int pc_engine_set_history(engine_t *E, int i, int j, const double *ft) {
     for (int k = 0; k < E->npairs; k++)
         if (E->pairs[k].i == i && E->pairs[k].j == j) { memcpy(E->pairs[k].ft, ft, 3 * sizeof(double)); return 0; }
     return -1;
+}
+
+/* Give the bodies groups (group[b], per body row; -1: none; NULL: no
+ * groups, as a new engine has): two bodies of one group >= 0 (the members
+ * of a YADE clump, which move as one rigid body) are never a pair, as YADE's
+ * collider never makes an interaction between members of one clump. The
+ * pairs of one group already listed are dropped now (from a state carried
+ * over), later lists skip them. Returns 0, or -1 when memory could not be
+ * had (the groups then unchanged). */
+int pc_engine_set_groups(engine_t *E, const int *group) {
+    if (!group) { free(E->group); E->group = NULL; return 0; }
+    int *g = malloc(sizeof(int) * (E->nb + 1));
+    if (!g) return -1;
+    memcpy(g, group, sizeof(int) * E->nb);
+    free(E->group);
+    E->group = g;
+    int q = 0;
+    for (int k = 0; k < E->npairs; k++) {
+        const pair_t *p = E->pairs + k;
+        if (g[p->i] >= 0 && g[p->i] == g[p->j]) continue;
+        if (q != k) E->pairs[q] = *p;
+        q++;
+    }
+    E->npairs = q;
+    return 0;
 }
 
 /* Change the friction coefficients between steps (e.g. frictionless

@@ -57,3 +57,19 @@ def test_triax_polyhedra(tmp_path):
     assert np.all(data["contacts"] > 0)
     first = float(re.search(r"Isotropic state .*porosity ([0-9.]+)", text).group(1))
     assert data["porosity"][-1] < first
+
+
+def test_clump_deposition(tmp_path):
+    """8 clumps a wave, 2 waves: each wave appended mid-run is picked up (a
+    scan each), no interaction between members of one clump, the pile grows,
+    and at rest the box carries the clumps' weight (static equilibrium,
+    averaged over 0.05 s, within 10 % as for the ballast box)."""
+    text = run_example("clump_deposition.py", [8, 2], tmp_path)
+    m = re.search(r"at rest: box reaction ([-0-9.e+]+) N, weight of the clumps ([0-9.e+]+) N", text)
+    assert m, text[-2000:]
+    assert float(m.group(1)) == pytest.approx(float(m.group(2)), rel=0.1)
+    assert "wave 2: 16 clumps" in text and re.search(r"wave 2: .* 2 scans", text)
+    rows = np.loadtxt(tmp_path / "clump-deposit.txt", ndmin=2)
+    assert rows[:, 0].tolist() == [1, 2] and rows[:, 1].tolist() == [8, 16]
+    assert rows[1, 2] > rows[0, 2] and np.all(rows[:, 3] > 0)
+    assert np.all(rows[:, 4] == 0)                                 # no contact within a clump

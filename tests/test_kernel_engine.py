@@ -636,7 +636,7 @@ def test_a_closed_engine_refuses_every_call_in_one_line():
     pos = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.9 * d]])
     quat = np.tile([1.0, 0.0, 0.0, 0.0], (2, 1))
     for call in (lambda: eng.step(pos, quat), eng.contacts, eng.state, eng.memory_bytes, lambda: eng.friction,
-                 lambda: eng.set_friction(0.3, 0.0)):
+                 lambda: eng.set_friction(0.3, 0.0), lambda: eng.set_groups([0, 0])):
         with pytest.raises(EngineError, match="^the contact engine is closed$"):
             call()
 
@@ -716,3 +716,45 @@ def test_polygonal_faces_of_coplanar_triangles_exact_against_scipy():
                 assert ref < 1e-12
             kept += eng.stats["structure_kept"]
     assert contacts > 60 and kept > 0.25 * contacts
+
+
+def test_bodies_of_one_group_are_never_a_pair(grains):
+    """Groups (a YADE clump's members): the contacts of an engine with
+    groups are those of the engine without them, value for value, less the
+    pairs of one group >= 0, which are not even listed; the bodies' forces
+    are the sums of the remaining contacts'. Set on a running engine, the
+    groups drop the listed pairs at once, and a state restored afterwards
+    is cut the same way; one group per body or a one-line error."""
+    verts, tris, pos, quat, sizes = packing(grains, 3, seed=1)
+    n = len(verts)
+    groups = np.full(n, -1)
+    groups[:9] = np.arange(9) // 3          # three groups of three bodies, the others in none
+    plain, grouped = engine_for(verts, tris, sizes, walls=False), engine_for(verts, tris, sizes, walls=False)
+    grouped.set_groups(groups)
+    plain.step(pos, quat)
+    f_grouped, _, _ = grouped.step(pos, quat)
+    same = lambda i, j: (groups[i] >= 0) & (groups[i] == groups[j])
+    c, g = plain.contacts(), grouped.contacts()
+    keep = ~same(c["i"], c["j"])
+    assert (~keep).sum() > 0 and keep.sum() > 20       # the packing has contacts of both kinds
+    for k in ("i", "j", "volume", "normal", "point", "force_normal", "force_tangential"):
+        np.testing.assert_array_equal(g[k], c[k][keep])
+    ij = grouped.state()["pair_ids"]
+    assert len(ij) and not same(ij[:, 0], ij[:, 1]).any()
+    f = np.zeros((n, 3))
+    np.add.at(f, g["j"], g["force_normal"] + g["force_tangential"])
+    np.add.at(f, g["i"], -(g["force_normal"] + g["force_tangential"]))
+    np.testing.assert_allclose(f_grouped, f, rtol=0, atol=1e-12 * np.abs(f).max())
+    # on a running engine: the listed pairs of one group go at once, a restored state is cut too
+    st = plain.state()
+    plain.set_groups(groups)
+    assert not same(*plain.state()["pair_ids"].T).any()
+    plain.set_state(st)
+    np.testing.assert_array_equal(plain.state()["pair_ids"], ij)
+    plain.step(pos, quat)
+    grouped.step(pos, quat)                  # the second step of both, on the same poses
+    for k in ("i", "j", "volume", "force_normal", "force_tangential"):
+        np.testing.assert_array_equal(plain.contacts()[k], grouped.contacts()[k])
+    plain.set_groups(None)                   # no groups: the next rebuild lists every pair again
+    with pytest.raises(ValueError, match="^set_groups: one group per body"):
+        plain.set_groups(groups[:-1])

@@ -9,7 +9,8 @@
 // work without leaving C++:
 //
 //   1. checks that the bodies are still those it was bound to (a body added
-//      or erased, an id given to another body): if not, it calls the Python
+//      or erased, an id given to another body, a body clumped or released
+//      from its clump: its clumpId changed): if not, it calls the Python
 //      scan again (under the GIL), which rebuilds the kernel's engine with the
 //      pairs' histories carried over and binds it again;
 //   2. reads the pose (State::pos, State::ori) of every kernel body and the
@@ -76,6 +77,7 @@ class PolyhedraContactEngine : public GlobalEngine {
 	double *        posBuf { nullptr }, *quatBuf { nullptr }, *wallPosBuf { nullptr }, *forceBuf { nullptr }, *torqueBuf { nullptr },
 	       *wallForceBuf { nullptr }, *statBuf { nullptr };
 	std::vector<const Body*> rowBody, wallBody; // the bodies bound, to notice a change
+	std::vector<int>         rowClump;          // their clumpId when bound (a body clumped or released: scan again)
 	size_t                   nBodiesBound { 0 };
 	boost::python::object    scanFn;            // Python: rescans the scene and binds again
 	bool                     scanning { false };
@@ -108,7 +110,7 @@ class PolyhedraContactEngine : public GlobalEngine {
 		const long n = (long)B.size();
 		for (size_t k = 0; k < ids.size(); k++) {
 			const int id = ids[k];
-			if (id < 0 || id >= n || B[id].get() != rowBody[k]) return true;
+			if (id < 0 || id >= n || B[id].get() != rowBody[k] || B[id]->clumpId != rowClump[k]) return true;
 		}
 		for (size_t k = 0; k < walls.size(); k++) {
 			const int id = walls[k];
@@ -256,10 +258,12 @@ public:
 		const BodyContainer& B = *scene->bodies;
 		const long           n = (long)B.size();
 		rowBody.assign(ids.size(), nullptr);
+		rowClump.assign(ids.size(), Body::ID_NONE);
 		wallBody.assign(walls.size(), nullptr);
 		for (size_t k = 0; k < ids.size(); k++) {
 			if (ids[k] < 0 || ids[k] >= n || !B[ids[k]]) throw std::invalid_argument("PolyhedraContactEngine.bind: body id " + std::to_string(ids[k]) + " is not a body of the scene");
-			rowBody[k] = B[ids[k]].get();
+			rowBody[k]  = B[ids[k]].get();
+			rowClump[k] = B[ids[k]]->clumpId;
 		}
 		for (size_t k = 0; k < walls.size(); k++) {
 			if (walls[k] < 0 || walls[k] >= n || !B[walls[k]]) throw std::invalid_argument("PolyhedraContactEngine.bind: wall id " + std::to_string(walls[k]) + " is not a body of the scene");
@@ -299,6 +303,7 @@ public:
 		walls.clear();
 		wallAxis.clear();
 		rowBody.clear();
+		rowClump.clear();
 		wallBody.clear();
 		nBodiesBound = scene->bodies->size();
 		idle         = true;

@@ -21,9 +21,19 @@ scene:
   on one side): a half-space beyond the plane. A plane at an angle is a
   large fixed ``Polyhedra`` slab (:func:`plane_body`), or two facets.
 
+Clumps (``O.bodies.appendClumped``, ``O.bodies.clump``) of polyhedra or
+facets: the ``Clump`` body itself is not computed, its members are ordinary
+bodies that are never a pair with each other (each member's group, its
+``clumpId``, is given to the kernel, as YADE's collider never makes an
+interaction between members of one clump); their contact forces go on the
+members, which ``NewtonIntegrator`` sums into the clump. A clumped wall is
+refused in one line.
+
 Bodies added or erased during the run are picked up at the next step (the
 engine notices, and this module's scan rebuilds the kernel's engine with the
-pairs' shear histories carried over). A periodic cell is refused in one line.
+pairs' shear histories carried over), as are bodies clumped or released from
+their clump (their ``clumpId`` changed). A periodic cell is refused in one
+line.
 
 The contact law is YADE's volumetric law with the exact overlap (the law of
 the project's own scene, shapes/engine.py): F_n = k_n V n on the overlap's
@@ -181,6 +191,7 @@ class _Kernel(ContactEngine):
             raise EngineError("could not create the contact engine (out of memory?)")
         self.lib.pc_engine_set_mode(self.handle, 1)
         self.fast = True
+        self.groups = None
         self.force = np.zeros((n, 3))
         self.torque = np.zeros((n, 3))
         self.wall_force = np.zeros((max(self.nw, 1), 3))
@@ -231,6 +242,7 @@ class SceneContacts:
         self.wall_sign = {}       # wall id -> +1 / -1, once decided
         self.facet_side = {}      # facet id -> +1 / -1, once decided
         self.shapes = {}          # body id -> (vertices, triangles) in the body frame
+        self.group_of = {}        # body id -> its clump id (-1: none) at the last scan
         self.scans = 0
         self.note = ""
 
@@ -250,8 +262,11 @@ class SceneContacts:
             elif kind == "Facet":
                 facets.append(b)
             elif kind == "Wall":
+                if b.isClumpMember:
+                    raise SceneError(f"PolyhedraContactEngine: wall {b.id} is a member of clump {b.clumpId}; "
+                                     "walls cannot be clumped here (clump polyhedra, or facets)")
                 walls.append(b)
-            elif kind != "Clump":
+            elif kind != "Clump":            # a clump is its members (ordinary bodies here); it moves them
                 raise SceneError(f"PolyhedraContactEngine: body {b.id} is a {kind}; this engine computes "
                                  "Polyhedra, Facet and Wall bodies only")
         return grains, facets, walls
@@ -332,8 +347,12 @@ class SceneContacts:
         wids = [w.id for w in walls]
         kern = _Kernel(verts, tris, kn, ks, mu, mu_wall, skin, [w.shape.axis for w in walls],
                        [self.wall_sign[w.id] for w in walls], self.threads or 0)
+        groups = [b.clumpId if b.isClumpMember else -1 for b in grains + facets]
         if self.kernel is not None:
-            self._carry(kern, rows, wids, grains + facets)
+            self._carry(kern, rows, wids, grains + facets, groups)
+        if any(g >= 0 for g in groups):    # members of one clump: never a pair (YADE's Collider::mayCollide)
+            kern.set_groups(groups)
+        self.group_of = dict(zip(rows, groups))
         self._drop()
         self.kernel, self.rows, self.walls = kern, rows, wids
         e.ids, e.walls, e.wallAxis, e.nGrains = rows, wids, [w.shape.axis for w in walls], len(grains)
@@ -358,10 +377,13 @@ class SceneContacts:
         self.e.geomOffsets = field_offsets(cls, PolyhedraGeom(), sizes["PolyhedraGeom"], GEOM_FIELDS)
         self.e.physOffsets = field_offsets(cls, PolyhedraPhys(), sizes["PolyhedraPhys"], PHYS_FIELDS)
 
-    def _carry(self, new, rows, wids, bodies):
+    def _carry(self, new, rows, wids, bodies, groups):
         """Give ``new`` the state of the current kernel, row by body id:
         poses, neighbour list with the shear histories, wall contacts; a new
-        body starts from its pose now, with the neighbour list rebuilt."""
+        body starts from its pose now, with the neighbour list rebuilt, as
+        does one whose clump changed (``groups``: each row's clump id, -1
+        for none; a body released from a clump gets its pairs with the
+        clump's other members back)."""
         old = self.kernel
         st = old.state()
         orow = {b: k for k, b in enumerate(self.rows)}
@@ -376,6 +398,8 @@ class SceneContacts:
         for k, b in enumerate(bodies):
             if mp[k] >= 0:
                 x[k], R[k], xb[k], mo[k] = st["x"][mp[k]], st["R"][mp[k]], st["xbuild"][mp[k]], st["motion"][mp[k]]
+                if self.group_of.get(b.id, -1) != groups[k]:
+                    xb[k] = x[k] + _FAR
             else:
                 x[k] = tuple(b.state.pos)
                 w, qx, qy, qz = b.state.ori.__getinitargs__()
