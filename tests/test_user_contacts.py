@@ -141,6 +141,25 @@ def test_get_stress_equals_postproc_stress(res):
     np.testing.assert_allclose(-theirs, ours, rtol=0, atol=1e-12 * np.abs(ours).max())
 
 
+def test_two_facets_are_never_a_pair(res):
+    """A facetBox's facets meet along edges (each side's two triangles along
+    a diagonal), so their bounding spheres overlap and, as any two bodies,
+    they would be listed; they are not (YADE has no facet-facet functor),
+    while the grains are listed against the facets."""
+    r = res["stress"]
+    ng, rows = r["n_grains"], r["rows"]
+    facets = {int(k): np.array(v) for k, v in r["facets"].items()}
+    assert len(facets) == 10 and sorted(rows[ng:]) == sorted(facets)
+    # facets that share a vertex (to round-off): the pairs a sphere test would list
+    ids = sorted(facets)
+    sharing = [(a, b) for k, a in enumerate(ids) for b in ids[k + 1:]
+               if np.min(np.linalg.norm(facets[a][:, None] - facets[b][None], axis=2)) < 1e-12]
+    assert len(sharing) >= 20
+    kinds = [(i >= ng) + (j >= ng) for i, j in r["pairs"]]
+    assert kinds.count(2) == 0
+    assert kinds.count(1) > 0 and kinds.count(0) > 0
+
+
 def test_vtk_exporter_writes_the_interactions(res):
     """export.VTKExporter.exportInteractions on O.interactions filled by the
     engine: one line cell per contact, with the normal force and volume the

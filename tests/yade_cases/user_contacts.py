@@ -146,6 +146,10 @@ vtk.exportInteractions(what=dict(forceN="i.phys.normalForce.norm()", volume="i.g
 out["stress"] = {"getStress": [[st[a, b] for b in range(3)] for a in range(3)], "volume": V,
                  "pos": {b.id: tuple(b.state.pos) for b in O.bodies}, "kernel": kernel_contacts("stress"),
                  "count": O.interactions.countReal(), "unbalanced": utils.unbalancedForce(),
+                 "pairs": SCENES["stress"].kernel.state()["pair_ids"].tolist(), "rows": SCENES["stress"].rows,
+                 "n_grains": SCENES["stress"].e.nGrains,
+                 "facets": {b.id: [tuple(b.state.pos + b.state.ori * v) for v in b.shape.vertices]
+                            for b in O.bodies if type(b.shape).__name__ == "Facet"},
                  "vtk": sorted(os.path.join(tmp, f) for f in os.listdir(tmp) if f.endswith(".vtk"))}
 
 # ---------------------------------------------------------------- bodies added mid-run

@@ -25,7 +25,9 @@ Clumps (``O.bodies.appendClumped``, ``O.bodies.clump``) of polyhedra or
 facets: the ``Clump`` body itself is not computed, its members are ordinary
 bodies that are never a pair with each other (each member's group, its
 ``clumpId``, is given to the kernel, as YADE's collider never makes an
-interaction between members of one clump); their contact forces go on the
+interaction between members of one clump). Two facets are never a pair
+either (YADE has no facet-facet functor), unless they are members of two
+different clumps; their contact forces go on the
 members, which ``NewtonIntegrator`` sums into the clump. A clumped wall is
 refused in one line.
 
@@ -71,6 +73,9 @@ from shapes.engine import ContactEngine, EngineError
 
 from ..scene.yadedump import outward_triangles
 from . import load
+
+#: the kernel group of the facets that are in no clump: no body id reaches it (C int)
+FACET_GROUP = 2 ** 31 - 1
 
 #: kernel body state for a body that is new: far from its neighbour-list position, so the list is rebuilt
 _FAR = 1e30
@@ -347,10 +352,13 @@ class SceneContacts:
         wids = [w.id for w in walls]
         kern = _Kernel(verts, tris, kn, ks, mu, mu_wall, skin, [w.shape.axis for w in walls],
                        [self.wall_sign[w.id] for w in walls], self.threads or 0)
-        groups = [b.clumpId if b.isClumpMember else -1 for b in grains + facets]
+        # members of one clump are never a pair (YADE's Collider::mayCollide), nor are two facets (YADE has
+        # no facet-facet functor: a facetBox's facets meet along edges, their prisms at the corners)
+        groups = ([b.clumpId if b.isClumpMember else -1 for b in grains]
+                  + [f.clumpId if f.isClumpMember else FACET_GROUP for f in facets])
         if self.kernel is not None:
             self._carry(kern, rows, wids, grains + facets, groups)
-        if any(g >= 0 for g in groups):    # members of one clump: never a pair (YADE's Collider::mayCollide)
+        if any(g >= 0 for g in groups):
             kern.set_groups(groups)
         self.group_of = dict(zip(rows, groups))
         self._drop()
