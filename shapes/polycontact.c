@@ -885,6 +885,7 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
     } else {
         int *nout = w->nout;
         for (int k = 0; k < ntB; k++) {
+            if (B->dup && B->dup[k]) { nout[k] = 0; continue; }   /* an earlier triangle's plane, the same numbers */
             const double *n = B->n + 3 * k;
             double h = B->h[k];
             int c = 0;
@@ -897,6 +898,7 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
             nout[k] = c;
         }
         for (int k = 0; k < A->nt; k++) {
+            if (A->dup && A->dup[k]) continue;
             const double *n = A->n + 3 * k;
             double h = A->h[k];
             int c = 0;
@@ -948,6 +950,13 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
  *     would cut nothing; the others keep their relative order.
  * Planes that cut nothing change nothing, so the sequence of effective cuts,
  * and every polygon, is the plain path's. */
+/* The round-off tolerance of a plane test in overlap_pair: the coordinates
+ * are O(r_A + |x_B - x_A|). */
+static inline double pair_eps(const posed_t *A, const double *dAB) {
+    double ra = posed_extent(A);
+    return 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
+}
+
 static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, work_t *w, overlap_t *r,
                          double *sep_axis, int hot, int cull, int want_shadow, keep_t *keep) {
     int ntB = B->nt;
@@ -959,9 +968,7 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
      * plane that cut (what is left only shrinks, so a stale sphere is still
      * a valid, looser bound). */
     double sc[3] = {0, 0, 0}, sr = INFINITY;
-    /* round-off tolerance of a plane test: the coordinates are O(r_A + |x_B - x_A|) */
-    double ra = posed_extent(A);
-    double eps = 1e-13 * (ra + (dAB ? fabs(dAB[0]) + fabs(dAB[1]) + fabs(dAB[2]) : 0));
+    double eps = pair_eps(A, dAB);
     r->fallback = 0; r->kept = 0;
     if (cull && hot && dAB && keep && keep->ok) {
         if (overlap_kept(A, B, dAB, w, r, keep, want_shadow, eps) == 0) { r->kept = 1; return; }
@@ -1020,6 +1027,7 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
     /* distances of A's vertices to B's planes; separation by a face of B */
     int *nout = w->nout;
     for (int k = 0; k < ntB; k++) {
+        if (B->dup && B->dup[k]) { nout[k] = 0; continue; }   /* an earlier triangle's plane, the same numbers */
         const double *n = B->n + 3 * k;
         double h = B->h[k];
         int c = 0;
@@ -1033,6 +1041,7 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
     }
     /* separation by a face of A */
     for (int k = 0; k < A->nt; k++) {
+        if (A->dup && A->dup[k]) continue;
         const double *n = A->n + 3 * k;
         double h = A->h[k];
         int c = 0;
@@ -1871,17 +1880,31 @@ static int find_axis(const double *va, int na, const double *vb, int nb, const d
 /* ------------------------------------------------------------------ one pair, one step */
 /* B (body j) posed relative to A (body i): vertices + d and plane offsets
  * + n.d, in the thread's scratch w->dA (sized max_v * (max_t + 1)). */
-static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *w, posed_t *A, posed_t *B) {
+static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *w, posed_t *A, posed_t *B,
+                      const keep_t *K) {
     const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
     int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
     int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
     double *vjr = w->dA, *hj = w->dA + 3 * E->T.max_v;
-    for (int a = 0; a < nvj; a++) {
-        vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
-    }
-    const double *nj = E->rn + 3 * E->toffb[j];
     const int *rp = E->T.rep + E->T.toff[E->shape[j]];
-    for (int f = 0; f < ntj; f++) hj[f] = rp[f] != f ? hj[rp[f]] : E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+    const double *nj = E->rn + 3 * E->toffb[j];
+    if (K) {
+        /* for overlap_kept only: the vertices of B its structure names, and
+         * the planes of B that are no duplicate (what it reads) */
+        for (int v = 0; v < K->nv; v++) {
+            if (K->vt[v] != KV_B && K->vt[v] != KV_BEDGE) continue;
+            for (int e = 0; e < (K->vt[v] == KV_B ? 1 : 2); e++) {
+                int a = e ? K->vb[v] : K->va[v];
+                vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
+            }
+        }
+        for (int f = 0; f < ntj; f++) if (rp[f] == f) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+    } else {
+        for (int a = 0; a < nvj; a++) {
+            vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
+        }
+        for (int f = 0; f < ntj; f++) hj[f] = rp[f] != f ? hj[rp[f]] : E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+    }
     posed_t pa = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
                   E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0},
                   E->T.hasdup[E->shape[i]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[i]] : NULL};
@@ -1940,11 +1963,23 @@ static void pair_step(engine_t *E, pair_t *p, work_t *w, int *cnt) {
         }
     }
     posed_t A, B;
-    pose_pair(E, i, j, d, w, &A, &B);
     overlap_t r = {0};
-    double sep[3];
+    double sep[3] = {0, 0, 0};
     cnt[PC_STAT_CLIPPED]++;
-    overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast, &p->keep);
+    int kept = 0;
+    if (E->fast && hot && p->keep.ok) {
+        /* the structure kept from the last step, on B posed only as far as it reads; else the cuts */
+        pose_pair(E, i, j, d, w, &A, &B, &p->keep);
+        kept = overlap_kept(&A, &B, d, w, &r, &p->keep, 0, pair_eps(&A, d)) == 0 ? 1 : -1;
+    }
+    if (kept == 1) {
+        r.kept = 1;
+    } else {
+        pose_pair(E, i, j, d, w, &A, &B, NULL);
+        if (kept == -1) p->keep.ok = 0;
+        overlap_pair(&A, &B, d, w, &r, sep, hot, E->fast, !E->fast, &p->keep);
+        if (kept == -1) r.kept = -1;
+    }
     p->hot_used = hot;
     cnt[PC_STAT_CLIP_FALLBACKS] += r.fallback;
     cnt[PC_STAT_KEPT] += r.kept == 1;
@@ -2199,7 +2234,7 @@ static void ensure_shadows(engine_t *E) {
             int i = p->i, j = p->j;
             double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
             posed_t A, B;
-            pose_pair(E, i, j, d, w, &A, &B);
+            pose_pair(E, i, j, d, w, &A, &B, NULL);
             overlap_t r = {0};
             overlap_pair(&A, &B, d, w, &r, NULL, p->hot_used, E->fast, 1, NULL);
             p->fp[0] = r.footprint[0]; p->fp[1] = r.footprint[1]; p->area = r.area;
