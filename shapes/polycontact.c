@@ -630,7 +630,7 @@ static void mesh_integrate(work_t *w, int buf, int ntA, const double *nA, const 
     const int *fs = w->mfs[buf], *fc = w->mfc[buf], *ft = w->mft[buf], *fi = w->mfi[buf];
     if (nf == 0) { overlap_zero(r); return; }
     const double *o = V + 3 * fi[fs[0]];
-    double V6 = 0, C[3] = {0, 0, 0}, SA[3] = {0, 0, 0}, Stot = 0;
+    double V6 = 0, C[3] = {0, 0, 0}, SA[3] = {0, 0, 0}, Stot = 0, L1 = 0, *an2 = w->md;
     for (int f = 0; f < nf; f++) {
         const int *ix = fi + fs[f];
         const double *p0 = V + 3 * ix[0];
@@ -651,13 +651,21 @@ static void mesh_integrate(work_t *w, int buf, int ntA, const double *nA, const 
             cross3(e1, e2, t);
             av[0] += 0.5 * t[0]; av[1] += 0.5 * t[1]; av[2] += 0.5 * t[2];
         }
-        Stot += sqrt(dot3(av, av));
+        an2[f] = dot3(av, av);
+        L1 += fabs(av[0]) + fabs(av[1]) + fabs(av[2]);
         if (ft[f] >= 0 && ft[f] < ntA) {
             const double *nn = nA + 3 * ft[f];
             double a = dot3(av, nn);
             SA[0] += a * nn[0]; SA[1] += a * nn[1]; SA[2] += a * nn[2];
         }
     }
+    /* Stot, the sum of the faces' areas, enters only finish_overlap's test
+     * |S_A| > 1e-9 Stot; the sum of their 1-norms bounds it from above, so
+     * when |S_A| clears that bound the test is decided, and the square roots
+     * are taken only when it does not (the same sum as integrate's) */
+    double s = sqrt(dot3(SA, SA));
+    if (s > 1e-9 * L1 * (1 + 1e-12)) Stot = L1;
+    else for (int f = 0; f < nf; f++) Stot += sqrt(an2[f]);
     finish_overlap(w, V6, C, o, SA, Stot, xB_minus_xA, V, w->mnv[buf], want_shadow, r);
 }
 
@@ -835,7 +843,8 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         const double *n = tag < ntA ? A->n + 3 * tag : B->n + 3 * (tag - ntA);
         w->mfs[0][f] = q; w->mfc[0][f] = m; w->mft[0][f] = tag;
         for (int i = 0; i < m; i++) {
-            const double *a = V + 3 * K->fi[q + (i + m - 1) % m], *b = V + 3 * K->fi[q + i], *c = V + 3 * K->fi[q + (i + 1) % m];
+            const double *a = V + 3 * K->fi[q + (i ? i - 1 : m - 1)], *b = V + 3 * K->fi[q + i];
+            const double *c = V + 3 * K->fi[q + (i + 1 < m ? i + 1 : 0)];
             double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - b[0], c[1] - b[1], c[2] - b[2]}, x[3];
             cross3(e1, e2, x);
             double t = dot3(x, n);                                 /* the lengths only when it turns the wrong way */
@@ -1877,14 +1886,26 @@ static int find_axis(const double *va, int na, const double *vb, int nb, const d
     return 0;
 }
 
+/* Body b of the engine as a posed_t, field by field: vertices v, offsets
+ * h (its normals are the posed E->rn), placed at off (NULL: the origin). */
+static inline void posed_body(const engine_t *E, int b, const double *v, const double *h, const double *off, posed_t *P) {
+    int s = E->shape[b];
+    P->nv = E->voffb[b + 1] - E->voffb[b]; P->nt = E->toffb[b + 1] - E->toffb[b];
+    P->v = v; P->t = E->T.t + 3 * E->T.toff[s]; P->n = E->rn + 3 * E->toffb[b]; P->h = h;
+    P->R = E->R + 9 * b; P->box = E->T.box + 6 * s; P->dup = E->T.dup + E->T.toff[s];
+    P->off[0] = off ? off[0] : 0; P->off[1] = off ? off[1] : 0; P->off[2] = off ? off[2] : 0;
+    P->pmask = E->T.hasdup[s] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[s] : NULL;
+    P->ra = 0;
+    posed_faces(&E->T, s, P);
+}
+
 /* ------------------------------------------------------------------ one pair, one step */
 /* B (body j) posed relative to A (body i): vertices + d and plane offsets
  * + n.d, in the thread's scratch w->dA (sized max_v * (max_t + 1)). */
 static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *w, posed_t *A, posed_t *B,
                       const keep_t *K) {
     const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
-    int nvi = E->voffb[i + 1] - E->voffb[i], nvj = E->voffb[j + 1] - E->voffb[j];
-    int ntj = E->toffb[j + 1] - E->toffb[j], nti = E->toffb[i + 1] - E->toffb[i];
+    int nvj = E->voffb[j + 1] - E->voffb[j], ntj = E->toffb[j + 1] - E->toffb[j];
     double *vjr = w->dA, *hj = w->dA + 3 * E->T.max_v;
     const int *rp = E->T.rep + E->T.toff[E->shape[j]];
     const double *nj = E->rn + 3 * E->toffb[j];
@@ -1905,15 +1926,9 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
         }
         for (int f = 0; f < ntj; f++) hj[f] = rp[f] != f ? hj[rp[f]] : E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     }
-    posed_t pa = {nvi, nti, vi, E->T.t + 3 * E->T.toff[E->shape[i]], E->rn + 3 * E->toffb[i], E->rh + E->toffb[i],
-                  E->R + 9 * i, E->T.box + 6 * E->shape[i], E->T.dup + E->T.toff[E->shape[i]], {0, 0, 0},
-                  E->T.hasdup[E->shape[i]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[i]] : NULL};
-    posed_t pb = {nvj, ntj, vjr, E->T.t + 3 * E->T.toff[E->shape[j]], nj, hj,
-                  E->R + 9 * j, E->T.box + 6 * E->shape[j], E->T.dup + E->T.toff[E->shape[j]], {d[0], d[1], d[2]},
-                  E->T.hasdup[E->shape[j]] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[E->shape[j]] : NULL};
-    posed_faces(&E->T, E->shape[i], &pa); posed_faces(&E->T, E->shape[j], &pb);
-    pa.ra = E->ra[i];
-    *A = pa; *B = pb;
+    posed_body(E, i, vi, E->rh + E->toffb[i], NULL, A);
+    posed_body(E, j, vjr, hj, d, B);
+    A->ra = E->ra[i];
 }
 
 /* Keep a proof of separation for the next steps: the axis, its gap and the
