@@ -1327,18 +1327,23 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
                        double *vo, double *no, double *ho, posed_t *P) {
     int v0 = T->voff[s], nv = T->voff[s + 1] - v0, t0 = T->toff[s], nt = T->toff[s + 1] - t0;
     for (int i = 0; i < nv; i++) {
-        matvec(R, T->v + 3 * (v0 + i), vo + 3 * i);
-        vo[3 * i] += off[0]; vo[3 * i + 1] += off[1]; vo[3 * i + 2] += off[2];
+        double x[3];                  /* in registers, then stored once */
+        matvec(R, T->v + 3 * (v0 + i), x);
+        vo[3 * i] = x[0] + off[0]; vo[3 * i + 1] = x[1] + off[1]; vo[3 * i + 2] = x[2] + off[2];
     }
     const int *rp = T->rep + t0;
+    int ndup = 0;
     for (int f = 0; f < nt; f++) {
-        if (rp[f] != f) {             /* the plane of an earlier triangle, the same numbers (table_init) */
-            memcpy(no + 3 * f, no + 3 * rp[f], 3 * sizeof(double));
-            ho[f] = ho[rp[f]];
-            continue;
-        }
-        matvec(R, T->n + 3 * (t0 + f), no + 3 * f);
-        ho[f] = T->h[t0 + f] + dot3(no + 3 * f, off);
+        if (rp[f] != f) { ndup++; continue; }
+        double x[3];
+        matvec(R, T->n + 3 * (t0 + f), x);
+        no[3 * f] = x[0]; no[3 * f + 1] = x[1]; no[3 * f + 2] = x[2];
+        ho[f] = T->h[t0 + f] + dot3(x, off);
+    }
+    for (int f = 0; f < nt && ndup; f++) {   /* the plane of an earlier triangle, the same numbers (table_init) */
+        if (rp[f] == f) continue;
+        no[3 * f] = no[3 * rp[f]]; no[3 * f + 1] = no[3 * rp[f] + 1]; no[3 * f + 2] = no[3 * rp[f] + 2];
+        ho[f] = ho[rp[f]];
     }
     P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
     P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
