@@ -1912,7 +1912,7 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
     int nvj = E->voffb[j + 1] - E->voffb[j], ntj = E->toffb[j + 1] - E->toffb[j];
     double *vjr = w->dA, *hj = w->dA + 3 * E->T.max_v;
-    const int *rp = E->T.rep + E->T.toff[E->shape[j]];
+    const unsigned char *dup = E->T.dup + E->T.toff[E->shape[j]];
     const double *nj = E->rn + 3 * E->toffb[j];
     if (K) {
         /* for overlap_kept only: the vertices of B its structure names, and
@@ -1924,12 +1924,12 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
                 vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
             }
         }
-        for (int f = 0; f < ntj; f++) if (rp[f] == f) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+        for (int f = 0; f < ntj; f++) if (!dup[f]) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     } else {
         for (int a = 0; a < nvj; a++) {
             vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
         }
-        for (int f = 0; f < ntj; f++) hj[f] = rp[f] != f ? hj[rp[f]] : E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+        for (int f = 0; f < ntj; f++) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     }
     posed_body(E, i, vi, E->rh + E->toffb[i], NULL, A);
     posed_body(E, j, vjr, hj, d, B);
