@@ -99,3 +99,23 @@ def test_the_loaded_engine_before_its_first_step(runs):
             assert e["class"] == "PolyhedraContactEngine" and e["label"] == "grains" and e["fillEvery"] == 1
             assert not e["hasScan"] and e["saved"] > 0
     assert runs["save"][0][1]["tmp_engine"]["saved"] == runs["load"][0][1]["engine"]["saved"]
+
+
+def test_a_loaded_engine_without_the_clone_on_the_path_says_why(runs, tmp_path):
+    """A YADE started with YADE_PREFIX (the class known, the project's
+    Python not on sys.path) loads the saved scene, and its first step
+    stops with one line naming what is missing."""
+    from yade_scripts import yadeplugin
+
+    saved = runs["save"][0][1]["file"]
+    script = tmp_path / "bare.py"
+    script.write_text(f"O.load({saved!r})\ntry:\n    O.step()\nexcept Exception as exc:\n"
+                      "    print('STOPPED ' + type(exc).__name__ + ': ' + str(exc))\n")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env.update(YADE_PREFIX=yadeplugin.status()["prefix"], OMP_WAIT_POLICY="PASSIVE")
+    out = subprocess.run([YADE, "-j1", "-n", "-x", str(script)], cwd=tmp_path, capture_output=True, text=True,
+                         timeout=300, env=env, stdin=subprocess.DEVNULL)
+    lines = [x for x in out.stdout.splitlines() if x.startswith("STOPPED ")]
+    assert out.returncode == 0 and lines == [
+        "STOPPED RuntimeError: PolyhedraContactEngine (read by O.load): No module named 'yade_scripts' "
+        "(the project's clone must be on PYTHONPATH)"], out.stdout[-2000:] + out.stderr[-2000:]

@@ -68,7 +68,7 @@ def engine_before_step():
             "fillEvery": e.fillEvery}
 
 
-out = {}
+out = {"file": path}
 if mode == "save":
     build()
     out["before"] = run(N)
