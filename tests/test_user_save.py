@@ -37,11 +37,12 @@ def runs(tmp_path_factory):
     if not yadeplugin.build()["ok"]:
         pytest.skip("the YADE plugin is not built here")
     d = tmp_path_factory.mktemp("saved")
-    got = {m: [] for m in ("save", "load", "nostep", "loadonly")}
+    got = {m: [] for m in ("save", "load", "nostep", "loadonly", "saveadd", "loadadd")}
     for k in range(REPEATS):
         saved = d / f"scene{k}.yade.gz"
         for mode, path in (("save", saved), ("load", saved), ("nostep", d / f"unstepped{k}.yade.gz"),
-                           ("loadonly", saved)):
+                           ("loadonly", saved), ("saveadd", d / f"added{k}.yade.gz"),
+                           ("loadadd", d / f"added{k}.yade.gz")):
             got[mode].append(run_case(mode, path))
     return got
 
@@ -77,6 +78,18 @@ def test_a_loaded_scene_steps_on_bit_for_bit(runs):
             assert r["inter"] == s["cont"]["inter"] and r["counts"] == s["cont"]["counts"], name
             assert r["iter"] == s["cont"]["iter"] == 400, name
         assert ld["scans"] == 1 and s["tmp_scans"] == 1
+
+
+def test_a_body_added_after_the_load(runs):
+    """A body appended to the loaded scene before its first step: the
+    adoption's scan takes the new body and carries the saved state over by
+    body id, and the next 200 steps equal, bit for bit, those of the unsaved
+    run given the same body (which scans again at its next step)."""
+    for (_, s, _), (_, ld, _) in zip(runs["saveadd"], runs["loadadd"]):
+        assert np.array_equal(forces(ld["added"]), forces(s["added"]))
+        assert ld["added"]["inter"] == s["added"]["inter"] and ld["added"]["iter"] == s["added"]["iter"] == 400
+        assert (s["scans"], ld["scans"]) == (2, 1)
+        assert any(5 in (a, b) for a, b, *_ in s["added"]["inter"])          # the cube is on the facet
 
 
 def test_without_the_saved_state_the_forces_differ(runs):

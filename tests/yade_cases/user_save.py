@@ -17,6 +17,10 @@ save:     built, stepped N, O.save(FILE) and O.save(FILE.xml.bz2), O.saveTmp;
 load:     contacts.load_plugin(), O.load(FILE), "loaded": N steps.
 nostep:   built, O.save(FILE) before any step, O.load(FILE), no step.
 loadonly: contacts.load_plugin(), O.load(FILE), no step.
+saveadd:  built, stepped N, O.save(FILE); "added": a held cube appended on
+          the facet far from the grains, N steps.
+loadadd:  contacts.load_plugin(), O.load(FILE), the same cube appended before
+          the first step, "added": N steps.
 """
 import json
 import sys
@@ -62,6 +66,14 @@ def run(n):
     return {"forces": rows, "counts": counts, "inter": inter, "iter": O.iter}
 
 
+def add_cube():
+    cube = [(x, y, z) for x in (-A / 2, A / 2) for y in (-A / 2, A / 2) for z in (-A / 2, A / 2)]
+    b = polyhedra_utils.polyhedra(O.materials[0], v=cube)
+    b.state.pos = (0.5, 0.5, A / 2 - 5e-5)
+    b.state.blockedDOFs = "xyzXYZ"
+    return O.bodies.append(b)
+
+
 def engine_before_step():
     e = O.engines[1]
     return {"class": type(e).__name__, "hasScan": e.hasScan, "saved": len(e.savedState), "label": e.label,
@@ -90,6 +102,17 @@ elif mode == "load":
     O.load(path)
     out["engine"] = engine_before_step()
     out["loaded"] = run(N)
+    out["scans"] = contacts.SCENES[LABEL].scans
+elif mode in ("saveadd", "loadadd"):
+    if mode == "saveadd":
+        build()
+        run(N)
+        O.save(path)
+    else:
+        contacts.load_plugin()
+        O.load(path)
+    add_cube()
+    out["added"] = run(N)
     out["scans"] = contacts.SCENES[LABEL].scans
 elif mode == "nostep":
     build()
