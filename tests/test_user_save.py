@@ -101,6 +101,14 @@ def test_without_the_saved_state_the_forces_differ(runs):
         assert np.any(fresh[0] != cont[0]) and not np.array_equal(fresh, cont)
 
 
+def test_a_loop_of_loads_keeps_one_kernel(runs):
+    """20 O.loadTmp, each stepped: the engine each load replaced is parted
+    from its SceneContacts (they hold each other through C++) and its
+    kernel freed, so one SceneContacts of the label is left, not 21."""
+    for _, s, _ in runs["save"]:
+        assert s["live"] == 1
+
+
 def test_the_loaded_engine_before_its_first_step(runs):
     """O.load gives back a PolyhedraContactEngine with its label, fillEvery
     and savedState, not yet given its scan (its first step calls

@@ -13,7 +13,8 @@ after it. The rows recorded, one per step: every body's force and torque.
 save:     built, stepped N, O.save(FILE) and O.save(FILE.xml.bz2), O.saveTmp;
           then "cont": N more steps; "tmp": O.loadTmp, N steps; "xml":
           O.load of the XML file, N steps; "fresh": O.loadTmp with the
-          engine replaced by a new one (no saved state), N steps.
+          engine replaced by a new one (no saved state), N steps; "live": the
+          SceneContacts of the label left after 20 more O.loadTmp and steps.
 load:     contacts.load_plugin(), O.load(FILE), "loaded": N steps.
 nostep:   built, O.save(FILE) before any step, O.load(FILE), no step.
 loadonly: contacts.load_plugin(), O.load(FILE), no step.
@@ -22,6 +23,7 @@ saveadd:  built, stepped N, O.save(FILE); "added": a held cube appended on
 loadadd:  contacts.load_plugin(), O.load(FILE), the same cube appended before
           the first step, "added": N steps.
 """
+import gc
 import json
 import sys
 
@@ -97,6 +99,11 @@ if mode == "save":
     O.loadTmp()
     O.engines = [O.engines[0], contacts.PolyhedraContactEngine(fillEvery=1, label="fresh"), O.engines[2]]
     out["fresh"] = run(N)
+    for _ in range(20):          # a loop of loads: each replaced engine and its kernel are freed
+        O.loadTmp()
+        O.step()
+    gc.collect()
+    out["live"] = sum(1 for o in gc.get_objects() if isinstance(o, contacts.SceneContacts) and o.e.label == LABEL)
 elif mode == "load":
     contacts.load_plugin()
     O.load(path)

@@ -378,6 +378,16 @@ public:
 	void setScan(boost::python::object f) { scanFn = f; }
 	void setSave(boost::python::object f) { saveFn = f; }
 	bool hasScan() const { return !scanFn.is_none(); }
+	// whether this engine is one of the current scene's (or of those it takes from the next step on)
+	bool inCurrentScene() const
+	{
+		const Scene* sc = Omega::instance().getScene().get();
+		if (!sc) return false;
+		for (const auto* list : { &sc->engines, &sc->_nextEngines })
+			for (const shared_ptr<Engine>& e : *list)
+				if (e.get() == this) return true;
+		return false;
+	}
 	// called by O.save (preSave): the state Python gives (the kernel's, the scan's choices)
 	void saveState()
 	{
@@ -482,6 +492,7 @@ public:
 		.def("unbind", &PolyhedraContactEngine::unbind, "Forget the kernel (the next step scans the scene again).")
 		.def("setScan", &PolyhedraContactEngine::setScan, "setScan(callable): what the engine calls (no arguments) when it is not bound or the bodies changed.")
 		.def("setSave", &PolyhedraContactEngine::setSave, "setSave(callable): what O.save calls (no arguments) for the string it keeps in savedState.")
+		.add_property("inCurrentScene", &PolyhedraContactEngine::inCurrentScene, "Whether this engine is in the current scene's O.engines.")
 		.add_property("hasScan", &PolyhedraContactEngine::hasScan, "Whether a scan is set (False for an engine read by O.load that has not stepped: its first step calls contacts.adopt).")
 		.def("clearInteractions", &PolyhedraContactEngine::clearInteractions, "Erase from O.interactions the interactions this engine wrote.")
 		.def("fieldOffsets", &PolyhedraContactEngine::fieldOffsets, "fieldOffsets(obj, size, value): byte offsets (8-aligned, below size) where the double value lies in obj.").staticmethod("fieldOffsets")

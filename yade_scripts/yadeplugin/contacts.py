@@ -413,6 +413,16 @@ class SceneContacts:
                kern.wall_pos.ctypes.data, kern.force.ctypes.data, kern.torque.ctypes.data,
                kern.wall_force.ctypes.data, kern.stat.ctypes.data)
 
+    def release(self):
+        """Free the kernel and part from the engine, whose scan and save
+        are unset (an engine of a scene that O.load or O.reset replaced:
+        the engine and this object, which hold each other through C++, are
+        then freed); if that engine steps again it stops with "no scan
+        function"."""
+        self._drop()
+        self.e.setScan(None)
+        self.e.setSave(None)
+
     def _drop(self):
         if self.kernel is not None:
             self.e.unbind()
@@ -580,8 +590,17 @@ def PolyhedraContactEngine(fillEvery=1, label="polyhedraContacts", facetThicknes
     sc = SceneContacts(O, e, facetThickness, skin, threads)
     e.setScan(sc.scan)
     e.setSave(sc.saved)
-    SCENES[label] = sc
+    _replace(label, sc)
     return e
+
+
+def _replace(label, sc):
+    """SCENES[label] = sc; the SceneContacts it replaces is released when
+    its engine is no longer in the scene (after O.reset or O.load)."""
+    old = SCENES.get(label)
+    if old is not None and old is not sc and not old.e.inCurrentScene:
+        old.release()
+    SCENES[label] = sc
 
 
 def load_plugin():
@@ -614,6 +633,6 @@ def adopt(O=None):
             sc.restore(e.savedState)
         e.setScan(sc.scan)
         e.setSave(sc.saved)
-        SCENES[e.label] = sc
+        _replace(e.label, sc)
         out.append(e)
     return out
