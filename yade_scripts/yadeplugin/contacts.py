@@ -251,8 +251,8 @@ class SceneContacts:
         """What O.save keeps in the engine's ``savedState`` (the engine
         calls this while O.save runs): base64 of an npz holding the options
         (facet thickness, skin, threads), the scan's choices (each facet's
-        side, each wall's sign), the kernel rows' and walls' body ids, their
-        shapes (vertices m and triangles, body frame) and the kernel's
+        side, each wall's sign), the kernel rows' and walls' body ids, the
+        grains' shapes (vertices m and triangles, body frame) and the kernel's
         state (:meth:`shapes.engine.ContactEngine.state`: poses, neighbour
         list with every pair's shear history, wall contacts, counters)."""
         meta = {"format": 1, "facet_thickness": self.facet_thickness, "skin": self.skin_given,
@@ -263,8 +263,10 @@ class SceneContacts:
             meta.update(rows=[int(i) for i in self.rows], walls=[int(w) for w in self.walls], kernel=True,
                         nw=int(self.kernel.nw))
             arrays.update({f"state/{k}": v for k, v in self.kernel.state().items()})
-        for i, (v, t) in self.shapes.items():
-            arrays[f"shape/{i}/v"], arrays[f"shape/{i}/t"] = np.asarray(v, float), np.asarray(t, np.int64)
+        for i in self.rows if self.kernel is not None else []:      # the grains' (facets are scanned again)
+            if i in self.shapes:
+                v, t = self.shapes[i]
+                arrays[f"shape/{i}/v"], arrays[f"shape/{i}/t"] = np.asarray(v, float), np.asarray(t, np.int64)
         arrays["meta"] = np.frombuffer(json.dumps(meta).encode(), np.uint8)
         buf = io.BytesIO()
         np.savez(buf, **arrays)
