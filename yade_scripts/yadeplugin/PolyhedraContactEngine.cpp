@@ -24,14 +24,23 @@
 //      on objects of the installed YADE (fieldOffsets) and checks after the
 //      first fill against what YADE's Python reads.
 //
+// O.save / O.load: the class is registered with Boost.Serialization. While
+// O.save runs (preSave) the engine asks Python for the state it holds beyond
+// its attributes (contacts.SceneContacts.saved: the kernel's state with the
+// shear histories, the shapes, the scan's choices) and keeps it in
+// savedState; an engine read by O.load has no scan, and its first step calls
+// contacts.adopt(), which gives it one with that state, and takes back the
+// interactions of its kind in O.interactions as its own.
+//
 // Built with PolyhedraKernelEngine.cpp into one library by
 // yade_scripts/yadeplugin (python -m yade_scripts.yadeplugin build), against
 // the YADE headers vendored in include/ (GPL-2.0-or-later, include/ORIGIN.md).
 //
 // Error codes (attribute `error`): the kernel's (-2 positions not finite, -4
 // workspace overflow, -5 a bad orientation quaternion, other negative: out of
-// memory), -10 not bound, -13 the scan raised (its message is thrown), -14 a
-// wall position not finite, -15 O.interactions refused an interaction.
+// memory), -10 not bound, -13 the scan or, after O.load, the adoption raised
+// (its message is thrown), -14 a wall position not finite, -15 O.interactions
+// refused an interaction.
 
 #include <core/Body.hpp>
 #include <core/GlobalEngine.hpp>
@@ -67,6 +76,11 @@ static_assert(sizeof(Interaction) == PKE_SIZEOF_Interaction, "sizeof(Interaction
 static_assert(sizeof(InteractionContainer) == PKE_SIZEOF_InteractionContainer, "sizeof(InteractionContainer) differs from the installed YADE's");
 
 typedef int (*pce_count_fn)(const void*);
+
+class PolyhedraContactEngine;
+// O.save / O.load of a scene holding the engine (found by ADL from the serialize() of
+// YADE_CLASS_BASE_DOC_ATTRS_CTOR_PY): the kernel's state is put into savedState first
+void preSave(PolyhedraContactEngine&);
 typedef int (*pce_contacts_fn)(void*, int, int*, int*, double*, double*, double*, double*, double*);
 
 class PolyhedraContactEngine : public GlobalEngine {
@@ -80,6 +94,7 @@ class PolyhedraContactEngine : public GlobalEngine {
 	std::vector<int>         rowClump;          // their clumpId when bound (a body clumped or released: scan again)
 	size_t                   nBodiesBound { 0 };
 	boost::python::object    scanFn;            // Python: rescans the scene and binds again
+	boost::python::object    saveFn;            // Python: the state for O.save, as a string
 	bool                     scanning { false };
 	bool                     idle { false };     // bound to no kernel: no polyhedra in the scene
 	// O.interactions: the ones this engine made, by (id1, id2)
@@ -120,36 +135,83 @@ class PolyhedraContactEngine : public GlobalEngine {
 		return false;
 	}
 
+	// the message of the Python exception being handled (cleared), or `fallback`
+	static std::string pythonError(const std::string& fallback)
+	{
+		PyObject *t, *v, *tb;
+		PyErr_Fetch(&t, &v, &tb);
+		PyErr_NormalizeException(&t, &v, &tb);
+		std::string why = fallback;
+		if (v) {
+			PyObject* s = PyObject_Str(v);
+			if (s) {
+				const char* c = PyUnicode_AsUTF8(s);
+				if (c && *c) why = c;
+				Py_DECREF(s);
+			}
+		}
+		Py_XDECREF(t);
+		Py_XDECREF(v);
+		Py_XDECREF(tb);
+		PyErr_Clear();
+		return why;
+	}
+
+	// an engine read by O.load has no scan yet: Python's contacts.adopt() gives it one
+	// (and the state O.save put into savedState)
+	void adopt()
+	{
+		adoptPending         = true;
+		PyGILState_STATE gil = PyGILState_Ensure();
+		std::string      why;
+		try {
+			boost::python::import("yade_scripts.yadeplugin.contacts").attr("adopt")();
+		} catch (boost::python::error_already_set&) {
+			why = pythonError("the adoption failed");
+		}
+		PyGILState_Release(gil);
+		if (!why.empty()) {
+			error = -13;
+			if (why.find("No module named") != std::string::npos) why += " (the project's clone must be on PYTHONPATH)";
+			throw std::runtime_error("PolyhedraContactEngine (read by O.load): " + why);
+		}
+		if (scanFn.is_none()) {
+			error = -13;
+			throw std::runtime_error("PolyhedraContactEngine: no scan function (make it with yade_scripts.yadeplugin.contacts.PolyhedraContactEngine)");
+		}
+	}
+
 	void scan()
 	{
-		if (scanFn.is_none()) throw std::runtime_error("PolyhedraContactEngine: no scan function (build it with yade_scripts.yadeplugin.contacts.PolyhedraContactEngine)");
+		if (scanFn.is_none()) adopt();
 		scanning             = true;
 		PyGILState_STATE gil = PyGILState_Ensure();
 		std::string      why;
 		try {
 			scanFn();
 		} catch (boost::python::error_already_set&) {
-			PyObject *t, *v, *tb;
-			PyErr_Fetch(&t, &v, &tb);
-			PyErr_NormalizeException(&t, &v, &tb);
-			why = "PolyhedraContactEngine: the scan failed";
-			if (v) {
-				PyObject* s = PyObject_Str(v);
-				if (s) {
-					const char* c = PyUnicode_AsUTF8(s);
-					if (c) why = c;
-					Py_DECREF(s);
-				}
-			}
-			Py_XDECREF(t);
-			Py_XDECREF(v);
-			Py_XDECREF(tb);
+			why = pythonError("PolyhedraContactEngine: the scan failed");
 		}
 		PyGILState_Release(gil);
 		scanning = false;
 		if (!why.empty()) {
 			error = -13;
 			throw std::runtime_error(why);
+		}
+		if (adoptPending) adoptInteractions();
+	}
+
+	// after O.load: the saved scene's interactions of this engine's kind become this
+	// engine's again (updated by the next fill, erased once they stop touching)
+	bool adoptPending { false };
+	void adoptInteractions()
+	{
+		adoptPending = false;
+		if (!mine.empty()) return;
+		for (const shared_ptr<Interaction>& I : *scene->interactions) {
+			if (!I || !I->geom || !I->phys || I->geom->getClassName() != geomClass || I->phys->getClassName() != physClass) continue;
+			Mine rec { I, static_cast<char*>(dynamic_cast<void*>(I->geom.get())), static_cast<char*>(dynamic_cast<void*>(I->phys.get())), -1 };
+			mine.emplace(key(I->getId1(), I->getId2()), rec);
 		}
 	}
 
@@ -319,6 +381,32 @@ public:
 	}
 
 	void setScan(boost::python::object f) { scanFn = f; }
+	void setSave(boost::python::object f) { saveFn = f; }
+	bool hasScan() const { return !scanFn.is_none(); }
+	// whether this engine is one of the current scene's (or of those it takes from the next step on)
+	bool inCurrentScene() const
+	{
+		const Scene* sc = Omega::instance().getScene().get();
+		if (!sc) return false;
+		for (const auto* list : { &sc->engines, &sc->_nextEngines })
+			for (const shared_ptr<Engine>& e : *list)
+				if (e.get() == this) return true;
+		return false;
+	}
+	// called by O.save (preSave): the state Python gives (the kernel's, the scan's choices)
+	void saveState()
+	{
+		if (saveFn.is_none()) return; // read by O.load and not stepped yet: savedState is as loaded
+		PyGILState_STATE gil = PyGILState_Ensure();
+		std::string      why;
+		try {
+			savedState = boost::python::extract<std::string>(saveFn())();
+		} catch (boost::python::error_already_set&) {
+			why = pythonError("the state could not be taken");
+		}
+		PyGILState_Release(gil);
+		if (!why.empty()) throw std::runtime_error("PolyhedraContactEngine: O.save: " + why);
+	}
 	bool bound() const { return kernel != nullptr; }
 	void clearInteractions() { forgetInteractions(); }
 	// the byte offsets of the fields that fill() writes must be measured on this YADE: see contacts.py
@@ -400,22 +488,34 @@ public:
 		((vector<Real>, counters, vector<Real>(6, 0.), Attr::noSave, "Seconds reading poses, in the kernel, adding forces, filling O.interactions; steps; fills."))
 		((int, error, 0, (Attr::readonly | Attr::noSave), "0 after a good step; else why the last step stopped: the kernel's code (-2 positions not finite, -4 workspace overflow, -5 a bad orientation), -10 not bound, -13 the scan failed, -14 a wall position not finite, -15 O.interactions refused an interaction."))
 		((string, library, "", (Attr::readonly | Attr::noSave), "The kernel library bound to (empty: not bound)."))
-		((string, sourceHash, PKE_SOURCE_HASH, (Attr::readonly | Attr::noSave), "Hash of the sources this plugin was built from (yade_scripts/yadeplugin).")),
+		((string, sourceHash, PKE_SOURCE_HASH, (Attr::readonly | Attr::noSave), "Hash of the sources this plugin was built from (yade_scripts/yadeplugin)."))
+		((string, savedState, "", Attr::readonly, "What O.save keeps of the engine beyond its attributes (base64 of an npz: the kernel's state with the shear histories, the bodies' shapes, the scan's choices and options; written by O.save, read at the first step after O.load by yade_scripts.yadeplugin.contacts.adopt).")),
 		/* ctor */,
 		/* py */
 		.def("bind", &PolyhedraContactEngine::bind, "bind(library, engine, pos, quat, wallPos, force, torque, wallForce, stat): the kernel library's path, the address of its engine and of the float64 arrays (C order).")
 		.def("bindIdle", &PolyhedraContactEngine::bindIdle, "Bind to no kernel (no polyhedra yet): the engine does nothing until the bodies change.")
 		.def("unbind", &PolyhedraContactEngine::unbind, "Forget the kernel (the next step scans the scene again).")
 		.def("setScan", &PolyhedraContactEngine::setScan, "setScan(callable): what the engine calls (no arguments) when it is not bound or the bodies changed.")
+		.def("setSave", &PolyhedraContactEngine::setSave, "setSave(callable): what O.save calls (no arguments) for the string it keeps in savedState.")
+		.add_property("inCurrentScene", &PolyhedraContactEngine::inCurrentScene, "Whether this engine is in the current scene's O.engines.")
+		.add_property("hasScan", &PolyhedraContactEngine::hasScan, "Whether a scan is set (False for an engine read by O.load that has not stepped: its first step calls contacts.adopt).")
 		.def("clearInteractions", &PolyhedraContactEngine::clearInteractions, "Erase from O.interactions the interactions this engine wrote.")
 		.def("fieldOffsets", &PolyhedraContactEngine::fieldOffsets, "fieldOffsets(obj, size, value): byte offsets (8-aligned, below size) where the double value lies in obj.").staticmethod("fieldOffsets")
 		.add_property("bound", &PolyhedraContactEngine::bound, "Whether a kernel is bound.")
 	);
 	// clang-format on
 };
-REGISTER_FACTORABLE(PolyhedraContactEngine);
+void preSave(PolyhedraContactEngine& e) { e.saveState(); }
+
+// Registered with Boost.Serialization too (REGISTER_SERIALIZABLE and the
+// export below), so that O.save / O.load of a user's scene holding the engine
+// work; the serialization singletons of its base classes are YADE's own at run
+// time (docs/kernel.md: measured, and the exit of such processes).
+REGISTER_SERIALIZABLE(PolyhedraContactEngine);
 
 } // namespace yade
+BOOST_CLASS_EXPORT_IMPLEMENT(yade::PolyhedraContactEngine);
+BOOST_SERIALIZATION_FACTORY_0(yade::PolyhedraContactEngine);
 
 namespace {
 __attribute__((constructor)) void registerThisPluginClasses_PolyhedraContactEngine(void)

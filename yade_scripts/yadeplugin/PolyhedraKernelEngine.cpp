@@ -198,16 +198,16 @@ public:
 	// clang-format on
 };
 // Registered with YADE's class factory (so that YADE's Python knows the
-// class), not with Boost.Serialization as REGISTER_SERIALIZABLE and
-// YADE_PLUGIN would: with that registration every process that had saved or
-// loaded a scene with this library loaded aborted at exit ("double free or
-// corruption", exit -6), whether the plugin stepped or not; without it such a
-// process exits cleanly when the plugin did not step, and one whose plugin
-// stepped still sometimes aborts there, which the scene avoids by ending
-// with yade_scripts/runs/attempt.py's leave (os._exit once all is written). The
-// engine is never saved: a checkpoint swaps in its PyRunner form first
-// (KernelContacts.portable, yade_scripts/scene/kernel_contacts.py), and O.save of a
-// scene that holds it raises "unregistered class".
+// class), not with Boost.Serialization: the engine is never saved, a
+// checkpoint swaps in its PyRunner form first (KernelContacts.portable,
+// yade_scripts/scene/kernel_contacts.py), so that it loads in a YADE without
+// the plugin; O.save of a scene that holds it raises "unregistered class".
+// (In November, with this class registered, processes that had saved or
+// loaded a scene aborted at exit, "double free or corruption"; not reproduced
+// on 2026-12-02, this class and PolyhedraContactEngine registered: the
+// serialization singletons of the base classes bind to libyade.so's, see
+// docs/kernel.md. The scene still ends with yade_scripts/runs/attempt.py's
+// leave, os._exit once all is written.)
 REGISTER_FACTORABLE(PolyhedraKernelEngine);
 
 } // namespace yade

@@ -59,10 +59,21 @@ a user's force-chain script see them. The fields are written at byte offsets
 measured on objects of the installed YADE (:func:`field_offsets`): a YADE
 whose classes differ is refused, never written wrong.
 
+``O.save`` / ``O.load`` (and ``O.saveTmp``, ``O.loadTmp``, ``O.reload``) take
+the engine with the scene: O.save keeps the kernel's state (the shear
+histories), the shapes and the scan's choices in the engine's
+``savedState`` (:meth:`SceneContacts.saved`); the loaded engine's first
+step calls :func:`adopt`, and the scene steps on bit for bit. In a new
+process call :func:`load_plugin` before ``O.load`` (or start YADE with
+``YADE_PREFIX``).
+
 numpy + ctypes (YADE's Python).
 """
 from __future__ import annotations
 
+import base64
+import io
+import json
 import math
 import os
 
@@ -250,6 +261,58 @@ class SceneContacts:
         self.group_of = {}        # body id -> its clump id (-1: none) at the last scan
         self.scans = 0
         self.note = ""
+        self._restore = None      # after O.load: the saved kernel state, given to the first kernel built
+
+    # ------------------------------------------------------------ O.save / O.load
+    def saved(self):
+        """What O.save keeps in the engine's ``savedState`` (the engine
+        calls this while O.save runs): base64 of an npz holding the options
+        (facet thickness, skin, threads), the scan's choices (each facet's
+        side, each wall's sign), the kernel rows' and walls' body ids, the
+        grains' shapes (vertices m and triangles, body frame) and the kernel's
+        state (:meth:`shapes.engine.ContactEngine.state`: poses, neighbour
+        list with every pair's shear history, wall contacts, counters)."""
+        meta = {"format": 1, "facet_thickness": self.facet_thickness, "skin": self.skin_given,
+                "threads": self.threads, "facet_side": sorted(self.facet_side.items()),
+                "wall_sign": sorted(self.wall_sign.items()), "rows": [], "walls": [], "kernel": False}
+        arrays = {}
+        if self.kernel is not None:
+            meta.update(rows=[int(i) for i in self.rows], walls=[int(w) for w in self.walls], kernel=True,
+                        nw=int(self.kernel.nw))
+            arrays.update({f"state/{k}": v for k, v in self.kernel.state().items()})
+        for i in self.rows if self.kernel is not None else []:      # the grains' (facets are scanned again)
+            if i in self.shapes:
+                v, t = self.shapes[i]
+                arrays[f"shape/{i}/v"], arrays[f"shape/{i}/t"] = np.asarray(v, float), np.asarray(t, np.int64)
+        arrays["meta"] = np.frombuffer(json.dumps(meta).encode(), np.uint8)
+        buf = io.BytesIO()
+        np.savez(buf, **arrays)
+        return base64.b64encode(buf.getvalue()).decode("ascii")
+
+    def restore(self, text):
+        """Take back what :meth:`saved` wrote (an engine read by O.load):
+        options, the scan's choices and shapes now; the kernel's state at the
+        next scan, carried by body id like a rescan's. Raises
+        :class:`SceneError` (one line) for a state this code cannot read."""
+        try:
+            with np.load(io.BytesIO(base64.b64decode(text.encode("ascii"), validate=True))) as z:
+                arrays = {k: z[k] for k in z.files}
+            meta = json.loads(arrays.pop("meta").tobytes().decode())
+        except (ValueError, KeyError, OSError) as exc:
+            raise SceneError(f"PolyhedraContactEngine: the saved state cannot be read ({exc})") from None
+        if meta.get("format") != 1:
+            raise SceneError(f"PolyhedraContactEngine: a saved state of format {meta.get('format')!r}, "
+                             "this code reads format 1")
+        self.facet_thickness, self.skin_given, self.threads = meta["facet_thickness"], meta["skin"], meta["threads"]
+        self.facet_side = {int(k): float(v) for k, v in meta["facet_side"]}
+        self.wall_sign = {int(k): float(v) for k, v in meta["wall_sign"]}
+        for k in arrays:
+            if k.startswith("shape/") and k.endswith("/v"):
+                i = int(k.split("/")[1])
+                self.shapes[i] = (arrays[k], arrays[f"shape/{i}/t"])
+        if meta["kernel"]:
+            st = {k[len("state/"):]: v for k, v in arrays.items() if k.startswith("state/")}
+            self._restore = (st, list(meta["rows"]), list(meta["walls"]), int(meta["nw"]))
 
     # ------------------------------------------------------------ the scene's bodies
     def _classify(self):
@@ -357,7 +420,15 @@ class SceneContacts:
         groups = ([b.clumpId if b.isClumpMember else -1 for b in grains]
                   + [f.clumpId if f.isClumpMember else FACET_GROUP for f in facets])
         if self.kernel is not None:
-            self._carry(kern, rows, wids, grains + facets, groups)
+            old = self.kernel
+            self._carry(kern, rows, wids, grains + facets, old.state(), self.rows, self.walls, old.nw, groups)
+        elif self._restore is not None:          # the first scan after O.load: the saved state
+            st, orows, owalls, onw = self._restore
+            self._restore = None
+            if (orows, owalls, onw) == (rows, wids, len(wids)):
+                kern.set_state(st)               # the same bodies: the state as it was, whole
+            else:
+                self._carry(kern, rows, wids, grains + facets, st, orows, owalls, onw, groups)
         if any(g >= 0 for g in groups):
             kern.set_groups(groups)
         self.group_of = dict(zip(rows, groups))
@@ -370,6 +441,16 @@ class SceneContacts:
         e.bind(kern.lib._name, int(kern.handle), kern.pos.ctypes.data, kern.quat.ctypes.data,
                kern.wall_pos.ctypes.data, kern.force.ctypes.data, kern.torque.ctypes.data,
                kern.wall_force.ctypes.data, kern.stat.ctypes.data)
+
+    def release(self):
+        """Free the kernel and part from the engine, whose scan and save
+        are unset (an engine of a scene that O.load or O.reset replaced:
+        the engine and this object, which hold each other through C++, are
+        then freed); if that engine steps again it stops with "no scan
+        function"."""
+        self._drop()
+        self.e.setScan(None)
+        self.e.setSave(None)
 
     def _drop(self):
         if self.kernel is not None:
@@ -385,18 +466,18 @@ class SceneContacts:
         self.e.geomOffsets = field_offsets(cls, PolyhedraGeom(), sizes["PolyhedraGeom"], GEOM_FIELDS)
         self.e.physOffsets = field_offsets(cls, PolyhedraPhys(), sizes["PolyhedraPhys"], PHYS_FIELDS)
 
-    def _carry(self, new, rows, wids, bodies, groups):
-        """Give ``new`` the state of the current kernel, row by body id:
+    def _carry(self, new, rows, wids, bodies, st, old_rows, old_walls, old_nw, groups):
+        """Give ``new`` the kernel state ``st`` of an engine whose rows
+        were the bodies ``old_rows`` and whose ``old_nw`` walls ``old_walls``
+        (the kernel replaced, or the one saved by O.save), row by body id:
         poses, neighbour list with the shear histories, wall contacts; a new
         body starts from its pose now, with the neighbour list rebuilt, as
-        does one whose clump changed (``groups``: each row's clump id, -1
-        for none; a body released from a clump gets its pairs with the
-        clump's other members back)."""
-        old = self.kernel
-        st = old.state()
-        orow = {b: k for k, b in enumerate(self.rows)}
-        owall = {w: k for k, w in enumerate(self.walls)}
-        n, nw, onw = len(rows), len(wids), max(old.nw, 1)
+        does one whose clump changed (``groups``: each row's kernel group;
+        a body released from a clump gets its pairs with the clump's other
+        members back)."""
+        orow = {b: k for k, b in enumerate(old_rows)}
+        owall = {w: k for k, w in enumerate(old_walls)}
+        n, nw, onw = len(rows), len(wids), max(old_nw, 1)
         mp = np.array([orow.get(b, -1) for b in rows])
         wmp = np.array([owall.get(w, -1) for w in wids], int)
         x = np.zeros((n, 3))
@@ -406,7 +487,7 @@ class SceneContacts:
         for k, b in enumerate(bodies):
             if mp[k] >= 0:
                 x[k], R[k], xb[k], mo[k] = st["x"][mp[k]], st["R"][mp[k]], st["xbuild"][mp[k]], st["motion"][mp[k]]
-                if self.group_of.get(b.id, -1) != groups[k]:
+                if self.group_of.get(b.id, groups[k]) != groups[k]:
                     xb[k] = x[k] + _FAR
             else:
                 x[k] = tuple(b.state.pos)
@@ -436,7 +517,7 @@ class SceneContacts:
                        "pair_ids": np.array([(a, b) for a, b, _ in keep], np.int32).reshape(-1, 2),
                        "pair_records": np.array([r for _, _, r in keep]).reshape(-1, L["pair_doubles"]),
                        "wall_shear": ws, "wall_results": wr, "wall_touching": wt, "scalars": sc,
-                       "friction": np.array(old.friction)})
+                       "friction": np.array(st["friction"])})
 
     def set_friction(self, angle, wall_angle=None):
         """Set the friction angle (rad) of every polyhedron's and facet's
@@ -542,5 +623,50 @@ def PolyhedraContactEngine(fillEvery=1, label="polyhedraContacts", facetThicknes
     e = cls(label=label, fillEvery=int(fillEvery))
     sc = SceneContacts(O, e, facetThickness, skin, threads)
     e.setScan(sc.scan)
-    SCENES[label] = sc
+    e.setSave(sc.saved)
+    _replace(label, sc)
     return e
+
+
+def _replace(label, sc):
+    """SCENES[label] = sc; the SceneContacts it replaces is released when
+    its engine is no longer in the scene (after O.reset or O.load)."""
+    old = SCENES.get(label)
+    if old is not None and old is not sc and not old.e.inCurrentScene:
+        old.release()
+    SCENES[label] = sc
+
+
+def load_plugin():
+    """Load the plugin into this YADE if it is not (a script started
+    without ``YADE_PREFIX``): call it before ``O.load`` of a scene holding
+    the engine, which YADE reads only once it knows the class. Returns the
+    class; raises :class:`load.PluginError` (one line) when the plugin is
+    not built for this YADE and these sources."""
+    return load.engine_class()
+
+
+def adopt(O=None):
+    """Give each ``PolyhedraContactEngine`` of ``O.engines`` that has no
+    scan (read by O.load, or made as ``yade.wrapper.PolyhedraContactEngine()``)
+    its :class:`SceneContacts`, in :data:`SCENES` under its label, with what
+    O.save kept (``savedState``): the engine's first step calls this, so
+    after O.load the scene steps on with the kernel's state as it was saved
+    (the pairs' shear histories, the neighbour list), bit for bit. Call it
+    yourself to read ``SCENES[label]`` before that step. Returns the
+    engines adopted (list)."""
+    if O is None:
+        from yade import O
+    cls = load.engine_class()
+    out = []
+    for e in O.engines:
+        if not isinstance(e, cls) or e.hasScan:
+            continue
+        sc = SceneContacts(O, e)
+        if e.savedState:
+            sc.restore(e.savedState)
+        e.setScan(sc.scan)
+        e.setSave(sc.saved)
+        _replace(e.label, sc)
+        out.append(e)
+    return out
