@@ -318,6 +318,14 @@ class ContactEngine:
             raise EngineError("could not set the groups (out of memory)")
         self.groups = g
 
+    def set_wall_bodies(self, n):
+        """The walls act on body rows 0 .. n - 1 only from now on (the
+        others, e.g. a user scene's facets after its polyhedra, never touch
+        a wall); their wall contacts are dropped at once."""
+        if self.lib.pc_engine_set_wall_bodies(self._live(), int(n)) != 0:
+            raise ValueError(f"set_wall_bodies: n must be within 0 .. {self.n}, got {n!r}")
+        self.wall_bodies = int(n)
+
     @property
     def friction(self):
         """(mu, mu_wall) now."""
@@ -379,6 +387,8 @@ class ContactEngine:
             self.set_friction(*np.asarray(st["friction"], float).reshape(2))
         if getattr(self, "groups", None) is not None:     # the restored list holds no pair of one group
             self.set_groups(self.groups)
+        if getattr(self, "wall_bodies", self.n) != self.n:   # nor a wall contact of a body beyond them
+            self.set_wall_bodies(self.wall_bodies)
 
     def contacts(self):
         """The touching contacts of the last step: a dict of arrays. ``i``,

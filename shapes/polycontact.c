@@ -1517,6 +1517,7 @@ typedef struct {
     const int *shape;          /* per body: row of the table (owned copy) */
     int *shape_own;
     int *group;                /* per body: group (a YADE clump), NULL for none: pairs of one group >= 0 never listed */
+    int wall_bodies;           /* the walls act on bodies 0 .. wall_bodies - 1 (nb unless set: pc_engine_set_wall_bodies) */
     double *size;              /* per body d */
     double kv, ct, mu, mu_wall, skin;
     /* walls: axis (0,1,2), inward sign (+1 lo wall, -1 hi wall) */
@@ -1574,7 +1575,7 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     memcpy(vv, v, sizeof(double) * 3 * nvt); memcpy(tt, t, sizeof(int) * 3 * ntt);
     if (table_init(&E->T, ns, vo, vv, to, tt)) { pc_engine_free(E); return NULL; }
     if (nw < 0 || nw > PC_MAX_WALLS) { pc_engine_free(E); return NULL; }
-    E->nb = nb; E->nw = nw;
+    E->nb = nb; E->nw = nw; E->wall_bodies = nb;
     E->fast = 1;
     E->shape_own = malloc(sizeof(int) * (nb + 1)); E->size = malloc(sizeof(double) * (nb + 1));
     memcpy(E->shape_own, shape, sizeof(int) * nb); memcpy(E->size, size, sizeof(double) * nb);
@@ -2173,7 +2174,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
 #endif
-        for (int b = 0; b < nb; b++) walls_step(E, b, w, mine);
+        for (int b = 0; b < E->wall_bodies; b++) walls_step(E, b, w, mine);
         for (int k = 0; k < PC_NSTAT; k++) {
             if (!mine[k]) continue;
 #ifdef _OPENMP
@@ -2386,6 +2387,22 @@ int pc_engine_set_groups(engine_t *E, const int *group) {
         q++;
     }
     E->npairs = q;
+    return 0;
+}
+
+/* The walls act on the first n bodies only from now on (a user scene's
+ * polyhedra, before its facets: YADE has no wall-facet functor either); the
+ * wall contacts of the others are dropped. Returns 0, or -1 for n outside
+ * 0 .. nb. */
+int pc_engine_set_wall_bodies(engine_t *E, int n) {
+    if (n < 0 || n > E->nb) return -1;
+    E->wall_bodies = n;
+    size_t a = (size_t)n * E->nw, z = (size_t)E->nb * E->nw;
+    if (z > a) {
+        memset(E->wtouch + a, 0, sizeof(int) * (z - a));
+        memset(E->wft + 3 * a, 0, sizeof(double) * 3 * (z - a));
+        memset(E->wres + (size_t)PC_WALL_DOUBLES * a, 0, sizeof(double) * PC_WALL_DOUBLES * (z - a));
+    }
     return 0;
 }
 

@@ -125,6 +125,21 @@ def test_cube_on_a_wall_of_axis_y(res):
     assert np.allclose(r["wall_force"], -np.array(r["force"]), atol=1e-12)
 
 
+def test_a_wall_across_a_facet_pushes_the_cube_only(res):
+    """A Wall (axis x, at x = 0.05) crosses the prism behind a large facet;
+    a cube (side a) sits 0.1 mm into both. The wall and the facet each push
+    the cube with k_n a^2 h (h = 0.1 mm) and nothing else: no wall-facet
+    contact (YADE has no such functor either), so the wall's force is the
+    cube's reaction only."""
+    r = res["wallfacet"]
+    pairs = sorted(tuple(sorted((i["id1"], i["id2"]))) for i in r["inter"])
+    assert pairs == sorted([tuple(sorted((r["wall"], r["cube"]))), tuple(sorted((r["facet"], r["cube"])))])
+    f = KN * A * A * 1e-4
+    np.testing.assert_allclose(r["force"], [-f, 0, f], rtol=1e-9, atol=1e-9 * f)
+    np.testing.assert_allclose(r["wall_force"], [f, 0, 0], rtol=1e-9, atol=1e-9 * f)
+    np.testing.assert_allclose(r["facet_force"], [0, 0, -f], rtol=1e-9, atol=1e-9 * f)
+
+
 def test_get_stress_equals_postproc_stress(res):
     """YADE's getStress(V) on O.interactions, filled by the engine, equals
     postproc's contact stress of the kernel's own contacts with the branch

@@ -126,6 +126,18 @@ O.step()
 out["wall"] = {"cube": before, "wall": 0.1, "force": tuple(O.forces.f(c2)), "wall_force": tuple(O.forces.f(w0)),
                "inter": [inter(i) for i in O.interactions]}
 
+# ---------------------------------------------------------------- a wall across a facet's prism
+m = new_scene()
+f1 = O.bodies.append(utils.facet([(-1, -1, 0), (1, -1, 0), (0, 1, 0)], material=m, fixed=True))
+w1 = O.bodies.append(utils.wall(0.05, axis=0, sense=-1, material=m))
+c3 = cube(m, (0.05 - A / 2 + 1e-4, 0, A / 2 - 1e-4))
+O.bodies[c3].state.blockedDOFs = "xyzXYZ"
+engines("wallfacet")
+O.step()
+out["wallfacet"] = {"cube": c3, "wall": w1, "facet": f1, "force": tuple(O.forces.f(c3)),
+                    "wall_force": tuple(O.forces.f(w1)), "facet_force": tuple(O.forces.f(f1)),
+                    "inter": [inter(i) for i in O.interactions]}
+
 # ---------------------------------------------------------------- getStress on a deposited packing
 m = new_scene(young=1e7, friction=0.4)
 O.dt = 1e-4

@@ -431,6 +431,8 @@ class SceneContacts:
                 self._carry(kern, rows, wids, grains + facets, st, orows, owalls, onw, groups)
         if any(g >= 0 for g in groups):
             kern.set_groups(groups)
+        if facets and walls:                     # the walls push the polyhedra only (YADE has no wall-facet functor)
+            kern.set_wall_bodies(len(grains))
         self.group_of = dict(zip(rows, groups))
         self._drop()
         self.kernel, self.rows, self.walls = kern, rows, wids
