@@ -1160,7 +1160,7 @@ typedef struct {
     double *radius;             /* bounding radius about the local origin */
     double *box;                /* local bounding box per shape: lo[3], hi[3] */
     unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
-    int *rep;                   /* per triangle: that earlier triangle (index in the shape), or itself */
+    int *rep;                   /* per triangle: that earlier triangle (index in the shape), or itself (table_init) */
     uint64_t *pmask;            /* per triangle: PC_MASK_WORDS words, the vertices of its plane's face */
     unsigned char *hasdup;      /* per shape: it has coplanar triangles (and at most 64 PC_MASK_WORDS vertices) */
     int *nface, *foff;          /* per shape: its polygonal faces (0: none, its triangles are its faces), their
@@ -1300,7 +1300,7 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
         }
         /* once coplanarity is decided: each duplicate takes the plane (normal
          * and offset) of the earlier triangle it repeats, so that a plane is
-         * one plane on every path and posing it once is enough (pose_shape) */
+         * one plane, to the bit, on every path */
         for (int f = 0; f < nt; f++) {
             int g = T->rep[toff[s] + f];
             if (g == f) continue;
@@ -1331,19 +1331,11 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
         matvec(R, T->v + 3 * (v0 + i), x);
         vo[3 * i] = x[0] + off[0]; vo[3 * i + 1] = x[1] + off[1]; vo[3 * i + 2] = x[2] + off[2];
     }
-    const int *rp = T->rep + t0;
-    int ndup = 0;
-    for (int f = 0; f < nt; f++) {
-        if (rp[f] != f) { ndup++; continue; }
+    for (int f = 0; f < nt; f++) {   /* a duplicate's plane is its earlier triangle's (table_init): the same numbers */
         double x[3];
         matvec(R, T->n + 3 * (t0 + f), x);
         no[3 * f] = x[0]; no[3 * f + 1] = x[1]; no[3 * f + 2] = x[2];
         ho[f] = T->h[t0 + f] + dot3(x, off);
-    }
-    for (int f = 0; f < nt && ndup; f++) {   /* the plane of an earlier triangle, the same numbers (table_init) */
-        if (rp[f] == f) continue;
-        no[3 * f] = no[3 * rp[f]]; no[3 * f + 1] = no[3 * rp[f] + 1]; no[3 * f + 2] = no[3 * rp[f] + 2];
-        ho[f] = ho[rp[f]];
     }
     P->nv = nv; P->nt = nt; P->v = vo; P->t = T->t + 3 * t0; P->n = no; P->h = ho;
     P->R = R; P->box = T->box + 6 * s; P->dup = T->dup + t0;
