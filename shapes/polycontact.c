@@ -1160,7 +1160,6 @@ typedef struct {
     double *radius;             /* bounding radius about the local origin */
     double *box;                /* local bounding box per shape: lo[3], hi[3] */
     unsigned char *dup;         /* per triangle: its plane repeats an earlier triangle's of the shape */
-    int *rep;                   /* per triangle: that earlier triangle (index in the shape), or itself (table_init) */
     uint64_t *pmask;            /* per triangle: PC_MASK_WORDS words, the vertices of its plane's face */
     unsigned char *hasdup;      /* per shape: it has coplanar triangles (and at most 64 PC_MASK_WORDS vertices) */
     int *nface, *foff;          /* per shape: its polygonal faces (0: none, its triangles are its faces), their
@@ -1231,14 +1230,14 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->radius = malloc(sizeof(double) * (ns + 1));
     T->box = malloc(sizeof(double) * 6 * (ns + 1));
     T->dup = calloc(ntot + 1, 1);
-    T->rep = calloc(ntot + 1, sizeof(int));
+    int *rep = calloc(ntot + 1, sizeof(int));   /* per triangle: the earlier triangle it repeats, or itself */
     T->pmask = calloc((size_t)PC_MASK_WORDS * (ntot + 1), sizeof(uint64_t));
     T->hasdup = calloc(ns + 1, 1);
     T->nface = calloc(ns + 1, sizeof(int)); T->foff = calloc(ns + 1, sizeof(int));
     T->fs = calloc(ntot + 1, sizeof(int)); T->fc = calloc(ntot + 1, sizeof(int));
     T->ftag = calloc(ntot + 1, sizeof(int)); T->fi = calloc(3 * (size_t)ntot + 1, sizeof(int));
-    if (!T->n || !T->h || !T->radius || !T->box || !T->dup || !T->rep || !T->pmask || !T->hasdup) return -1;
-    if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi) return -1;
+    if (!rep || !T->n || !T->h || !T->radius || !T->box || !T->dup || !T->pmask || !T->hasdup) { free(rep); return -1; }
+    if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi) { free(rep); return -1; }
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
@@ -1269,12 +1268,12 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
             /* offset from the mean of the three vertices (less round-off) */
             T->h[toff[s] + f] = (dot3(a, nn) + dot3(b, nn) + dot3(c, nn)) / 3.0;
             /* coplanar with an earlier triangle (a face split in triangles)? */
-            T->rep[toff[s] + f] = f;
+            rep[toff[s] + f] = f;
             for (int g = 0; g < f; g++) {
                 const double *M = T->n + 3 * (toff[s] + g);
                 if (dot3(M, nn) > 1 - 1e-12 && fabs(T->h[toff[s] + g] - T->h[toff[s] + f]) <= 1e-12 * r) {
                     T->dup[toff[s] + f] = 1;
-                    T->rep[toff[s] + f] = g;
+                    rep[toff[s] + f] = g;
                     break;
                 }
             }
@@ -1302,16 +1301,17 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
          * and offset) of the earlier triangle it repeats, so that a plane is
          * one plane, to the bit, on every path */
         for (int f = 0; f < nt; f++) {
-            int g = T->rep[toff[s] + f];
+            int g = rep[toff[s] + f];
             if (g == f) continue;
             memcpy(T->n + 3 * (toff[s] + f), T->n + 3 * (toff[s] + g), 3 * sizeof(double));
             T->h[toff[s] + f] = T->h[toff[s] + g];
         }
     }
+    free(rep);
     return 0;
 }
 static void table_free(table_t *T) {
-    free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->rep); free(T->pmask); free(T->hasdup);
+    free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->pmask); free(T->hasdup);
     free(T->nface); free(T->foff); free(T->fs); free(T->fc); free(T->ftag); free(T->fi);
 }
 
