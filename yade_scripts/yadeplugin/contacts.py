@@ -258,7 +258,7 @@ class SceneContacts:
         self.wall_sign = {}       # wall id -> +1 / -1, once decided
         self.facet_side = {}      # facet id -> +1 / -1, once decided
         self.shapes = {}          # body id -> (vertices, triangles) in the body frame
-        self.group_of = {}        # body id -> its clump id (-1: none) at the last scan
+        self.group_of = {}        # body id -> its kernel group at the last scan (clump id, -1, or FACET_GROUP)
         self.scans = 0
         self.note = ""
         self._restore = None      # after O.load: the saved kernel state, given to the first kernel built
