@@ -106,8 +106,8 @@ def load():
     lib.pc_engine_set_friction.restype = ctypes.c_int
     lib.pc_engine_set_groups.argtypes = [ctypes.c_void_p, _I]
     lib.pc_engine_set_groups.restype = ctypes.c_int
-    lib.pc_engine_set_wall_bodies.argtypes = [ctypes.c_void_p, ctypes.c_int]
-    lib.pc_engine_set_wall_bodies.restype = ctypes.c_int
+    lib.pc_engine_set_facets.argtypes = [ctypes.c_void_p, ctypes.c_int]
+    lib.pc_engine_set_facets.restype = ctypes.c_int
     lib.pc_engine_get_friction.argtypes = [ctypes.c_void_p, _D]
     lib.pc_engine_get_friction.restype = None
     lib.pc_engine_npairs.argtypes = [ctypes.c_void_p]

@@ -318,13 +318,15 @@ class ContactEngine:
             raise EngineError("could not set the groups (out of memory)")
         self.groups = g
 
-    def set_wall_bodies(self, n):
-        """The walls act on body rows 0 .. n - 1 only from now on (the
-        others, e.g. a user scene's facets after its polyhedra, never touch
-        a wall); their wall contacts are dropped at once."""
-        if self.lib.pc_engine_set_wall_bodies(self._live(), int(n)) != 0:
-            raise ValueError(f"set_wall_bodies: n must be within 0 .. {self.n}, got {n!r}")
-        self.wall_bodies = int(n)
+    def set_facets(self, first):
+        """Body rows ``first`` .. n - 1 are facets from now on (a user
+        scene's, after its polyhedra): two facets are never a pair and no
+        wall pushes a facet (YADE has neither functor). Their listed pairs
+        and wall contacts are dropped at once; a state restored later by
+        :meth:`set_state` is cut the same way."""
+        if self.lib.pc_engine_set_facets(self._live(), int(first)) != 0:
+            raise ValueError(f"set_facets: the first facet row must be within 0 .. {self.n}, got {first!r}")
+        self.first_facet = int(first)
 
     @property
     def friction(self):
@@ -387,8 +389,8 @@ class ContactEngine:
             self.set_friction(*np.asarray(st["friction"], float).reshape(2))
         if getattr(self, "groups", None) is not None:     # the restored list holds no pair of one group
             self.set_groups(self.groups)
-        if getattr(self, "wall_bodies", self.n) != self.n:   # nor a wall contact of a body beyond them
-            self.set_wall_bodies(self.wall_bodies)
+        if getattr(self, "first_facet", self.n) != self.n:   # nor a pair of two facets, nor a facet's wall contact
+            self.set_facets(self.first_facet)
 
     def contacts(self):
         """The touching contacts of the last step: a dict of arrays. ``i``,

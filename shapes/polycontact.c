@@ -1509,7 +1509,7 @@ typedef struct {
     const int *shape;          /* per body: row of the table (owned copy) */
     int *shape_own;
     int *group;                /* per body: group (a YADE clump), NULL for none: pairs of one group >= 0 never listed */
-    int wall_bodies;           /* the walls act on bodies 0 .. wall_bodies - 1 (nb unless set: pc_engine_set_wall_bodies) */
+    int nsolid;                /* rows 0 .. nsolid - 1 are solids, the others facets (nb unless set: pc_engine_set_facets) */
     double *size;              /* per body d */
     double kv, ct, mu, mu_wall, skin;
     /* walls: axis (0,1,2), inward sign (+1 lo wall, -1 hi wall) */
@@ -1567,7 +1567,7 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     memcpy(vv, v, sizeof(double) * 3 * nvt); memcpy(tt, t, sizeof(int) * 3 * ntt);
     if (table_init(&E->T, ns, vo, vv, to, tt)) { pc_engine_free(E); return NULL; }
     if (nw < 0 || nw > PC_MAX_WALLS) { pc_engine_free(E); return NULL; }
-    E->nb = nb; E->nw = nw; E->wall_bodies = nb;
+    E->nb = nb; E->nw = nw; E->nsolid = nb;
     E->fast = 1;
     E->shape_own = malloc(sizeof(int) * (nb + 1)); E->size = malloc(sizeof(double) * (nb + 1));
     memcpy(E->shape_own, shape, sizeof(int) * nb); memcpy(E->size, size, sizeof(double) * nb);
@@ -1631,6 +1631,7 @@ static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shap
  * (pc_engine_set_groups); returns 0, or -1 when memory could not be had. */
 static int list_pair(engine_t *E, int i, int j, double ri, int *np) {
     if (E->group && E->group[i] >= 0 && E->group[i] == E->group[j]) return 0;   /* members of one clump */
+    if (i >= E->nsolid && j >= E->nsolid) return 0;                            /* two facets */
     double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
     double reach = ri + body_radius(E, j) + E->skin;
     if (dot3(d, d) > reach * reach) return 0;
@@ -2166,7 +2167,7 @@ int pc_engine_step(engine_t *E, const double *pos, const double *quat, const dou
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 16)
 #endif
-        for (int b = 0; b < E->wall_bodies; b++) walls_step(E, b, w, mine);
+        for (int b = 0; b < E->nsolid; b++) walls_step(E, b, w, mine);   /* no wall pushes a facet */
         for (int k = 0; k < PC_NSTAT; k++) {
             if (!mine[k]) continue;
 #ifdef _OPENMP
@@ -2382,19 +2383,28 @@ int pc_engine_set_groups(engine_t *E, const int *group) {
     return 0;
 }
 
-/* The walls act on the first n bodies only from now on (a user scene's
- * polyhedra, before its facets: YADE has no wall-facet functor either); the
- * wall contacts of the others are dropped. Returns 0, or -1 for n outside
- * 0 .. nb. */
-int pc_engine_set_wall_bodies(engine_t *E, int n) {
+/* Rows n .. nb - 1 are facets from now on (a user scene's, after its
+ * polyhedra): two facets are never a pair and no wall pushes a facet (YADE
+ * has neither a facet-facet nor a wall-facet functor). The listed pairs of
+ * two facets and the facets' wall contacts are dropped at once. Returns 0,
+ * or -1 for n outside 0 .. nb. */
+int pc_engine_set_facets(engine_t *E, int n) {
     if (n < 0 || n > E->nb) return -1;
-    E->wall_bodies = n;
+    E->nsolid = n;
     size_t a = (size_t)n * E->nw, z = (size_t)E->nb * E->nw;
     if (z > a) {
         memset(E->wtouch + a, 0, sizeof(int) * (z - a));
         memset(E->wft + 3 * a, 0, sizeof(double) * 3 * (z - a));
         memset(E->wres + (size_t)PC_WALL_DOUBLES * a, 0, sizeof(double) * PC_WALL_DOUBLES * (z - a));
     }
+    int q = 0;
+    for (int k = 0; k < E->npairs; k++) {
+        const pair_t *p = E->pairs + k;
+        if (p->i >= n && p->j >= n) continue;
+        if (q != k) E->pairs[q] = *p;
+        q++;
+    }
+    E->npairs = q;
     return 0;
 }
 

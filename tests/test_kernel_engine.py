@@ -124,34 +124,45 @@ def test_wall_contacts_match_the_half_space_cut(grains):
         assert np.all(c["force_tangential"][rows] == 0)
 
 
-def test_walls_act_on_the_first_bodies_only_when_told(grains):
-    """set_wall_bodies(m): the walls touch body rows 0 .. m - 1 only (a user
-    scene's facets come after its polyhedra); those rows' wall contacts are
-    exactly the ones of the engine without the limit, the others have none,
-    and the walls' forces are the sums over the first rows."""
+def test_facet_rows_pair_with_no_facet_and_touch_no_wall(grains):
+    """set_facets(m): body rows m .. n - 1 are facets (a user scene's come
+    after its polyhedra). The pairs of two of them, listed before, are
+    dropped at once and never listed again, and no wall touches them; every
+    other contact is exactly that of the engine without the setting, and
+    the walls' forces are the sums over the first rows' wall contacts."""
     verts, tris, pos, quat, sizes = packing(grains, 3, seed=3)
     lo, hi = pos.min(axis=0) - 0.1, pos.max(axis=0) + 0.1
     wall_pos = np.array([lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]])
     every = engine_for(verts, tris, sizes, walls=True)
     some = engine_for(verts, tris, sizes, walls=True)
     m = len(verts) // 2
-    some.set_wall_bodies(m)
+    for eng in (every, some):                          # the pairs of two facets listed (then dropped from some)
+        eng.step(pos, quat, wall_pos)
+    facet_pair = lambda i, j: (i >= m) & (j >= m)      # noqa: E731
+    assert np.sum(facet_pair(*some.state()["pair_ids"].T)) > 0
+    some.set_facets(m)
+    assert np.sum(facet_pair(*some.state()["pair_ids"].T)) == 0
     for eng in (every, some):
         eng.step(pos, quat, wall_pos)
+    assert np.sum(facet_pair(*some.state()["pair_ids"].T)) == 0
     a, b = every.contacts(), some.contacts()
-    wa, wb = a["i"] < 0, b["i"] < 0
-    assert np.sum(wa & (a["j"] >= m)) > 0 and np.sum(wa & (a["j"] < m)) > 0     # both halves touch a wall
-    assert not np.any(wb & (b["j"] >= m))
-    keep = wa & (a["j"] < m)
-    assert sorted(zip(a["i"][keep], a["j"][keep])) == sorted(zip(b["i"][wb], b["j"][wb]))
-    rows = lambda c, w: np.lexsort((c["j"][w], c["i"][w]))                       # noqa: E731
-    np.testing.assert_array_equal(a["force_normal"][keep][rows(a, keep)], b["force_normal"][wb][rows(b, wb)])
+    wall = lambda c: c["i"] < 0                        # noqa: E731
+    # in the engine without the setting: facets touch walls, and facets touch each other
+    assert np.sum(wall(a) & (a["j"] >= m)) > 0 and np.sum(wall(a) & (a["j"] < m)) > 0
+    assert np.sum(~wall(a) & facet_pair(a["i"], a["j"])) > 0
+    keep = ~((wall(a) & (a["j"] >= m)) | (~wall(a) & facet_pair(a["i"], a["j"])))
+    order = lambda c, w: np.flatnonzero(w)[np.lexsort((c["j"][w], c["i"][w]))]   # noqa: E731
+    ka, kb = order(a, keep), order(b, np.ones(len(b["i"]), bool))
+    np.testing.assert_array_equal(np.c_[a["i"][ka], a["j"][ka]], np.c_[b["i"][kb], b["j"][kb]])
+    for key in ("volume", "force_normal", "force_tangential", "point", "normal"):
+        np.testing.assert_array_equal(a[key][ka], b[key][kb])
     wall_force = np.zeros((6, 3))
-    for i, f in zip(a["i"][keep], a["force_normal"][keep]):
+    for i, f in zip(a["i"][keep & wall(a)], a["force_normal"][keep & wall(a)]):
         wall_force[-1 - i] -= f
-    np.testing.assert_allclose(some.step(pos, quat, wall_pos)[2], wall_force, rtol=1e-12, atol=1e-12 * np.abs(wall_force).max())
-    with pytest.raises(ValueError, match="^set_wall_bodies: n must be within 0 .. "):
-        some.set_wall_bodies(len(verts) + 1)
+    np.testing.assert_allclose(some.step(pos, quat, wall_pos)[2], wall_force, rtol=1e-12,
+                               atol=1e-12 * np.abs(wall_force).max())
+    with pytest.raises(ValueError, match="^set_facets: the first facet row must be within 0 .. "):
+        some.set_facets(len(verts) + 1)
 
 
 def test_forces_obey_newtons_third_law(grains):
@@ -666,7 +677,7 @@ def test_a_closed_engine_refuses_every_call_in_one_line():
     pos = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.9 * d]])
     quat = np.tile([1.0, 0.0, 0.0, 0.0], (2, 1))
     for call in (lambda: eng.step(pos, quat), eng.contacts, eng.state, eng.memory_bytes, lambda: eng.friction,
-                 lambda: eng.set_friction(0.3, 0.0), lambda: eng.set_groups([0, 0]), lambda: eng.set_wall_bodies(1)):
+                 lambda: eng.set_friction(0.3, 0.0), lambda: eng.set_groups([0, 0]), lambda: eng.set_facets(1)):
         with pytest.raises(EngineError, match="^the contact engine is closed$"):
             call()
 

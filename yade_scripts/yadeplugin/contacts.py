@@ -25,11 +25,10 @@ Clumps (``O.bodies.appendClumped``, ``O.bodies.clump``) of polyhedra or
 facets: the ``Clump`` body itself is not computed, its members are ordinary
 bodies that are never a pair with each other (each member's group, its
 ``clumpId``, is given to the kernel, as YADE's collider never makes an
-interaction between members of one clump). Two facets are never a pair
-either (YADE has no facet-facet functor), unless they are members of two
-different clumps; their contact forces go on the
+interaction between members of one clump); their contact forces go on the
 members, which ``NewtonIntegrator`` sums into the clump. A clumped wall is
-refused in one line.
+refused in one line. Two facets are never a pair, and no wall pushes a
+facet (YADE has neither a facet-facet nor a wall-facet functor).
 
 Bodies added or erased during the run are picked up at the next step (the
 engine notices, and this module's scan rebuilds the kernel's engine with the
@@ -84,9 +83,6 @@ from shapes.engine import ContactEngine, EngineError
 
 from ..scene.yadedump import outward_triangles
 from . import load
-
-#: the kernel group of the facets that are in no clump: no body id reaches it (C int)
-FACET_GROUP = 2 ** 31 - 1
 
 #: kernel body state for a body that is new: far from its neighbour-list position, so the list is rebuilt
 _FAR = 1e30
@@ -258,7 +254,7 @@ class SceneContacts:
         self.wall_sign = {}       # wall id -> +1 / -1, once decided
         self.facet_side = {}      # facet id -> +1 / -1, once decided
         self.shapes = {}          # body id -> (vertices, triangles) in the body frame
-        self.group_of = {}        # body id -> its kernel group at the last scan (clump id, -1, or FACET_GROUP)
+        self.group_of = {}        # body id -> its clump id (-1: none) at the last scan
         self.scans = 0
         self.note = ""
         self._restore = None      # after O.load: the saved kernel state, given to the first kernel built
@@ -415,10 +411,8 @@ class SceneContacts:
         wids = [w.id for w in walls]
         kern = _Kernel(verts, tris, kn, ks, mu, mu_wall, skin, [w.shape.axis for w in walls],
                        [self.wall_sign[w.id] for w in walls], self.threads or 0)
-        # members of one clump are never a pair (YADE's Collider::mayCollide), nor are two facets (YADE has
-        # no facet-facet functor: a facetBox's facets meet along edges, their prisms at the corners)
-        groups = ([b.clumpId if b.isClumpMember else -1 for b in grains]
-                  + [f.clumpId if f.isClumpMember else FACET_GROUP for f in facets])
+        # members of one clump are never a pair (YADE's Collider::mayCollide)
+        groups = [b.clumpId if b.isClumpMember else -1 for b in grains + facets]
         if self.kernel is not None:
             old = self.kernel
             self._carry(kern, rows, wids, grains + facets, old.state(), self.rows, self.walls, old.nw, groups)
@@ -431,8 +425,8 @@ class SceneContacts:
                 self._carry(kern, rows, wids, grains + facets, st, orows, owalls, onw, groups)
         if any(g >= 0 for g in groups):
             kern.set_groups(groups)
-        if facets and walls:                     # the walls push the polyhedra only (YADE has no wall-facet functor)
-            kern.set_wall_bodies(len(grains))
+        if facets:       # two facets never a pair, no wall pushes a facet (YADE has neither functor: a
+            kern.set_facets(len(grains))       # facetBox's prisms overlap at its corners, a wall may cross one)
         self.group_of = dict(zip(rows, groups))
         self._drop()
         self.kernel, self.rows, self.walls = kern, rows, wids
