@@ -96,7 +96,15 @@ typedef struct {
     int nf;
     const int *fs, *fc, *fi, *ftag;
     double ra;          /* largest |x| + |y| + |z| of the vertices v, or 0: not known (see posed_extent) */
+    /* or NULL: the planes by face, normals pn (nf x 3) and offsets ph (nf), tplane[t] the face of
+     * triangle t's plane (t a face's first triangle); overlap_kept reads the planes through
+     * plane_n and plane_h, which fall back on n and h by triangle */
+    const double *pn, *ph;
+    const int *tplane;
 } posed_t;
+
+static inline const double *plane_n(const posed_t *P, int t) { return P->pn ? P->pn + 3 * P->tplane[t] : P->n + 3 * t; }
+static inline double plane_h(const posed_t *P, int t) { return P->pn ? P->ph[P->tplane[t]] : P->h[t]; }
 
 /* The largest |x| + |y| + |z| of A's vertices (the scale of its round-off). */
 static inline double posed_extent(const posed_t *A) {
@@ -802,8 +810,8 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         if (t == KV_A) { memcpy(x, A->v + 3 * K->va[v], 3 * sizeof(double)); continue; }
         if (t == KV_B) { memcpy(x, B->v + 3 * K->va[v], 3 * sizeof(double)); continue; }
         const posed_t *E = t == KV_AEDGE ? A : B, *P = t == KV_AEDGE ? B : A;
-        const double *n = P->n + 3 * K->vp[v], *pu = E->v + 3 * K->va[v], *pv = E->v + 3 * K->vb[v];
-        double h = P->h[K->vp[v]], du = dot3(pu, n) - h, dv = dot3(pv, n) - h;
+        const double *n = plane_n(P, K->vp[v]), *pu = E->v + 3 * K->va[v], *pv = E->v + 3 * K->vb[v];
+        double h = plane_h(P, K->vp[v]), du = dot3(pu, n) - h, dv = dot3(pv, n) - h;
         int iu = du <= eps, iv = dv <= eps;
         if (iu == iv) return -1;                                   /* (i) */
         if (iu) cut_point(pu, du, pv, dv, x); else cut_point(pv, dv, pu, du, x);
@@ -832,15 +840,15 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
         for (int f = 0; f < np; f++) {
             int k = P->nf ? P->ftag[f] : f;
             if (P->dup && P->dup[k]) continue;                     /* the plane of an earlier triangle, as in the cuts */
-            const double *n = P->n + 3 * k;
-            double h = P->h[k];
+            const double *n = plane_n(P, k);
+            double h = plane_h(P, k);
             if (dot3(n, sc) - h + r <= eps) continue;
             for (int i = 0; i < ng[g]; i++) if (dot3(V + 3 * grp[g][i], n) - h > eps) return -1;
         }
     }
     for (int f = 0, q = 0; f < K->nf; f++) {                        /* (iii), and mesh 0's faces */
         int m = K->fc[f], tag = K->ftag[f];
-        const double *n = tag < ntA ? A->n + 3 * tag : B->n + 3 * (tag - ntA);
+        const double *n = tag < ntA ? plane_n(A, tag) : plane_n(B, tag - ntA);
         w->mfs[0][f] = q; w->mfc[0][f] = m; w->mft[0][f] = tag;
         for (int i = 0; i < m; i++) {
             const double *a = V + 3 * K->fi[q + (i ? i - 1 : m - 1)], *b = V + 3 * K->fi[q + i];
@@ -1165,6 +1173,7 @@ typedef struct {
     int *nface, *foff;          /* per shape: its polygonal faces (0: none, its triangles are its faces), their
                                  * first row in fs/fc/ftag (foff) and of their vertices in fi (at 3 * toff) */
     int *fs, *fc, *ftag, *fi;   /* per face: start in the shape's fi, vertex count, plane (first triangle); vertices */
+    int *tplane;                /* per triangle of a shape with faces: the face of its plane (its first triangles), else -1 */
     int max_t, max_v;
 } table_t;
 
@@ -1234,10 +1243,12 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
     T->pmask = calloc((size_t)PC_MASK_WORDS * (ntot + 1), sizeof(uint64_t));
     T->hasdup = calloc(ns + 1, 1);
     T->nface = calloc(ns + 1, sizeof(int)); T->foff = calloc(ns + 1, sizeof(int));
+    T->tplane = malloc(sizeof(int) * (ntot + 1));
     T->fs = calloc(ntot + 1, sizeof(int)); T->fc = calloc(ntot + 1, sizeof(int));
     T->ftag = calloc(ntot + 1, sizeof(int)); T->fi = calloc(3 * (size_t)ntot + 1, sizeof(int));
     if (!rep || !T->n || !T->h || !T->radius || !T->box || !T->dup || !T->pmask || !T->hasdup) { free(rep); return -1; }
-    if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi) { free(rep); return -1; }
+    if (!T->nface || !T->foff || !T->fs || !T->fc || !T->ftag || !T->fi || !T->tplane) { free(rep); return -1; }
+    for (int k = 0; k <= ntot; k++) T->tplane[k] = -1;
     T->max_t = 0; T->max_v = 0;
     for (int s = 0; s < ns; s++) {
         const double *V = v + 3 * voff[s];
@@ -1296,6 +1307,7 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
                 }
             }
             merge_faces(T, s);
+            for (int p = 0; p < T->nface[s]; p++) T->tplane[toff[s] + T->ftag[T->foff[s] + p]] = p;
         }
         /* once coplanarity is decided: each duplicate takes the plane (normal
          * and offset) of the earlier triangle it repeats, so that a plane is
@@ -1312,7 +1324,7 @@ static int table_init(table_t *T, int ns, const int *voff, const double *v, cons
 }
 static void table_free(table_t *T) {
     free(T->n); free(T->h); free(T->radius); free(T->box); free(T->dup); free(T->pmask); free(T->hasdup);
-    free(T->nface); free(T->foff); free(T->fs); free(T->fc); free(T->ftag); free(T->fi);
+    free(T->nface); free(T->foff); free(T->fs); free(T->fc); free(T->ftag); free(T->fi); free(T->tplane);
 }
 
 /* the polygonal faces of shape s on P (nf = 0: none) */
@@ -1342,6 +1354,7 @@ static void pose_shape(const table_t *T, int s, const double *R, const double *o
     P->pmask = T->hasdup[s] ? T->pmask + (size_t)PC_MASK_WORDS * t0 : NULL;
     P->off[0] = off[0]; P->off[1] = off[1]; P->off[2] = off[2];
     P->ra = 0;
+    P->pn = P->ph = NULL; P->tplane = NULL;
     posed_faces(T, s, P);
 }
 
@@ -1519,6 +1532,8 @@ typedef struct {
     /* per body pose state */
     double *R, *Rprev, *x, *xprev, *xbuild, *rv, *rn, *rh;
     double *ra;                /* per body: posed_extent of its posed vertices rv */
+    double *rpn, *rph;         /* per body with faces: its planes by face, posed (the same numbers as rn, rh) */
+    int *poffb;                /* offsets into rpn (x 3) and rph per body */
     double *motion;            /* per body: sum over steps of a bound on any vertex's displacement (m) */
     double *spin;              /* per body: rotation vector of the last step (small angles) */
     int fast;                  /* 1: proofs of separation, culled clipping, shadows on demand; 0: the plain path */
@@ -1596,11 +1611,17 @@ engine_t *pc_engine_new(int ns, const int *voff, const double *v, const int *tof
     E->rn = malloc(sizeof(double) * 3 * (E->toffb[nb] + 1));
     E->rh = malloc(sizeof(double) * (E->toffb[nb] + 1));
     E->ra = calloc(nb + 1, sizeof(double));
+    E->poffb = malloc(sizeof(int) * (nb + 1));
+    if (E->poffb) {
+        E->poffb[0] = 0;
+        for (int b = 0; b < nb; b++) E->poffb[b + 1] = E->poffb[b] + E->T.nface[shape[b]];
+        E->rpn = malloc(sizeof(double) * 3 * (E->poffb[nb] + 1)); E->rph = malloc(sizeof(double) * (E->poffb[nb] + 1));
+    }
     E->wft = calloc((size_t)nb * E->nw * 3 + 1, sizeof(double));
     E->wres = calloc((size_t)nb * E->nw * 10 + 1, sizeof(double));
     E->wtouch = calloc((size_t)nb * E->nw + 1, sizeof(int));
     E->work = calloc(nthreads, sizeof(work_t));
-    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->motion || !E->spin || !E->rv || !E->rn || !E->rh || !E->ra || !E->wft ||
+    if (!E->R || !E->Rprev || !E->x || !E->xprev || !E->xbuild || !E->motion || !E->spin || !E->rv || !E->rn || !E->rh || !E->ra || !E->poffb || !E->rpn || !E->rph || !E->wft ||
         !E->wres || !E->wtouch || !E->work) { pc_engine_free(E); return NULL; }
     for (int k = 0; k < nthreads; k++)
         if (work_init(&E->work[k], E->T.max_t, E->T.max_v)) { pc_engine_free(E); return NULL; }
@@ -1618,7 +1639,7 @@ void pc_engine_free(engine_t *E) {
     free(E->shape_own); free(E->size); free(E->group);
     free(E->R); free(E->Rprev); free(E->x); free(E->xprev); free(E->xbuild); free(E->voffb); free(E->toffb);
     free(E->motion); free(E->spin);
-    free(E->rv); free(E->rn); free(E->rh); free(E->ra); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
+    free(E->rv); free(E->rn); free(E->rh); free(E->ra); free(E->poffb); free(E->rpn); free(E->rph); free(E->pairs); free(E->spare); free(E->wft); free(E->wres);
     free(E->wtouch); free(E->cellbuf); free(E->cellhead); free(E->cellnext);
     free(E);
 }
@@ -1895,6 +1916,7 @@ static inline void posed_body(const engine_t *E, int b, const double *v, const d
     P->off[0] = off ? off[0] : 0; P->off[1] = off ? off[1] : 0; P->off[2] = off ? off[2] : 0;
     P->pmask = E->T.hasdup[s] ? E->T.pmask + (size_t)PC_MASK_WORDS * E->T.toff[s] : NULL;
     P->ra = 0;
+    P->pn = P->ph = NULL; P->tplane = NULL;
     posed_faces(&E->T, s, P);
 }
 
@@ -1918,7 +1940,8 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
                 vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
             }
         }
-        for (int f = 0; f < ntj; f++) if (!dup[f]) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
+        if (!E->T.nface[E->shape[j]])
+            for (int f = 0; f < ntj; f++) if (!dup[f]) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     } else {
         for (int a = 0; a < nvj; a++) {
             vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
@@ -1928,6 +1951,15 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     posed_body(E, i, vi, E->rh + E->toffb[i], NULL, A);
     posed_body(E, j, vjr, hj, d, B);
     A->ra = E->ra[i];
+    int s = E->shape[j], nf = E->T.nface[s];
+    if (K && nf) {
+        /* B's planes by face, contiguous (what overlap_kept reads of them), their offsets moved by d
+         * as the triangles' would be: the same numbers; B's planes by triangle are not posed */
+        const double *pn = E->rpn + 3 * E->poffb[j], *ph = E->rph + E->poffb[j];
+        for (int p = 0; p < nf; p++) hj[p] = ph[p] + dot3(pn + 3 * p, d);
+        B->pn = pn; B->ph = hj; B->tplane = E->T.tplane + E->T.toff[s];
+        B->h = NULL;
+    }
 }
 
 /* Keep a proof of separation for the next steps: the axis, its gap and the
@@ -2105,6 +2137,16 @@ static void pose_all(engine_t *E, int par, int motion) {
         pose_shape(&E->T, E->shape[b], E->R + 9 * b, zero, E->rv + 3 * E->voffb[b], E->rn + 3 * E->toffb[b],
                    E->rh + E->toffb[b], &P);
         E->ra[b] = posed_extent(&P);
+        const table_t *T = &E->T;
+        int s = E->shape[b], t0 = T->toff[s];
+        double *pn = E->rpn + 3 * E->poffb[b], *ph = E->rph + E->poffb[b];
+        for (int p = 0; p < T->nface[s]; p++) {    /* as pose_shape poses them: the same numbers */
+            int t = t0 + T->ftag[T->foff[s] + p];
+            double x[3];
+            matvec(E->R + 9 * b, T->n + 3 * t, x);
+            pn[3 * p] = x[0]; pn[3 * p + 1] = x[1]; pn[3 * p + 2] = x[2];
+            ph[p] = T->h[t] + dot3(x, zero);
+        }
         if (motion) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
     }
 }
