@@ -866,6 +866,37 @@ static int overlap_kept(const posed_t *A, const posed_t *B, const double *dAB, w
     return 0;
 }
 
+/* Separation by a face: the number nout[k] of A's vertices outside each
+ * plane k of B (0 for a duplicate, the same plane as an earlier triangle's),
+ * and whether A lies wholly outside a plane of B (sep_axis -n_k, from A to
+ * B) or B wholly outside a plane of A (sep_axis n_k): 1, else 0. */
+static int face_separation(const posed_t *A, const posed_t *B, int *nout, double *sep_axis) {
+    for (int k = 0; k < B->nt; k++) {
+        if (B->dup && B->dup[k]) { nout[k] = 0; continue; }
+        const double *n = B->n + 3 * k;
+        double h = B->h[k];
+        int c = 0;
+        for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
+        if (c == A->nv) {
+            if (sep_axis) { sep_axis[0] = -n[0]; sep_axis[1] = -n[1]; sep_axis[2] = -n[2]; }
+            return 1;
+        }
+        nout[k] = c;
+    }
+    for (int k = 0; k < A->nt; k++) {
+        if (A->dup && A->dup[k]) continue;
+        const double *n = A->n + 3 * k;
+        double h = A->h[k];
+        int c = 0;
+        for (int i = 0; i < B->nv; i++) c += dot3(B->v + 3 * i, n) - h > 0;
+        if (c == B->nv) {
+            if (sep_axis) memcpy(sep_axis, n, 3 * sizeof(double));
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* The overlap by shared-vertex cuts (the fast path): the same planes in the
  * same order as overlap_pair's culled path, each vertex and each crossing
  * point computed once. The vertices are those of the polygon path to the bit
@@ -901,31 +932,7 @@ static int overlap_mesh(const posed_t *A, const posed_t *B, const double *dAB, w
         }
     } else {
         int *nout = w->nout;
-        for (int k = 0; k < ntB; k++) {
-            if (B->dup && B->dup[k]) { nout[k] = 0; continue; }   /* an earlier triangle's plane, the same numbers */
-            const double *n = B->n + 3 * k;
-            double h = B->h[k];
-            int c = 0;
-            for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
-            if (c == A->nv) {
-                overlap_zero(r);
-                if (sep_axis) { sep_axis[0] = -n[0]; sep_axis[1] = -n[1]; sep_axis[2] = -n[2]; }
-                return 0;
-            }
-            nout[k] = c;
-        }
-        for (int k = 0; k < A->nt; k++) {
-            if (A->dup && A->dup[k]) continue;
-            const double *n = A->n + 3 * k;
-            double h = A->h[k];
-            int c = 0;
-            for (int i = 0; i < B->nv; i++) c += dot3(B->v + 3 * i, n) - h > 0;
-            if (c == B->nv) {
-                overlap_zero(r);
-                if (sep_axis) memcpy(sep_axis, n, 3 * sizeof(double));
-                return 0;
-            }
-        }
+        if (face_separation(A, B, nout, sep_axis)) { overlap_zero(r); return 0; }
         for (int k = 0; k < ntB; k++) {
             if (nout[k] == 0) continue;
             int j = m++;
@@ -1043,32 +1050,7 @@ static void overlap_pair(const posed_t *A, const posed_t *B, const double *dAB, 
     }
     /* distances of A's vertices to B's planes; separation by a face of B */
     int *nout = w->nout;
-    for (int k = 0; k < ntB; k++) {
-        if (B->dup && B->dup[k]) { nout[k] = 0; continue; }   /* an earlier triangle's plane, the same numbers */
-        const double *n = B->n + 3 * k;
-        double h = B->h[k];
-        int c = 0;
-        for (int i = 0; i < A->nv; i++) c += dot3(A->v + 3 * i, n) - h > 0;
-        if (c == A->nv) {   /* A wholly outside B's face k: axis -n_k (from A to B) */
-            overlap_zero(r);
-            if (sep_axis) { sep_axis[0] = -n[0]; sep_axis[1] = -n[1]; sep_axis[2] = -n[2]; }
-            return;
-        }
-        nout[k] = c;
-    }
-    /* separation by a face of A */
-    for (int k = 0; k < A->nt; k++) {
-        if (A->dup && A->dup[k]) continue;
-        const double *n = A->n + 3 * k;
-        double h = A->h[k];
-        int c = 0;
-        for (int i = 0; i < B->nv; i++) c += dot3(B->v + 3 * i, n) - h > 0;
-        if (c == B->nv) {   /* B wholly outside A's face k: axis n_k */
-            overlap_zero(r);
-            if (sep_axis) memcpy(sep_axis, n, 3 * sizeof(double));
-            return;
-        }
-    }
+    if (face_separation(A, B, nout, sep_axis)) { overlap_zero(r); return; }
     /* the planes that cut A, most cutting first (insertion sort, small n) */
     for (int k = 0; k < ntB; k++) {
         if (nout[k] == 0) continue;
@@ -1650,9 +1632,25 @@ static double body_radius(const engine_t *E, int b) { return E->T.radius[E->shap
  * pairs so far) when their bounding spheres (ri: body i's radius) come
  * within the skin of each other and they are not of one group
  * (pc_engine_set_groups); returns 0, or -1 when memory could not be had. */
+static inline int never_pair(const engine_t *E, int i, int j) {
+    return (E->group && E->group[i] >= 0 && E->group[i] == E->group[j])   /* members of one clump */
+           || (i >= E->nsolid && j >= E->nsolid);                         /* two facets */
+}
+
+/* Drop the listed pairs that are never a pair (after pc_engine_set_groups or _set_facets). */
+static void drop_never_pairs(engine_t *E) {
+    int q = 0;
+    for (int k = 0; k < E->npairs; k++) {
+        const pair_t *p = E->pairs + k;
+        if (never_pair(E, p->i, p->j)) continue;
+        if (q != k) E->pairs[q] = *p;
+        q++;
+    }
+    E->npairs = q;
+}
+
 static int list_pair(engine_t *E, int i, int j, double ri, int *np) {
-    if (E->group && E->group[i] >= 0 && E->group[i] == E->group[j]) return 0;   /* members of one clump */
-    if (i >= E->nsolid && j >= E->nsolid) return 0;                            /* two facets */
+    if (never_pair(E, i, j)) return 0;
     double d[3] = {E->x[3 * j] - E->x[3 * i], E->x[3 * j + 1] - E->x[3 * i + 1], E->x[3 * j + 2] - E->x[3 * i + 2]};
     double reach = ri + body_radius(E, j) + E->skin;
     if (dot3(d, d) > reach * reach) return 0;
@@ -1928,7 +1926,8 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     const double *vi = E->rv + 3 * E->voffb[i], *vj = E->rv + 3 * E->voffb[j];
     int nvj = E->voffb[j + 1] - E->voffb[j], ntj = E->toffb[j + 1] - E->toffb[j];
     double *vjr = w->dA, *hj = w->dA + 3 * E->T.max_v;
-    const unsigned char *dup = E->T.dup + E->T.toff[E->shape[j]];
+    int s = E->shape[j], nf = E->T.nface[s];
+    const unsigned char *dup = E->T.dup + E->T.toff[s];
     const double *nj = E->rn + 3 * E->toffb[j];
     if (K) {
         /* for overlap_kept only: the vertices of B its structure names, and
@@ -1940,7 +1939,7 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
                 vjr[3 * a] = vj[3 * a] + d[0]; vjr[3 * a + 1] = vj[3 * a + 1] + d[1]; vjr[3 * a + 2] = vj[3 * a + 2] + d[2];
             }
         }
-        if (!E->T.nface[E->shape[j]])
+        if (!nf)
             for (int f = 0; f < ntj; f++) if (!dup[f]) hj[f] = E->rh[E->toffb[j] + f] + dot3(nj + 3 * f, d);
     } else {
         for (int a = 0; a < nvj; a++) {
@@ -1951,7 +1950,6 @@ static void pose_pair(const engine_t *E, int i, int j, const double *d, work_t *
     posed_body(E, i, vi, E->rh + E->toffb[i], NULL, A);
     posed_body(E, j, vjr, hj, d, B);
     A->ra = E->ra[i];
-    int s = E->shape[j], nf = E->T.nface[s];
     if (K && nf) {
         /* B's planes by face, contiguous (what overlap_kept reads of them), their offsets moved by d
          * as the triangles' would be: the same numbers; B's planes by triangle are not posed */
@@ -2138,14 +2136,13 @@ static void pose_all(engine_t *E, int par, int motion) {
                    E->rh + E->toffb[b], &P);
         E->ra[b] = posed_extent(&P);
         const table_t *T = &E->T;
-        int s = E->shape[b], t0 = T->toff[s];
+        int s = E->shape[b];
         double *pn = E->rpn + 3 * E->poffb[b], *ph = E->rph + E->poffb[b];
-        for (int p = 0; p < T->nface[s]; p++) {    /* as pose_shape poses them: the same numbers */
-            int t = t0 + T->ftag[T->foff[s] + p];
-            double x[3];
-            matvec(E->R + 9 * b, T->n + 3 * t, x);
-            pn[3 * p] = x[0]; pn[3 * p + 1] = x[1]; pn[3 * p + 2] = x[2];
-            ph[p] = T->h[t] + dot3(x, zero);
+        const double *rn = E->rn + 3 * E->toffb[b], *rh = E->rh + E->toffb[b];
+        for (int p = 0; p < T->nface[s]; p++) {    /* the face planes pose_shape posed, contiguous */
+            int t = T->ftag[T->foff[s] + p];
+            memcpy(pn + 3 * p, rn + 3 * t, 3 * sizeof(double));
+            ph[p] = rh[t];
         }
         if (motion) { E->motion[b] += body_motion(E, b); body_spin(E, b, E->spin + 3 * b); }
     }
@@ -2414,14 +2411,7 @@ int pc_engine_set_groups(engine_t *E, const int *group) {
     memcpy(g, group, sizeof(int) * E->nb);
     free(E->group);
     E->group = g;
-    int q = 0;
-    for (int k = 0; k < E->npairs; k++) {
-        const pair_t *p = E->pairs + k;
-        if (g[p->i] >= 0 && g[p->i] == g[p->j]) continue;
-        if (q != k) E->pairs[q] = *p;
-        q++;
-    }
-    E->npairs = q;
+    drop_never_pairs(E);
     return 0;
 }
 
@@ -2439,14 +2429,7 @@ int pc_engine_set_facets(engine_t *E, int n) {
         memset(E->wft + 3 * a, 0, sizeof(double) * 3 * (z - a));
         memset(E->wres + (size_t)PC_WALL_DOUBLES * a, 0, sizeof(double) * PC_WALL_DOUBLES * (z - a));
     }
-    int q = 0;
-    for (int k = 0; k < E->npairs; k++) {
-        const pair_t *p = E->pairs + k;
-        if (p->i >= n && p->j >= n) continue;
-        if (q != k) E->pairs[q] = *p;
-        q++;
-    }
-    E->npairs = q;
+    drop_never_pairs(E);
     return 0;
 }
 
