@@ -74,6 +74,12 @@ O.engines[1].clearInteractions()
 saved = [(b.id, tuple(b.state.pos), b.state.ori, tuple(b.state.vel), tuple(b.state.angVel)) for b in O.bodies]
 
 
+def median(xs):
+    """The middle value of an odd number of values."""
+    xs = sorted(xs)
+    return xs[len(xs) // 2]
+
+
 def restore():
     for i, x, q, v, w in saved:
         s = O.bodies[i].state
@@ -124,7 +130,7 @@ for rep in range(REPEAT):                    # stock and the engine's variants i
     # the step without contacts (ForceResetter and NewtonIntegrator over the same bodies): what is not contacts
     bare = [run("no contacts", [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -9.81), damping=0.5)], set(),
                 lambda: 0) for k in range(ENGINE_RUNS)]
-    bare_cpu = sorted(x["whole_step_cpu_us"] for x in bare)[len(bare) // 2]
+    bare_cpu = median(x["whole_step_cpu_us"] for x in bare)
     runs.setdefault("bare", []).append(dict(bare[0], whole_step_cpu_us=bare_cpu))
     # YADE's stock functors keep an interaction real at zero volume while the bounds overlap: count the touching ones
     r = run("stock", stock_engines(), {"collider", "loop"},
@@ -142,7 +148,7 @@ for rep in range(REPEAT):                    # stock and the engine's variants i
             r["fill_us_per_contact"] = r["fill_us_per_fill"] / r["contacts"] if r["contacts"] else float("nan")
             inner.append(r)
         r = dict(variant=inner[0]["variant"],
-                 **{k: sorted(x[k] for x in inner)[len(inner) // 2] for k in inner[0] if k != "variant"})
+                 **{k: median(x[k] for x in inner) for k in inner[0] if k != "variant"})
         base = runs["stock"][-1]             # the ratios to the stock run of the same repeat
         r["contact_step_ratio"] = base["us_per_contact_step"] / r["us_per_contact_step"]
         r["whole_step_ratio"] = base["whole_step_us"] / r["whole_step_us"]
@@ -156,12 +162,12 @@ for rep in range(REPEAT):                    # stock and the engine's variants i
                                                  / runs[f][-1]["us_per_contact_step_cpu"])
 for key in ("stock", 1, 10, 0):
     rs = runs[key]
-    med = {k: sorted(x[k] for x in rs)[len(rs) // 2] for k in rs[0] if k != "variant"}
+    med = {k: median(x[k] for x in rs) for k in rs[0] if k != "variant"}
     if key != "stock":                       # the repeats' ratios, lowest and highest
         for k in ("contact_step_ratio", "contact_step_cpu_ratio"):
             med[k + "_range"] = [min(x[k] for x in rs), max(x[k] for x in rs)]
     res["variants"].append(dict(variant=rs[0]["variant"], repeats=len(rs), **med))
-res["no_contacts_cpu_us"] = sorted(x["whole_step_cpu_us"] for x in runs["bare"])[REPEAT // 2]
+res["no_contacts_cpu_us"] = median(x["whole_step_cpu_us"] for x in runs["bare"])
 line = json.dumps(res)
 print("RESULT " + line, flush=True)
 if OUT:
